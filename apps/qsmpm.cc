@@ -1,0 +1,98 @@
+// The general driver: runs any quasi-static problem described by a .prm file.
+//
+//   qsmpm problem.prm          run it
+//   qsmpm --print-parameters   every parameter, its default and documentation
+#include <deal.II/base/mpi.h>
+
+#include <qsmpm/core/quasi_static_problem.h>
+
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+  using namespace dealii;
+
+  unsigned int
+  read_dimension(const std::string &filename)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the problem: 2 or 3.");
+    // Only "Dimension" is looked at here; the full file is checked later.
+    std::ifstream in(filename);
+    AssertThrow(in, ExcMessage("Cannot open the parameter file <" + filename + ">."));
+    std::string line;
+    while (std::getline(in, line))
+      if (line.find("Dimension") != std::string::npos &&
+          line.find("set") != std::string::npos)
+        prm.parse_input_from_string(line);
+    return prm.get_integer("Dimension");
+  }
+
+  template <int dim>
+  void
+  declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the problem: 2 or 3.");
+    qsmpm::QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  run(const std::string &filename)
+  {
+    ParameterHandler prm;
+    declare<dim>(prm);
+    prm.parse_input(filename);
+    qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+    problem.initialize(prm);
+    problem.run();
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  try
+    {
+      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const std::string argument = argc > 1 ? argv[1] : "";
+      if (argument.empty() || argument == "--help" || argument == "-h")
+        {
+          std::cout << "Usage: qsmpm <file.prm> | --print-parameters\n";
+          return argument.empty() ? 1 : 0;
+        }
+      if (argument == "--print-parameters")
+        {
+          ParameterHandler prm;
+          declare<2>(prm);
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
+          return 0;
+        }
+      if (read_dimension(argument) == 2)
+        run<2>(argument);
+      else
+        run<3>(argument);
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "\n----------------------------------------------------\n"
+                << "qsmpm stopped: " << exc.what() << std::endl
+                << "----------------------------------------------------"
+                << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "qsmpm stopped: unknown exception" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,95 @@
+#ifndef qsmpm_assembly_quasi_static_residual_h
+#define qsmpm_assembly_quasi_static_residual_h
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The residual of one load step, paper eqs. (2.14)-(2.25):
+   *
+   *   R_i(du) = f_int_i(du) + f_ext_i,
+   *   f_int_i = - sum_p Omega_p^{k+1} sigma_p^{k+1} . grad N_i(x_p^k),
+   *
+   * with, at every point, d_eps_p = sym(sum_i grad N_i(x_p^k) (x) du_i)
+   * (2.18), the trial stress from the constitutive model (2.20-2.21), and
+   * Omega_p^{k+1} = (1 + tr d_eps_p) J_p^k Omega_p^0 (2.23-2.24).
+   *
+   * evaluate() is pure: it reads the committed point state and writes only
+   * the residual. This is what makes finite-difference Jacobian-vector
+   * products, line searches and rejected steps safe. commit() evaluates the
+   * same formulas once more for the converged increment and stores strain,
+   * stress, model state, J and volume on the points.
+   *
+   * The residual includes the rows of constrained degrees of freedom: there,
+   * -R_i is the reaction force of the support.
+   */
+  template <int dim>
+  class QuasiStaticResidual
+  {
+  public:
+    /**
+     * @p update_volumes = false keeps Omega_p = Omega_p^0 (a geometrically
+     * linear model, used to compare with linear finite elements).
+     */
+    QuasiStaticResidual(const BackgroundGrid<dim>   &grid,
+                        const MaterialPointSet<dim> &points,
+                        const ShapeCache<dim>       &cache,
+                        const bool                   update_volumes = true);
+
+    /// Size the internal vectors; call after the grid's dofs changed.
+    void
+    reinit();
+
+    /// The external force of the step (assembled by BoundaryConditions).
+    void
+    set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
+
+    /// R = f_int(du) + f_ext. Does not change any point.
+    void
+    evaluate(const TrilinosWrappers::MPI::Vector &du,
+             TrilinosWrappers::MPI::Vector       &R) const;
+
+    /// Store the state of the converged increment @p du on the points.
+    void
+    commit(const TrilinosWrappers::MPI::Vector &du) const;
+
+    /// A vector with the locally relevant layout (for ShapeCache::reinit).
+    const TrilinosWrappers::MPI::Vector &
+    ghosted_layout() const;
+
+    /// The number of residual evaluations since construction.
+    unsigned long
+    n_evaluations() const;
+
+  private:
+    /// The loop over cells and points shared by evaluate() and commit().
+    template <bool write_back>
+    void
+    loop(const TrilinosWrappers::MPI::Vector &du,
+         TrilinosWrappers::MPI::Vector       *R) const;
+
+    const BackgroundGrid<dim>    &grid;
+    const MaterialPointSet<dim>  &points;
+    const ShapeCache<dim>        &cache;
+    const ConstitutiveModel<dim> &model;
+    const bool                    update_volumes;
+
+    TrilinosWrappers::MPI::Vector f_ext;
+    /// Scratch: du with ghost entries, and the local force accumulator.
+    mutable TrilinosWrappers::MPI::Vector        du_ghosted;
+    mutable std::vector<double>                  local_force;
+    mutable std::vector<double>                  state_scratch;
+    std::vector<types::global_dof_index>         relevant_gids;
+    mutable unsigned long                        evaluation_count = 0;
+  };
+} // namespace qsmpm
+
+#endif

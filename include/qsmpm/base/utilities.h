@@ -1,0 +1,84 @@
+#ifndef qsmpm_base_utilities_h
+#define qsmpm_base_utilities_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+/**
+ * Small helpers shared by all modules: parsing of the compact text formats
+ * used in .prm files, and conversions between symmetric tensors and the flat
+ * arrays in which material points store them.
+ */
+namespace qsmpm
+{
+  using namespace dealii;
+
+  namespace Utils
+  {
+    /**
+     * Parse "x,y" (2D) or "x,y,z" (3D) into a point. Throws with a message
+     * naming @p what if the number of coordinates is not @p dim.
+     */
+    template <int dim>
+    Point<dim>
+    parse_point(const std::string &text, const std::string &what);
+
+    /**
+     * Parse a list of @p dim unsigned integers ("8,4").
+     */
+    template <int dim>
+    std::array<unsigned int, dim>
+    parse_subdivisions(const std::string &text, const std::string &what);
+
+    /**
+     * Parse a component string such as "xy", "x", "xyz" or "n" into a mask.
+     * The letter "n" (normal component) is returned as an empty mask together
+     * with @p normal_only = true.
+     */
+    template <int dim>
+    std::array<bool, dim>
+    parse_components(const std::string &text,
+                     const std::string &what,
+                     bool              &normal_only);
+
+    /// Number of independent components of a symmetric rank-2 tensor.
+    template <int dim>
+    constexpr unsigned int n_symmetric_components =
+      SymmetricTensor<2, dim>::n_independent_components;
+
+    /// Read a symmetric tensor from @p data (deal.II's unrolled order).
+    template <int dim>
+    inline SymmetricTensor<2, dim>
+    read_symmetric(const double *data)
+    {
+      SymmetricTensor<2, dim> t;
+      for (unsigned int i = 0; i < n_symmetric_components<dim>; ++i)
+        t.access_raw_entry(i) = data[i];
+      return t;
+    }
+
+    /// Write a symmetric tensor to @p data (deal.II's unrolled order).
+    template <int dim>
+    inline void
+    write_symmetric(const SymmetricTensor<2, dim> &t, double *data)
+    {
+      for (unsigned int i = 0; i < n_symmetric_components<dim>; ++i)
+        data[i] = t.access_raw_entry(i);
+    }
+
+    /// Names of the unrolled components ("xx", "yy", "xy" in 2D).
+    template <int dim>
+    std::vector<std::string>
+    symmetric_component_names();
+
+    /// Split @p text at @p delimiter, trimming white space, dropping empties.
+    std::vector<std::string>
+    split(const std::string &text, const char delimiter);
+  } // namespace Utils
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,175 @@
+#ifndef qsmpm_core_quasi_static_problem_h
+#define qsmpm_core_quasi_static_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/io/output_writer.h>
+#include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/load_stepper.h>
+#include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+#include <qsmpm/solvers/newton_krylov.h>
+
+#include <memory>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * A quasi-static MPM simulation: the background grid, the material points
+   * with their constitutive model, boundary conditions and loads, and the
+   * load-step cycle of paper Section 2.3:
+   *
+   *   for each load step t_k -> t_{k+1}:
+   *     shape functions at the points, once (ShapeCache);
+   *     constraints: displacement increments, nodes without points;
+   *     f_ext(t_{k+1});
+   *     solve R(du) = 0 with Jacobian-free Newton-Krylov;
+   *     if converged: commit point state, move points, re-sort them
+   *     (the grid is thereby reset); else cut the increment back.
+   *
+   * It can be set up from a .prm file (initialize()) or piece by piece from
+   * C++ (grid(), set_model(), points(), boundary_conditions(),
+   * parameters()).
+   */
+  template <int dim>
+  class QuasiStaticProblem
+  {
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    /**
+     * All parameters of a .prm file.
+     */
+    struct Parameters
+    {
+      typename BackgroundGrid<dim>::Parameters   geometry;
+      typename MaterialPointSet<dim>::Parameters material_points;
+      LoadStepper::Parameters                    load_stepping;
+      NewtonParameters                           nonlinear_solver;
+      typename OutputWriter<dim>::Parameters     output;
+
+      /// Declare every subsection, including "Material" and "Boundary
+      /// conditions" with all registered models.
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// What happened in one accepted load step.
+    struct StepReport
+    {
+      unsigned int step;
+      double       load_factor;
+      unsigned int cut_backs;
+      NewtonReport newton;
+      double       wall_time;
+    };
+
+    explicit QuasiStaticProblem(const MPI_Comm communicator);
+    ~QuasiStaticProblem();
+
+    /**
+     * Set up everything from a parsed ParameterHandler (declared with
+     * Parameters::declare_parameters): grid, model, points, loads.
+     */
+    void
+    initialize(ParameterHandler &prm);
+
+    /// The background grid (call make_box() before adding points).
+    BackgroundGrid<dim> &
+    grid();
+
+    /// Choose the constitutive model; creates the (empty) point set.
+    void
+    set_model(std::unique_ptr<ConstitutiveModel<dim>> model);
+
+    /// The material points (after set_model()).
+    MaterialPointSet<dim> &
+    points();
+
+    BoundaryConditions<dim> &
+    boundary_conditions();
+
+    /// Solver, stepping and output settings, read when run() starts.
+    Parameters &
+    parameters();
+
+    /// Run all load steps, writing output and progress.
+    void
+    run();
+
+    /**
+     * One attempt at the step t_old -> t_new. If Newton converges, commit it
+     * and return true; otherwise leave every point untouched and return
+     * false. @p report receives the Newton statistics.
+     */
+    bool
+    advance(const double t_old, const double t_new, NewtonReport &report);
+
+    /// Reports of the accepted steps of run().
+    const std::vector<StepReport> &
+    step_reports() const;
+
+    /// Reaction forces of the last accepted step, per displacement condition.
+    const std::vector<Tensor<1, dim>> &
+    reactions() const;
+
+    /// The last converged grid displacement increment.
+    const VectorType &
+    increment() const;
+
+    /// Progress and summary printing (rank 0); silence with set_condition().
+    ConditionalOStream &
+    pcout();
+
+    TimerOutput &
+    timer();
+
+  private:
+    /// The nonlinear problem of one load step, as NewtonKrylov sees it.
+    struct StepOperator
+    {
+      const QuasiStaticResidual<dim>  &residual_evaluator;
+      const AffineConstraints<double> &constraints;
+
+      void
+      residual(const VectorType &du, VectorType &R) const;
+      void
+      set_constrained_to_zero(VectorType &v) const;
+      void
+      precondition(VectorType &dst, const VectorType &src) const;
+    };
+
+    void
+    setup_step_data();
+
+    MPI_Comm                                communicator;
+    ConditionalOStream                      progress;
+    TimerOutput                             timer_output;
+    Parameters                              prm_values;
+    BackgroundGrid<dim>                     background_grid;
+    std::unique_ptr<ConstitutiveModel<dim>> model;
+    std::unique_ptr<MaterialPointSet<dim>>  material_points;
+    BoundaryConditions<dim>                 bcs;
+    ShapeCache<dim>                         cache;
+    std::unique_ptr<QuasiStaticResidual<dim>> residual;
+    AffineConstraints<double>               constraints;
+    VectorType                              du;
+    VectorType                              R;
+    VectorType                              f_ext;
+    std::vector<Tensor<1, dim>>             last_reactions;
+    std::vector<StepReport>                 reports;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,116 @@
+#ifndef qsmpm_grid_background_grid_h
+#define qsmpm_grid_background_grid_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <array>
+
+namespace qsmpm
+{
+  using namespace dealii;
+
+  /**
+   * The background grid of the material-point method: a uniform Cartesian
+   * box of Q1 cells on a parallel::distributed::Triangulation with the
+   * vector-valued FE_Q(1)^dim space of grid displacement increments (paper
+   * eq. 2.6 and 2.17).
+   *
+   * The grid never deforms in qsmpm: the nodes "move with the body" only
+   * within a load step, which is why shape functions are evaluated once per
+   * step at the points' positions from the start of the step (paper Section
+   * 2.3). After the step the grid is, in effect, reset.
+   *
+   * Boundary ids are those of GridGenerator::subdivided_hyper_rectangle with
+   * colorize = true: 2d for the face x_d = lower corner, 2d+1 for x_d = upper
+   * corner (0 = left, 1 = right, 2 = bottom, 3 = top, 4 = back, 5 = front).
+   */
+  template <int dim>
+  class BackgroundGrid
+  {
+  public:
+    /**
+     * The subsection "Geometry" of a .prm file.
+     */
+    struct Parameters
+    {
+      Point<dim>                    lower_corner;
+      Point<dim>                    upper_corner;
+      std::array<unsigned int, dim> subdivisions;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    explicit BackgroundGrid(const MPI_Comm communicator);
+
+    /**
+     * Create the box and distribute the degrees of freedom.
+     */
+    void
+    make_box(const Point<dim>                    &lower_corner,
+             const Point<dim>                    &upper_corner,
+             const std::array<unsigned int, dim> &subdivisions);
+
+    void
+    make_box(const Parameters &parameters);
+
+    /**
+     * Renumber and redistribute degrees of freedom, e.g. after the
+     * triangulation was repartitioned.
+     */
+    void
+    distribute_dofs();
+
+    const parallel::distributed::Triangulation<dim> &
+    get_triangulation() const;
+    parallel::distributed::Triangulation<dim> &
+    get_triangulation();
+    const DoFHandler<dim> &
+    get_dof_handler() const;
+    const FESystem<dim> &
+    get_fe() const;
+    const MappingQ1<dim> &
+    get_mapping() const;
+    const IndexSet &
+    locally_owned_dofs() const;
+    const IndexSet &
+    locally_relevant_dofs() const;
+    MPI_Comm
+    get_communicator() const;
+
+    /// Lower and upper corners of the box.
+    const Point<dim> &
+    lower_corner() const;
+    const Point<dim> &
+    upper_corner() const;
+
+    /// Edge lengths of one cell.
+    Tensor<1, dim>
+    cell_size() const;
+
+  private:
+    MPI_Comm                                  communicator;
+    parallel::distributed::Triangulation<dim> triangulation;
+    FESystem<dim>                             fe;
+    MappingQ1<dim>                            mapping;
+    DoFHandler<dim>                           dof_handler;
+    IndexSet                                  owned_dofs;
+    IndexSet                                  relevant_dofs;
+    Point<dim>                                box_lower;
+    Point<dim>                                box_upper;
+    std::array<unsigned int, dim>             box_subdivisions;
+  };
+} // namespace qsmpm
+
+#endif

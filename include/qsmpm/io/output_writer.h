@@ -1,0 +1,82 @@
+#ifndef qsmpm_io_output_writer_h
+#define qsmpm_io_output_writer_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/material_point_set.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * Everything a run writes to disk: the material points (all their named
+   * properties) as PVTU files with a PVD time series, the grid displacement
+   * increment of each step, and a CSV file with the reaction force on every
+   * displacement condition per step. Only rank 0 writes the PVD and CSV
+   * files.
+   */
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    /**
+     * The subsection "Output" of a .prm file.
+     */
+    struct Parameters
+    {
+      std::string  directory       = "output";
+      unsigned int interval        = 1;
+      bool         write_increment = true;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    OutputWriter(const Parameters &parameters, const MPI_Comm communicator);
+
+    /// Whether field output is due at @p step.
+    bool
+    fields_due(const unsigned int step) const;
+
+    /// points-NNNNN.pvtu and the PVD record points.pvd.
+    void
+    write_points(const MaterialPointSet<dim> &points,
+                 const unsigned int           step,
+                 const double                 load_factor);
+
+    /// increment-NNNNN.pvtu: the grid's displacement increment of the step.
+    void
+    write_increment(const BackgroundGrid<dim>           &grid,
+                    const TrilinosWrappers::MPI::Vector &du,
+                    const unsigned int                   step,
+                    const double                         load_factor);
+
+    /// One line of reactions.csv (the header is written with the first).
+    void
+    write_reactions(const unsigned int                 step,
+                    const double                       load_factor,
+                    const std::vector<std::string>    &names,
+                    const std::vector<Tensor<1, dim>> &reactions);
+
+    const Parameters &
+    get_parameters() const;
+
+  private:
+    const Parameters                          parameters;
+    const MPI_Comm                            communicator;
+    std::vector<std::pair<double, std::string>> point_records;
+    std::vector<std::pair<double, std::string>> increment_records;
+    std::unique_ptr<std::ofstream>            reactions_file;
+  };
+} // namespace qsmpm
+
+#endif

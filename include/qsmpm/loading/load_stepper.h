@@ -1,0 +1,79 @@
+#ifndef qsmpm_loading_load_stepper_h
+#define qsmpm_loading_load_stepper_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace qsmpm
+{
+  using namespace dealii;
+
+  /**
+   * The sequence of load factors t_0 = 0 < t_1 < ... < t_K = final of a
+   * quasi-static run (paper Section 2.3), with cut-back: a step whose Newton
+   * solve fails is retried with a smaller increment, a bounded number of
+   * times in a row; after that the run stops with an error. Once a step
+   * converges, the next step tries the nominal increment again.
+   */
+  class LoadStepper
+  {
+  public:
+    /**
+     * The subsection "Load stepping" of a .prm file.
+     */
+    struct Parameters
+    {
+      unsigned int n_steps           = 1;
+      double       final_load_factor = 1.;
+      unsigned int max_cut_backs     = 4;
+      double       cut_back_factor   = 0.5;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    explicit LoadStepper(const Parameters &parameters);
+
+    /// Whether the final load factor has been reached.
+    bool
+    finished() const;
+
+    /// Load factor of the last accepted step.
+    double
+    current() const;
+
+    /// Load factor the next attempt goes to.
+    double
+    target() const;
+
+    /// Number of accepted steps.
+    unsigned int
+    step() const;
+
+    /// The attempt converged: advance.
+    void
+    accept();
+
+    /**
+     * The attempt failed: cut the increment back. Throws, naming @p reason,
+     * when the allowed number of cut-backs in a row is exhausted.
+     */
+    void
+    reject(const std::string &reason);
+
+    /// Cut-backs of the current step so far.
+    unsigned int
+    n_cut_backs() const;
+
+  private:
+    const Parameters parameters;
+    const double     nominal_increment;
+    double           t         = 0.;
+    double           increment = 0.;
+    unsigned int     n_steps   = 0;
+    unsigned int     cut_backs = 0;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,167 @@
+#ifndef qsmpm_materials_constitutive_model_h
+#define qsmpm_materials_constitutive_model_h
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace qsmpm
+{
+  using namespace dealii;
+
+  /**
+   * A named block of per-point data that a constitutive model keeps on each
+   * material point (e.g. "crack_opening" with one component, or
+   * "euler_angles" with three).
+   */
+  struct StateField
+  {
+    std::string  name;
+    unsigned int n_components;
+  };
+
+  /**
+   * What a constitutive model may read of a material point: its committed
+   * state at the start of the load step.
+   */
+  template <int dim>
+  struct PointState
+  {
+    /// Committed small strain (paper eq. 2.19, at step k).
+    SymmetricTensor<2, dim> strain;
+    /// Committed Cauchy stress (paper eq. 2.21, at step k).
+    SymmetricTensor<2, dim> stress;
+    /// The model's own committed per-point fields (see state_fields()).
+    ArrayView<const double> state;
+    /// Volume of the point at the start of the step.
+    double volume;
+  };
+
+  /**
+   * The interface of all constitutive models: the stress update of paper
+   * eqs. (2.20)-(2.21) at one material point,
+   *
+   *   (committed strain, stress and history; strain increment)
+   *       -> (trial stress, trial history).
+   *
+   * Implementations must be pure: update_stress() is called many times per
+   * load step (by every residual evaluation of the Jacobian-free
+   * Newton-Krylov solver) and must never modify anything but its output
+   * arguments. Only the converged result is committed to the point.
+   *
+   * Models are selected by name in the .prm file (subsection "Material",
+   * entry "Model") and register themselves with
+   * QSMPM_REGISTER_CONSTITUTIVE_MODEL.
+   */
+  template <int dim>
+  class ConstitutiveModel
+  {
+  public:
+    virtual ~ConstitutiveModel() = default;
+
+    /// The model's per-point fields besides strain and stress.
+    virtual std::vector<StateField>
+    state_fields() const;
+
+    /// Initial values of the model's fields for a point created at @p x.
+    virtual void
+    initialize_state(const Point<dim> &x, ArrayView<double> state) const;
+
+    /**
+     * Trial stress and history for the strain increment @p strain_increment
+     * applied to the committed point state @p old. @p new_state has the size
+     * of the model's fields and must be written completely.
+     */
+    virtual void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const = 0;
+
+    /**
+     * A tangent stiffness d(sigma)/d(epsilon) at the committed state, used by
+     * preconditioners. For linear models it is exact.
+     */
+    virtual SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const = 0;
+
+    /// Total number of doubles in state_fields().
+    unsigned int
+    n_state_components() const;
+  };
+
+
+
+  /**
+   * The registry of constitutive models, in the manner of ASPECT's plugins:
+   * each model registers its name, a description, the declaration of its
+   * parameters (in a subsection named after the model inside "Material") and
+   * a factory function.
+   */
+  template <int dim>
+  class ConstitutiveModelFactory
+  {
+  public:
+    using Declarer = std::function<void(ParameterHandler &)>;
+    using Creator =
+      std::function<std::unique_ptr<ConstitutiveModel<dim>>(ParameterHandler &)>;
+
+    /// Add a model to the registry. Called by QSMPM_REGISTER_CONSTITUTIVE_MODEL.
+    static bool
+    register_model(const std::string &name,
+                   const std::string &description,
+                   const Declarer    &declare_parameters,
+                   const Creator     &create);
+
+    /**
+     * Declare subsection "Material" with the entry "Model" and one
+     * subsection per registered model.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Create the model named in subsection "Material".
+    static std::unique_ptr<ConstitutiveModel<dim>>
+    create(ParameterHandler &prm);
+
+    /// Names of all registered models.
+    static std::vector<std::string>
+    names();
+  };
+} // namespace qsmpm
+
+/**
+ * Register a model class for dim = 2 and 3 (use inside namespace qsmpm).
+ * The class must provide
+ * `static void declare_parameters(ParameterHandler &)` (entries of its own
+ * subsection) and a constructor taking the ParameterHandler positioned in
+ * that subsection.
+ */
+#define QSMPM_REGISTER_CONSTITUTIVE_MODEL(classname, name, description)      \
+  namespace                                                                  \
+  {                                                                          \
+    template <int dim>                                                       \
+    bool register_##classname()                                              \
+    {                                                                        \
+      return ConstitutiveModelFactory<dim>::register_model(                  \
+        name,                                                                \
+        description,                                                         \
+        [](dealii::ParameterHandler &prm) {                                  \
+          classname<dim>::declare_parameters(prm);                           \
+        },                                                                   \
+        [](dealii::ParameterHandler &prm) {                                  \
+          return std::unique_ptr<ConstitutiveModel<dim>>(                    \
+            new classname<dim>(prm));                                        \
+        });                                                                  \
+    }                                                                        \
+    const bool classname##_registered_2 = register_##classname<2>();         \
+    const bool classname##_registered_3 = register_##classname<3>();         \
+  }
+
+#endif

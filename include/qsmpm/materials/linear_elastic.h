@@ -1,0 +1,57 @@
+#ifndef qsmpm_materials_linear_elastic_h
+#define qsmpm_materials_linear_elastic_h
+
+#include <qsmpm/materials/constitutive_model.h>
+
+namespace qsmpm
+{
+  /**
+   * Isotropic linear elasticity, sigma^{k+1} = sigma^k + C : d_epsilon
+   * (paper eqs. 2.20-2.21 with a constant C). In 2D the model is plane strain
+   * by default; with "Plane stress = true" C is the plane-stress stiffness
+   * (sigma_zz = 0).
+   *
+   * Selected in a .prm file with `set Model = linear elastic`.
+   */
+  template <int dim>
+  class LinearElastic : public ConstitutiveModel<dim>
+  {
+  public:
+    LinearElastic(const double young_modulus,
+                  const double poisson_ratio,
+                  const bool   plane_stress = false);
+
+    /// Construct from the subsection "linear elastic".
+    explicit LinearElastic(ParameterHandler &prm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const override;
+
+    SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const override;
+
+    /// The elastic stiffness.
+    const SymmetricTensor<4, dim> &
+    stiffness() const;
+
+    /**
+     * The isotropic stiffness for E, nu; in 2D plane strain or, with
+     * @p plane_stress, the plane-stress reduction.
+     */
+    static SymmetricTensor<4, dim>
+    isotropic_stiffness(const double young_modulus,
+                        const double poisson_ratio,
+                        const bool   plane_stress);
+
+  private:
+    SymmetricTensor<4, dim> C;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,143 @@
+#ifndef qsmpm_particles_material_point_set_h
+#define qsmpm_particles_material_point_set_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/particles/property_layout.h>
+
+#include <functional>
+
+namespace qsmpm
+{
+  template <int dim>
+  class ShapeCache;
+
+  /**
+   * The material points: a Particles::ParticleHandler on the background grid
+   * whose particles carry all the state of the body (paper Section 2.2):
+   * initial and current volume Omega_p, J_p, displacement u_p, strain
+   * epsilon_p, stress sigma_p, a material id and the constitutive model's own
+   * fields. The grid carries nothing between load steps.
+   *
+   * The class also provides the generators that fill a region with points.
+   */
+  template <int dim>
+  class MaterialPointSet
+  {
+  public:
+    /// Where points are put inside a cell.
+    enum class Placement
+    {
+      /// n^dim points at the centres of a uniform n x n (x n) subdivision.
+      regular,
+      /// the n^dim Gauss points, with Gauss weights times cell volume.
+      gauss
+    };
+
+    /**
+     * The subsection "Material points" of a .prm file.
+     */
+    struct Parameters
+    {
+      unsigned int points_per_direction = 2;
+      Placement    placement            = Placement::regular;
+      /// If set, only the box [region_lower, region_upper] is filled.
+      bool       restrict_to_box = false;
+      Point<dim> region_lower;
+      Point<dim> region_upper;
+      /// Omega_p follows J_p (2.23-2.24); false keeps Omega_p^0.
+      bool update_volumes = true;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// Offsets of the fields every point carries.
+    struct Offsets
+    {
+      unsigned int initial_volume;
+      unsigned int volume;
+      unsigned int J;
+      unsigned int displacement;
+      unsigned int strain;
+      unsigned int stress;
+      unsigned int material_id;
+      /// First of the constitutive model's own fields.
+      unsigned int state;
+    };
+
+    MaterialPointSet(const BackgroundGrid<dim>      &grid,
+                     const ConstitutiveModel<dim> &model);
+
+    /**
+     * Fill every locally owned cell with points at the positions given by
+     * @p placement, keeping those at which @p inside is true. Volumes are the
+     * cell volume divided equally (regular) or weighted by the Gauss weights
+     * (gauss). Point ids are globally unique and independent of the number
+     * of MPI ranks only up to ordering.
+     */
+    void
+    fill(const std::function<bool(const Point<dim> &)> &inside,
+         const unsigned int                             points_per_direction,
+         const Placement                                placement,
+         const unsigned int                             material_id = 0);
+
+    /// Fill as described by the parameters.
+    void
+    fill(const Parameters &parameters);
+
+    /**
+     * Move the points with the converged grid increment (paper eqs.
+     * 2.26-2.27): x_p += sum_i du_i N_i(x_p), u_p += the same. @p du_ghosted
+     * must hold the locally relevant entries. Call sort_into_cells() next.
+     */
+    void
+    advect(const ShapeCache<dim>               &cache,
+           const TrilinosWrappers::MPI::Vector &du_ghosted);
+
+    /**
+     * After the points' locations were changed: sort them into cells and
+     * onto the MPI ranks that own those cells. Points that left the grid are
+     * lost; the number of lost points (over all ranks) is returned.
+     */
+    types::particle_index
+    sort_into_cells();
+
+    Particles::ParticleHandler<dim> &
+    get_particle_handler();
+    const Particles::ParticleHandler<dim> &
+    get_particle_handler() const;
+
+    const PropertyLayout &
+    get_layout() const;
+    const Offsets &
+    get_offsets() const;
+    const ConstitutiveModel<dim> &
+    get_model() const;
+
+    /// Number of points on all ranks.
+    types::particle_index
+    n_global_points() const;
+
+    /// Sum of the current point volumes over all ranks.
+    double
+    total_volume() const;
+
+  private:
+    const BackgroundGrid<dim>      &grid;
+    const ConstitutiveModel<dim>   &model;
+    PropertyLayout                  layout;
+    Offsets                         offsets;
+    Particles::ParticleHandler<dim> particle_handler;
+  };
+} // namespace qsmpm
+
+#endif

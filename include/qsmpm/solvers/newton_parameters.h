@@ -1,0 +1,37 @@
+#ifndef qsmpm_solvers_newton_parameters_h
+#define qsmpm_solvers_newton_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace qsmpm
+{
+  using namespace dealii;
+
+  /**
+   * The subsection "Nonlinear solver": Newton's method of paper Appendix A.1
+   * with GMRES (A.2) on the finite-difference Jacobian (A.3-A.4).
+   */
+  struct NewtonParameters
+  {
+    /// gamma of the stopping test ||R_n|| <= gamma max(floor, ||R_0||).
+    double tolerance = 1e-6;
+    /// The absolute floor of that test (the paper's 1).
+    double residual_floor = 1.;
+    unsigned int max_iterations = 20;
+    /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
+    double       linear_tolerance  = 1e-3;
+    unsigned int max_linear_iterations = 1000;
+    unsigned int gmres_restart     = 50;
+    /// sqrt(eps_prec) of Kelley's difference parameter (A.4).
+    double sqrt_eps_prec = 1e-7;
+    /// Backtracking line search on ||R|| (halving, at most this many times).
+    unsigned int max_line_search_steps = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace qsmpm
+
+#endif

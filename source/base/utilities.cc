@@ -1,0 +1,129 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <qsmpm/base/utilities.h>
+
+namespace qsmpm
+{
+  namespace Utils
+  {
+    std::vector<std::string>
+    split(const std::string &text, const char delimiter)
+    {
+      std::vector<std::string> out;
+      for (const auto &piece :
+           dealii::Utilities::split_string_list(text, delimiter))
+        if (!piece.empty())
+          out.push_back(piece);
+      return out;
+    }
+
+
+
+    template <int dim>
+    Point<dim>
+    parse_point(const std::string &text, const std::string &what)
+    {
+      const auto pieces = split(text, ',');
+      AssertThrow(pieces.size() == dim,
+                  ExcMessage("The entry <" + what + "> = <" + text +
+                             "> must have exactly " + std::to_string(dim) +
+                             " comma-separated coordinates."));
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = dealii::Utilities::string_to_double(pieces[d]);
+      return p;
+    }
+
+
+
+    template <int dim>
+    std::array<unsigned int, dim>
+    parse_subdivisions(const std::string &text, const std::string &what)
+    {
+      const auto pieces = split(text, ',');
+      AssertThrow(pieces.size() == dim,
+                  ExcMessage("The entry <" + what + "> = <" + text +
+                             "> must have exactly " + std::to_string(dim) +
+                             " comma-separated positive integers."));
+      std::array<unsigned int, dim> n;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const int value = dealii::Utilities::string_to_int(pieces[d]);
+          AssertThrow(value > 0,
+                      ExcMessage("The entry <" + what + "> = <" + text +
+                                 "> must hold positive integers."));
+          n[d] = value;
+        }
+      return n;
+    }
+
+
+
+    template <int dim>
+    std::array<bool, dim>
+    parse_components(const std::string &text,
+                     const std::string &what,
+                     bool              &normal_only)
+    {
+      static const char   letters[3] = {'x', 'y', 'z'};
+      std::array<bool, dim> mask;
+      mask.fill(false);
+      normal_only = (text == "n");
+      if (normal_only)
+        return mask;
+      AssertThrow(!text.empty(),
+                  ExcMessage("Empty component list in <" + what + ">."));
+      for (const char c : text)
+        {
+          bool found = false;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (c == letters[d])
+              {
+                mask[d] = true;
+                found   = true;
+              }
+          AssertThrow(found,
+                      ExcMessage("Unknown component <" + std::string(1, c) +
+                                 "> in <" + what + "> = <" + text +
+                                 ">: use letters from " +
+                                 std::string(letters, dim) +
+                                 ", or n for the normal component."));
+        }
+      return mask;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::string>
+    symmetric_component_names()
+    {
+      static const char        letters[3] = {'x', 'y', 'z'};
+      std::vector<std::string> names(n_symmetric_components<dim>);
+      for (unsigned int i = 0; i < names.size(); ++i)
+        {
+          const auto ij =
+            SymmetricTensor<2, dim>::unrolled_to_component_indices(i);
+          names[i] = std::string(1, letters[ij[0]]) + letters[ij[1]];
+        }
+      return names;
+    }
+
+
+
+#define QSMPM_INSTANTIATE(dim)                                                \
+  template Point<dim> parse_point<dim>(const std::string &,                   \
+                                       const std::string &);                  \
+  template std::array<unsigned int, dim> parse_subdivisions<dim>(             \
+    const std::string &, const std::string &);                                \
+  template std::array<bool, dim> parse_components<dim>(const std::string &,   \
+                                                       const std::string &,   \
+                                                       bool &);               \
+  template std::vector<std::string> symmetric_component_names<dim>();
+
+    QSMPM_INSTANTIATE(2)
+    QSMPM_INSTANTIATE(3)
+#undef QSMPM_INSTANTIATE
+  } // namespace Utils
+} // namespace qsmpm

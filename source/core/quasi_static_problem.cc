@@ -1,0 +1,359 @@
+#include <deal.II/base/mpi.h>
+
+#include <qsmpm/core/quasi_static_problem.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    BackgroundGrid<dim>::Parameters::declare_parameters(prm);
+    MaterialPointSet<dim>::Parameters::declare_parameters(prm);
+    ConstitutiveModelFactory<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::Parameters::declare_parameters(prm);
+    LoadStepper::Parameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    OutputWriter<dim>::Parameters::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    geometry.parse_parameters(prm);
+    material_points.parse_parameters(prm);
+    load_stepping.parse_parameters(prm);
+    nonlinear_solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  QuasiStaticProblem<dim>::QuasiStaticProblem(const MPI_Comm communicator)
+    : communicator(communicator)
+    , progress(std::cout,
+               dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+    , timer_output(communicator,
+                   progress,
+                   TimerOutput::never,
+                   TimerOutput::wall_times)
+    , background_grid(communicator)
+  {}
+
+
+
+  template <int dim>
+  QuasiStaticProblem<dim>::~QuasiStaticProblem()
+  {
+    // Points refer to the model; destroy them first.
+    residual.reset();
+    material_points.reset();
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::initialize(ParameterHandler &prm)
+  {
+    prm_values.parse_parameters(prm);
+    background_grid.make_box(prm_values.geometry);
+    set_model(ConstitutiveModelFactory<dim>::create(prm));
+    material_points->fill(prm_values.material_points);
+    AssertThrow(material_points->n_global_points() > 0,
+                ExcMessage("Material points: the region holds no points."));
+    bcs.parse_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  BackgroundGrid<dim> &
+  QuasiStaticProblem<dim>::grid()
+  {
+    return background_grid;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::set_model(
+    std::unique_ptr<ConstitutiveModel<dim>> new_model)
+  {
+    residual.reset();
+    material_points.reset();
+    model = std::move(new_model);
+    material_points =
+      std::make_unique<MaterialPointSet<dim>>(background_grid, *model);
+  }
+
+
+
+  template <int dim>
+  MaterialPointSet<dim> &
+  QuasiStaticProblem<dim>::points()
+  {
+    AssertThrow(material_points,
+                ExcMessage("Choose a constitutive model (set_model) before "
+                           "adding material points."));
+    return *material_points;
+  }
+
+
+
+  template <int dim>
+  BoundaryConditions<dim> &
+  QuasiStaticProblem<dim>::boundary_conditions()
+  {
+    return bcs;
+  }
+
+
+
+  template <int dim>
+  typename QuasiStaticProblem<dim>::Parameters &
+  QuasiStaticProblem<dim>::parameters()
+  {
+    return prm_values;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::setup_step_data()
+  {
+    if (!residual)
+      residual = std::make_unique<QuasiStaticResidual<dim>>(
+        background_grid,
+        points(),
+        cache,
+        prm_values.material_points.update_volumes);
+    du.reinit(background_grid.locally_owned_dofs(), communicator);
+    R.reinit(du);
+    f_ext.reinit(du);
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::advance(const double  t_old,
+                                   const double  t_new,
+                                   NewtonReport &report)
+  {
+    setup_step_data();
+
+    // N_i(x_p) and grad N_i(x_p) for the whole step (paper Section 2.3).
+    {
+      TimerOutput::Scope scope(timer_output, "shape functions at points");
+      cache.reinit(background_grid, points(), residual->ghosted_layout());
+    }
+    {
+      TimerOutput::Scope scope(timer_output, "constraints and loads");
+      bcs.make_constraints(background_grid,
+                           cache.dofs_without_points(background_grid),
+                           t_old,
+                           t_new,
+                           constraints);
+      bcs.assemble_external_force(background_grid,
+                                  cache,
+                                  points().get_offsets().volume,
+                                  t_new,
+                                  f_ext);
+      residual->set_external_force(f_ext);
+    }
+
+    // A.1 step 1: zero initial guess but for the prescribed increments.
+    du = 0.;
+    constraints.distribute(du);
+
+    {
+      TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
+      const StepOperator op{*residual, constraints};
+      const NewtonKrylov<StepOperator, VectorType> newton(
+        prm_values.nonlinear_solver);
+      report = newton.solve(op, du, R);
+    }
+    if (!report.converged)
+      return false;
+
+    {
+      TimerOutput::Scope scope(timer_output, "commit and move points");
+      residual->commit(du);
+      VectorType du_ghosted(background_grid.locally_owned_dofs(),
+                            background_grid.locally_relevant_dofs(),
+                            communicator);
+      du_ghosted = du;
+      points().advect(cache, du_ghosted);
+      last_reactions = bcs.reactions(R, communicator);
+      const auto lost = points().sort_into_cells();
+      AssertThrow(lost == 0,
+                  ExcMessage(std::to_string(lost) +
+                             " material points left the background grid. "
+                             "Enlarge the grid around the body."));
+    }
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::run()
+  {
+    LoadStepper              stepper(prm_values.load_stepping);
+    OutputWriter<dim>        writer(prm_values.output, communicator);
+    std::vector<std::string> names;
+    for (const auto &condition : bcs.dirichlet_conditions())
+      names.push_back(condition.name);
+
+    progress << "qsmpm: " << dim << "D, "
+             << background_grid.get_triangulation().n_global_active_cells()
+             << " cells, " << background_grid.get_dof_handler().n_dofs()
+             << " dofs, " << points().n_global_points()
+             << " material points, "
+             << dealii::Utilities::MPI::n_mpi_processes(communicator)
+             << " MPI rank(s)" << std::endl;
+
+    if (writer.fields_due(0))
+      {
+        TimerOutput::Scope scope(timer_output, "output");
+        writer.write_points(points(), 0, 0.);
+      }
+
+    while (!stepper.finished())
+      {
+        Timer        wall_timer;
+        NewtonReport newton;
+        const double t_old = stepper.current(), t_new = stepper.target();
+        if (!advance(t_old, t_new, newton))
+          {
+            progress << "  step " << stepper.step() + 1 << ": t = " << t_old
+                     << " -> " << t_new << " failed (" << newton.failure
+                     << "), cutting back" << std::endl;
+            stepper.reject(newton.failure);
+            continue;
+          }
+        const unsigned int cut_backs = stepper.n_cut_backs();
+        stepper.accept();
+        wall_timer.stop();
+        reports.push_back({stepper.step(),
+                           t_new,
+                           cut_backs,
+                           newton,
+                           wall_timer.wall_time()});
+
+        std::ostringstream line;
+        line << "step " << std::setw(5) << stepper.step()
+             << "  t = " << std::setw(10) << std::setprecision(5) << t_new
+             << "  newton " << std::setw(2) << newton.newton_iterations
+             << "  gmres " << std::setw(4) << newton.linear_iterations
+             << "  |R| " << std::scientific << std::setprecision(2)
+             << newton.initial_residual << " -> " << newton.final_residual
+             << std::defaultfloat << "  " << std::fixed
+             << std::setprecision(3) << wall_timer.wall_time() << " s";
+        progress << line.str() << std::endl;
+
+        TimerOutput::Scope scope(timer_output, "output");
+        if (!names.empty())
+          writer.write_reactions(stepper.step(), t_new, names, last_reactions);
+        if (writer.fields_due(stepper.step()) ||
+            (stepper.finished() && prm_values.output.interval > 0))
+          {
+            writer.write_points(points(), stepper.step(), t_new);
+            writer.write_increment(background_grid, du, stepper.step(), t_new);
+          }
+      }
+    timer_output.print_summary();
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename QuasiStaticProblem<dim>::StepReport> &
+  QuasiStaticProblem<dim>::step_reports() const
+  {
+    return reports;
+  }
+
+
+
+  template <int dim>
+  const std::vector<Tensor<1, dim>> &
+  QuasiStaticProblem<dim>::reactions() const
+  {
+    return last_reactions;
+  }
+
+
+
+  template <int dim>
+  const typename QuasiStaticProblem<dim>::VectorType &
+  QuasiStaticProblem<dim>::increment() const
+  {
+    return du;
+  }
+
+
+
+  template <int dim>
+  ConditionalOStream &
+  QuasiStaticProblem<dim>::pcout()
+  {
+    return progress;
+  }
+
+
+
+  template <int dim>
+  TimerOutput &
+  QuasiStaticProblem<dim>::timer()
+  {
+    return timer_output;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::StepOperator::residual(const VectorType &du,
+                                                  VectorType       &R) const
+  {
+    residual_evaluator.evaluate(du, R);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::StepOperator::set_constrained_to_zero(
+    VectorType &v) const
+  {
+    constraints.set_zero(v);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::StepOperator::precondition(
+    VectorType       &dst,
+    const VectorType &src) const
+  {
+    dst = src;
+  }
+
+
+
+  template class QuasiStaticProblem<2>;
+  template class QuasiStaticProblem<3>;
+} // namespace qsmpm

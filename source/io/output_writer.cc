@@ -1,0 +1,186 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <deal.II/particles/data_out.h>
+
+#include <qsmpm/io/output_writer.h>
+
+#include <filesystem>
+#include <iomanip>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  OutputWriter<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Where all output goes (created if needed; relative "
+                        "to the working directory).");
+      prm.declare_entry("Interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Write point and grid fields every this many steps "
+                        "(and after the last); 0 writes none. reactions.csv "
+                        "is written every step.");
+      prm.declare_entry("Write increment",
+                        "true",
+                        Patterns::Bool(),
+                        "Also write the grid displacement increment.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      directory       = prm.get("Directory");
+      interval        = prm.get_integer("Interval");
+      write_increment = prm.get_bool("Write increment");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  OutputWriter<dim>::OutputWriter(const Parameters &parameters,
+                                  const MPI_Comm    communicator)
+    : parameters(parameters)
+    , communicator(communicator)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(parameters.directory, error);
+        AssertThrow(!error,
+                    ExcMessage("Cannot create the output directory <" +
+                               parameters.directory + ">: " +
+                               error.message()));
+      }
+    MPI_Barrier(communicator);
+  }
+
+
+
+  template <int dim>
+  bool
+  OutputWriter<dim>::fields_due(const unsigned int step) const
+  {
+    return parameters.interval > 0 && step % parameters.interval == 0;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_points(const MaterialPointSet<dim> &points,
+                                  const unsigned int           step,
+                                  const double                 load_factor)
+  {
+    Particles::DataOut<dim> data_out;
+    data_out.build_patches(points.get_particle_handler(),
+                           points.get_layout().component_names(dim),
+                           points.get_layout().component_interpretations());
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      parameters.directory + "/", "points", step, communicator, 5);
+    point_records.emplace_back(load_factor, name);
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream pvd(parameters.directory + "/points.pvd");
+        DataOutBase::write_pvd_record(pvd, point_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_increment(const BackgroundGrid<dim> &grid,
+                                     const TrilinosWrappers::MPI::Vector &du,
+                                     const unsigned int                   step,
+                                     const double load_factor)
+  {
+    if (!parameters.write_increment)
+      return;
+    TrilinosWrappers::MPI::Vector ghosted(grid.locally_owned_dofs(),
+                                          grid.locally_relevant_dofs(),
+                                          communicator);
+    ghosted = du;
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(grid.get_dof_handler());
+    data_out.add_data_vector(
+      ghosted,
+      std::vector<std::string>(dim, "displacement_increment"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.build_patches();
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      parameters.directory + "/", "increment", step, communicator, 5);
+    increment_records.emplace_back(load_factor, name);
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream pvd(parameters.directory + "/increment.pvd");
+        DataOutBase::write_pvd_record(pvd, increment_records);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_reactions(
+    const unsigned int                 step,
+    const double                       load_factor,
+    const std::vector<std::string>    &names,
+    const std::vector<Tensor<1, dim>> &reactions)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    static const char *const components[3] = {"x", "y", "z"};
+    if (!reactions_file)
+      {
+        reactions_file = std::make_unique<std::ofstream>(
+          parameters.directory + "/reactions.csv");
+        AssertThrow(*reactions_file,
+                    ExcMessage("Cannot write " + parameters.directory +
+                               "/reactions.csv"));
+        *reactions_file << "step,load_factor";
+        for (const auto &name : names)
+          for (unsigned int d = 0; d < dim; ++d)
+            *reactions_file << ',' << name << "_F" << components[d];
+        *reactions_file << '\n';
+      }
+    *reactions_file << step << ',' << std::setprecision(12) << load_factor;
+    for (const auto &reaction : reactions)
+      for (unsigned int d = 0; d < dim; ++d)
+        *reactions_file << ',' << reaction[d];
+    *reactions_file << std::endl;
+  }
+
+
+
+  template <int dim>
+  const typename OutputWriter<dim>::Parameters &
+  OutputWriter<dim>::get_parameters() const
+  {
+    return parameters;
+  }
+
+
+
+  template class OutputWriter<2>;
+  template class OutputWriter<3>;
+} // namespace qsmpm

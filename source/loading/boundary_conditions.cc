@@ -1,0 +1,457 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/loading/boundary_conditions.h>
+
+#include <algorithm>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  BoundaryConditions<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry(
+        "Dirichlet boundaries",
+        "",
+        Patterns::Anything(),
+        "Comma-separated list of <boundary id>:<components>, e.g. "
+        "\"0:xy, 1:x, 2:n\". Components are letters from x, y, z, or n for "
+        "the normal component only (a face free to slide). The prescribed "
+        "values come from the function of subsection <Displacement> at the "
+        "node positions, with t = load factor. Box boundary ids: 0/1 = x "
+        "min/max, 2/3 = y min/max, 4/5 = z min/max.");
+      prm.declare_entry("Traction boundaries",
+                        "",
+                        Patterns::List(Patterns::Integer(0)),
+                        "Boundary ids loaded by the function of subsection "
+                        "<Traction> (force per area, t = load factor).");
+      const std::string zero = dim == 2 ? "0; 0" : "0; 0; 0";
+      for (const std::string name : {"Displacement", "Traction", "Body force"})
+        {
+          prm.enter_subsection(name);
+          Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+          prm.set("Function expression", zero);
+          prm.set("Variable names", dim == 2 ? "x,y,t" : "x,y,z,t");
+          prm.leave_subsection();
+        }
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    dirichlet = prm.get("Dirichlet boundaries");
+    traction  = prm.get("Traction boundaries");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+
+    prm.enter_subsection("Boundary conditions");
+    parsed_displacement = std::make_shared<Functions::ParsedFunction<dim>>(dim);
+    parsed_traction     = std::make_shared<Functions::ParsedFunction<dim>>(dim);
+    parsed_body_force   = std::make_shared<Functions::ParsedFunction<dim>>(dim);
+    prm.enter_subsection("Displacement");
+    parsed_displacement->parse_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Traction");
+    parsed_traction->parse_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Body force");
+    parsed_body_force->parse_parameters(prm);
+    const bool has_body_force =
+      prm.get("Function expression") != (dim == 2 ? "0; 0" : "0; 0; 0");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    for (const auto &entry : Utils::split(parameters.dirichlet, ','))
+      {
+        const auto parts = Utils::split(entry, ':');
+        AssertThrow(parts.size() == 2,
+                    ExcMessage("Boundary conditions: the entry <Dirichlet "
+                               "boundaries> expects <id>:<components> items, "
+                               "got <" + entry + ">."));
+        const int id = dealii::Utilities::string_to_int(parts[0]);
+        AssertThrow(id >= 0 && id < 2 * dim,
+                    ExcMessage("Boundary conditions: boundary id <" +
+                               parts[0] + "> in <Dirichlet boundaries> does "
+                               "not exist; a box has ids 0 to " +
+                               std::to_string(2 * dim - 1) + "."));
+        bool       normal_only = false;
+        const auto components  = Utils::parse_components<dim>(
+          parts[1], "Dirichlet boundaries", normal_only);
+        add_dirichlet_boundary(id, components, parsed_displacement, normal_only);
+      }
+    for (const auto &entry : Utils::split(parameters.traction, ','))
+      add_traction(dealii::Utilities::string_to_int(entry), parsed_traction);
+    if (has_body_force)
+      set_body_force(parsed_body_force);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_dirichlet_boundary(
+    const types::boundary_id              id,
+    const std::array<bool, dim>          &components,
+    const std::shared_ptr<Function<dim>> &displacement,
+    const bool                            normal_only)
+  {
+    AssertThrow(displacement && displacement->n_components == dim,
+                ExcMessage("A displacement function needs dim components."));
+    dirichlet.push_back({"boundary_" + std::to_string(id),
+                         id,
+                         {},
+                         components,
+                         normal_only,
+                         displacement});
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_dirichlet_nodes(
+    const std::string                             &name,
+    const std::function<bool(const Point<dim> &)> &selector,
+    const std::array<bool, dim>                   &components,
+    const std::shared_ptr<Function<dim>>          &displacement)
+  {
+    AssertThrow(displacement && displacement->n_components == dim,
+                ExcMessage("A displacement function needs dim components."));
+    dirichlet.push_back({name,
+                         numbers::invalid_boundary_id,
+                         selector,
+                         components,
+                         false,
+                         displacement});
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_traction(
+    const types::boundary_id              id,
+    const std::shared_ptr<Function<dim>> &traction)
+  {
+    AssertThrow(traction && traction->n_components == dim,
+                ExcMessage("A traction function needs dim components."));
+    tractions.emplace_back(id, traction);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::set_body_force(
+    const std::shared_ptr<Function<dim>> &force)
+  {
+    AssertThrow(force && force->n_components == dim,
+                ExcMessage("A body force function needs dim components."));
+    body_force = force;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_point_load(const Point<dim>     &location,
+                                          const Tensor<1, dim> &force)
+  {
+    point_loads.emplace_back(location, force);
+  }
+
+
+
+  namespace
+  {
+    // The coordinate direction normal to an axis-aligned face.
+    template <typename FaceIterator>
+    unsigned int
+    face_normal_direction(const FaceIterator &face, const unsigned int dim)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          bool constant = true;
+          for (unsigned int v = 1; v < face->n_vertices(); ++v)
+            constant = constant && std::abs(face->vertex(v)[d] -
+                                            face->vertex(0)[d]) <=
+                                     1e-12 * face->diameter();
+          if (constant)
+            return d;
+        }
+      AssertThrow(false,
+                  ExcMessage("Sliding (normal-component) conditions need "
+                             "axis-aligned boundary faces."));
+      return 0;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::make_constraints(
+    const BackgroundGrid<dim> &grid,
+    const IndexSet            &inactive_dofs,
+    const double               t_old,
+    const double               t_new,
+    AffineConstraints<double> &constraints)
+  {
+    constraints.clear();
+    constraints.reinit(grid.locally_relevant_dofs());
+    constrained_dofs.assign(dirichlet.size(), {});
+
+    const IndexSet &owned = grid.locally_owned_dofs();
+    Vector<double>  g_old(dim), g_new(dim);
+
+    // Constrain component c of a vertex with global dof index `dof`.
+    auto constrain = [&](const unsigned int             condition,
+                         const types::global_dof_index dof,
+                         const unsigned int             c,
+                         const double                   increment) {
+      if (!constraints.is_constrained(dof))
+        {
+          constraints.add_line(dof);
+          constraints.set_inhomogeneity(dof, increment);
+        }
+      if (owned.is_element(dof))
+        constrained_dofs[condition].emplace_back(dof, c);
+    };
+
+    for (unsigned int k = 0; k < dirichlet.size(); ++k)
+      {
+        DirichletCondition &condition = dirichlet[k];
+        auto evaluate = [&](const Point<dim> &x) {
+          condition.displacement->set_time(t_old);
+          condition.displacement->vector_value(x, g_old);
+          condition.displacement->set_time(t_new);
+          condition.displacement->vector_value(x, g_new);
+        };
+
+        for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+          {
+            if (cell->is_artificial())
+              continue;
+            if (condition.boundary_id != numbers::invalid_boundary_id)
+              {
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary() &&
+                      cell->face(f)->boundary_id() == condition.boundary_id)
+                    {
+                      const auto face = cell->face(f);
+                      std::array<bool, dim> mask = condition.components;
+                      if (condition.normal_only)
+                        {
+                          mask.fill(false);
+                          mask[face_normal_direction(face, dim)] = true;
+                        }
+                      for (unsigned int v = 0; v < face->n_vertices(); ++v)
+                        {
+                          evaluate(face->vertex(v));
+                          for (unsigned int c = 0; c < dim; ++c)
+                            if (mask[c])
+                              constrain(k,
+                                        face->vertex_dof_index(v, c),
+                                        c,
+                                        g_new[c] - g_old[c]);
+                        }
+                    }
+              }
+            else
+              for (const unsigned int v : cell->vertex_indices())
+                if (condition.selector(cell->vertex(v)))
+                  {
+                    evaluate(cell->vertex(v));
+                    for (unsigned int c = 0; c < dim; ++c)
+                      if (condition.components[c])
+                        constrain(k,
+                                  cell->vertex_dof_index(v, c),
+                                  c,
+                                  g_new[c] - g_old[c]);
+                  }
+          }
+
+        auto &dofs = constrained_dofs[k];
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        AssertThrow(dealii::Utilities::MPI::sum(dofs.size(),
+                                                grid.get_communicator()) > 0,
+                    ExcMessage("The displacement condition <" +
+                               condition.name +
+                               "> does not select any grid node."));
+      }
+
+    // Nodes with no point in their support have no equation: fix their
+    // increment to zero. It does not influence any point.
+    for (const auto dof : inactive_dofs)
+      if (!constraints.is_constrained(dof))
+        constraints.add_line(dof);
+
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::assemble_external_force(
+    const BackgroundGrid<dim>     &grid,
+    const ShapeCache<dim>         &cache,
+    const unsigned int             volume_offset,
+    const double                   t,
+    TrilinosWrappers::MPI::Vector &f_ext) const
+  {
+    f_ext = 0;
+    constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    std::vector<double>                  cell_force(dofs_per_cell);
+
+    // Body force, paper eq. (2.11): b_i = sum_p Omega_p b(x_p) N_i(x_p).
+    if (body_force)
+      {
+        body_force->set_time(t);
+        Vector<double> b(dim);
+        for (unsigned int c = 0; c < cache.n_cells(); ++c)
+          {
+            std::fill(cell_force.begin(), cell_force.end(), 0.);
+            const auto &range = cache.cell(c);
+            for (unsigned int p = range.first_point; p < range.end_point; ++p)
+              {
+                body_force->vector_value(cache.position(p), b);
+                const double  volume = cache.properties(p)[volume_offset];
+                const double *N      = cache.values(p);
+                for (unsigned int v = 0; v < ShapeCache<dim>::n_vertices; ++v)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    cell_force[v * dim + d] += volume * b[d] * N[v];
+              }
+            dofs.assign(cache.global_dofs(c),
+                        cache.global_dofs(c) + dofs_per_cell);
+            f_ext.add(dofs, cell_force);
+          }
+      }
+
+    // Tractions, paper eq. (2.12), on the grid's boundary faces.
+    if (!tractions.empty())
+      {
+        const QGauss<dim - 1> face_quadrature(2);
+        FEFaceValues<dim>     fe_face(grid.get_mapping(),
+                                  grid.get_fe(),
+                                  face_quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+        Vector<double> traction(dim);
+        for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              for (const auto &[id, function] : tractions)
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == id)
+                  {
+                    fe_face.reinit(cell, f);
+                    function->set_time(t);
+                    std::fill(cell_force.begin(), cell_force.end(), 0.);
+                    for (const unsigned int q :
+                         fe_face.quadrature_point_indices())
+                      {
+                        function->vector_value(fe_face.quadrature_point(q),
+                                               traction);
+                        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                          {
+                            const unsigned int c =
+                              grid.get_fe().system_to_component_index(i).first;
+                            cell_force[i] += traction[c] *
+                                             fe_face.shape_value(i, q) *
+                                             fe_face.JxW(q);
+                          }
+                      }
+                    cell->get_dof_indices(dofs);
+                    f_ext.add(dofs, cell_force);
+                  }
+      }
+
+    // Point loads at grid nodes; the owner of the node's dofs adds them.
+    for (const auto &[location, force] : point_loads)
+      {
+        bool found = false;
+        for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+          if (!cell->is_artificial() && !found)
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(location) <
+                  1e-10 * cell->diameter())
+                {
+                  found = true;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    if (grid.locally_owned_dofs().is_element(
+                          cell->vertex_dof_index(v, d)))
+                      f_ext(cell->vertex_dof_index(v, d)) += t * force[d];
+                  break;
+                }
+        AssertThrow(dealii::Utilities::MPI::max(found ? 1 : 0,
+                                                grid.get_communicator()) == 1,
+                    ExcMessage("A point load must sit on a grid node."));
+      }
+    f_ext.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  BoundaryConditions<dim>::reactions(
+    const TrilinosWrappers::MPI::Vector &residual,
+    const MPI_Comm                       communicator) const
+  {
+    std::vector<Tensor<1, dim>> result(constrained_dofs.size());
+    for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
+      {
+        for (const auto &[dof, c] : constrained_dofs[k])
+          result[k][c] -= residual(dof);
+        result[k] = dealii::Utilities::MPI::sum(result[k], communicator);
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename BoundaryConditions<dim>::DirichletCondition> &
+  BoundaryConditions<dim>::dirichlet_conditions() const
+  {
+    return dirichlet;
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::has_loads() const
+  {
+    return body_force || !tractions.empty() || !point_loads.empty();
+  }
+
+
+
+  template class BoundaryConditions<2>;
+  template class BoundaryConditions<3>;
+} // namespace qsmpm

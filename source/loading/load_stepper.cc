@@ -1,0 +1,141 @@
+#include <deal.II/base/exceptions.h>
+
+#include <qsmpm/loading/load_stepper.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace qsmpm
+{
+  void
+  LoadStepper::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    {
+      prm.declare_entry("Number of steps",
+                        "1",
+                        Patterns::Integer(1),
+                        "K: the load factor goes from 0 to its final value "
+                        "in K equal increments.");
+      prm.declare_entry("Final load factor",
+                        "1.0",
+                        Patterns::Double(),
+                        "The load factor t at the end of the run; it is the "
+                        "time variable t of all boundary and load functions.");
+      prm.declare_entry("Maximum cut-backs",
+                        "4",
+                        Patterns::Integer(0, 30),
+                        "How often in a row a step that did not converge is "
+                        "retried with a smaller increment before the run "
+                        "stops.");
+      prm.declare_entry("Cut-back factor",
+                        "0.5",
+                        Patterns::Double(0.01, 0.99),
+                        "The increment is multiplied by this after a failed "
+                        "attempt.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadStepper::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    {
+      n_steps           = prm.get_integer("Number of steps");
+      final_load_factor = prm.get_double("Final load factor");
+      max_cut_backs     = prm.get_integer("Maximum cut-backs");
+      cut_back_factor   = prm.get_double("Cut-back factor");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  LoadStepper::LoadStepper(const Parameters &parameters)
+    : parameters(parameters)
+    , nominal_increment(parameters.final_load_factor / parameters.n_steps)
+    , increment(nominal_increment)
+  {
+    AssertThrow(parameters.n_steps > 0,
+                ExcMessage("Load stepping: <Number of steps> must be > 0."));
+  }
+
+
+
+  bool
+  LoadStepper::finished() const
+  {
+    return std::abs(t - parameters.final_load_factor) <=
+           1e-12 * std::abs(parameters.final_load_factor);
+  }
+
+
+
+  double
+  LoadStepper::current() const
+  {
+    return t;
+  }
+
+
+
+  double
+  LoadStepper::target() const
+  {
+    // Do not overshoot the final value, and do not leave a sliver behind.
+    const double remaining = parameters.final_load_factor - t;
+    if (std::abs(remaining) <= 1.000001 * std::abs(increment))
+      return parameters.final_load_factor;
+    return t + increment;
+  }
+
+
+
+  unsigned int
+  LoadStepper::step() const
+  {
+    return n_steps;
+  }
+
+
+
+  void
+  LoadStepper::accept()
+  {
+    t = target();
+    ++n_steps;
+    cut_backs = 0;
+    increment = nominal_increment;
+  }
+
+
+
+  void
+  LoadStepper::reject(const std::string &reason)
+  {
+    if (cut_backs >= parameters.max_cut_backs)
+      {
+        std::ostringstream message;
+        message << "Load step " << n_steps + 1 << " (load factor " << t
+                << " -> " << target() << ") did not converge: " << reason
+                << ". It was cut back " << cut_backs
+                << " times already (Load stepping/Maximum cut-backs = "
+                << parameters.max_cut_backs
+                << "). Nothing of this step was written as converged.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    ++cut_backs;
+    increment *= parameters.cut_back_factor;
+  }
+
+
+
+  unsigned int
+  LoadStepper::n_cut_backs() const
+  {
+    return cut_backs;
+  }
+} // namespace qsmpm

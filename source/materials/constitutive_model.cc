@@ -1,0 +1,145 @@
+#include <deal.II/base/exceptions.h>
+
+#include <qsmpm/materials/constitutive_model.h>
+
+#include <map>
+
+namespace qsmpm
+{
+  template <int dim>
+  std::vector<StateField>
+  ConstitutiveModel<dim>::state_fields() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::initialize_state(const Point<dim> &,
+                                           ArrayView<double> state) const
+  {
+    for (double &s : state)
+      s = 0.;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ConstitutiveModel<dim>::n_state_components() const
+  {
+    unsigned int n = 0;
+    for (const auto &field : state_fields())
+      n += field.n_components;
+    return n;
+  }
+
+
+
+  namespace
+  {
+    template <int dim>
+    struct Entry
+    {
+      std::string                                 description;
+      typename ConstitutiveModelFactory<dim>::Declarer declare;
+      typename ConstitutiveModelFactory<dim>::Creator  create;
+    };
+
+    // A function-local static avoids the static initialization order
+    // problem: models register themselves from static objects in other
+    // translation units.
+    template <int dim>
+    std::map<std::string, Entry<dim>> &
+    registry()
+    {
+      static std::map<std::string, Entry<dim>> models;
+      return models;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  bool
+  ConstitutiveModelFactory<dim>::register_model(const std::string &name,
+                                                const std::string &description,
+                                                const Declarer    &declare,
+                                                const Creator     &create)
+  {
+    AssertThrow(registry<dim>().count(name) == 0,
+                ExcMessage("Constitutive model <" + name +
+                           "> is registered twice."));
+    registry<dim>()[name] = {description, declare, create};
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ConstitutiveModelFactory<dim>::names()
+  {
+    std::vector<std::string> result;
+    for (const auto &entry : registry<dim>())
+      result.push_back(entry.first);
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModelFactory<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    std::string selection, documentation =
+                             "The constitutive model of the material "
+                             "points. Available models:";
+    for (const auto &entry : registry<dim>())
+      {
+        selection += (selection.empty() ? "" : "|") + entry.first;
+        documentation += "\n  <" + entry.first + ">: " +
+                         entry.second.description;
+      }
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Model",
+                        "linear elastic",
+                        Patterns::Selection(selection),
+                        documentation);
+      for (const auto &entry : registry<dim>())
+        {
+          prm.enter_subsection(entry.first);
+          entry.second.declare(prm);
+          prm.leave_subsection();
+        }
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<ConstitutiveModel<dim>>
+  ConstitutiveModelFactory<dim>::create(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    const std::string name = prm.get("Model");
+    AssertThrow(registry<dim>().count(name) == 1,
+                ExcMessage("Material: unknown <Model> = <" + name + ">."));
+    prm.enter_subsection(name);
+    auto model = registry<dim>()[name].create(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    return model;
+  }
+
+
+
+  template class ConstitutiveModel<2>;
+  template class ConstitutiveModel<3>;
+  template class ConstitutiveModelFactory<2>;
+  template class ConstitutiveModelFactory<3>;
+} // namespace qsmpm

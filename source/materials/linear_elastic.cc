@@ -1,0 +1,108 @@
+#include <qsmpm/materials/linear_elastic.h>
+
+namespace qsmpm
+{
+  template <int dim>
+  SymmetricTensor<4, dim>
+  LinearElastic<dim>::isotropic_stiffness(const double young_modulus,
+                                          const double poisson_ratio,
+                                          const bool   plane_stress)
+  {
+    AssertThrow(young_modulus > 0,
+                ExcMessage("linear elastic: Young's modulus must be positive."));
+    AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
+                ExcMessage("linear elastic: Poisson's ratio must lie in "
+                           "(-1, 0.5)."));
+    const double mu = young_modulus / (2. * (1. + poisson_ratio));
+    double       lambda =
+      young_modulus * poisson_ratio /
+      ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    // Plane stress: eliminating eps_zz from sigma_zz = 0 replaces lambda by
+    // 2 lambda mu / (lambda + 2 mu).
+    if (dim == 2 && plane_stress)
+      lambda = 2. * lambda * mu / (lambda + 2. * mu);
+    return lambda * outer_product(unit_symmetric_tensor<dim>(),
+                                  unit_symmetric_tensor<dim>()) +
+           2. * mu * identity_tensor<dim>();
+  }
+
+
+
+  template <int dim>
+  LinearElastic<dim>::LinearElastic(const double young_modulus,
+                                    const double poisson_ratio,
+                                    const bool   plane_stress)
+    : C(isotropic_stiffness(young_modulus, poisson_ratio, plane_stress))
+  {}
+
+
+
+  template <int dim>
+  LinearElastic<dim>::LinearElastic(ParameterHandler &prm)
+    : LinearElastic(prm.get_double("Young's modulus"),
+                    prm.get_double("Poisson's ratio"),
+                    prm.get_bool("Plane stress"))
+  {}
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Young's modulus",
+                      "1.0",
+                      Patterns::Double(0.),
+                      "Young's modulus E (Pa, or any consistent unit).");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Patterns::Double(-1., 0.5),
+                      "Poisson's ratio nu, in (-1, 0.5).");
+    prm.declare_entry("Plane stress",
+                      "false",
+                      Patterns::Bool(),
+                      "2D only: plane stress (sigma_zz = 0) instead of plane "
+                      "strain (eps_zz = 0).");
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::update_stress(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    ArrayView<double>) const
+  {
+    stress = old.stress + C * strain_increment;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  LinearElastic<dim>::tangent(const PointState<dim> &) const
+  {
+    return C;
+  }
+
+
+
+  template <int dim>
+  const SymmetricTensor<4, dim> &
+  LinearElastic<dim>::stiffness() const
+  {
+    return C;
+  }
+
+
+
+  template class LinearElastic<2>;
+  template class LinearElastic<3>;
+
+  QSMPM_REGISTER_CONSTITUTIVE_MODEL(LinearElastic,
+                                    "linear elastic",
+                                    "isotropic linear elasticity (E, nu; "
+                                    "plane strain or plane stress in 2D).")
+} // namespace qsmpm

@@ -1,0 +1,318 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  MaterialPointSet<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material points");
+    {
+      prm.declare_entry("Points per cell per direction",
+                        "2",
+                        Patterns::Integer(1, 10),
+                        "n: each filled cell receives n^dim material points.");
+      prm.declare_entry("Placement",
+                        "regular",
+                        Patterns::Selection("regular|gauss"),
+                        "regular: points at the centres of an n^dim "
+                        "subdivision of the cell, equal volumes; gauss: "
+                        "points at the n-point Gauss rule with volumes equal "
+                        "to the Gauss weights times the cell volume (MPM then "
+                        "coincides with the finite element method at the "
+                        "first step).");
+      prm.declare_entry("Region lower corner",
+                        "",
+                        Patterns::Anything(),
+                        "If given (with the upper corner), only points in "
+                        "this box are kept; empty: the whole grid is filled.");
+      prm.declare_entry("Region upper corner", "", Patterns::Anything(), "");
+      prm.declare_entry("Update volumes",
+                        "true",
+                        Patterns::Bool(),
+                        "Update point volumes with J (paper eqs. 2.23-2.24). "
+                        "false keeps the initial volumes: a geometrically "
+                        "linear model, identical to linear finite elements "
+                        "when the points sit at Gauss points.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material points");
+    {
+      points_per_direction = prm.get_integer("Points per cell per direction");
+      placement = prm.get("Placement") == "gauss" ? Placement::gauss :
+                                                    Placement::regular;
+      update_volumes          = prm.get_bool("Update volumes");
+      const std::string lower = prm.get("Region lower corner");
+      const std::string upper = prm.get("Region upper corner");
+      AssertThrow(lower.empty() == upper.empty(),
+                  ExcMessage("Material points: give both <Region lower "
+                             "corner> and <Region upper corner>, or neither."));
+      restrict_to_box = !lower.empty();
+      if (restrict_to_box)
+        {
+          region_lower =
+            Utils::parse_point<dim>(lower, "Region lower corner");
+          region_upper =
+            Utils::parse_point<dim>(upper, "Region upper corner");
+        }
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  MaterialPointSet<dim>::MaterialPointSet(const BackgroundGrid<dim>    &grid,
+                                          const ConstitutiveModel<dim> &model)
+    : grid(grid)
+    , model(model)
+  {
+    using Kind                   = PropertyLayout::Kind;
+    const unsigned int n_sym     = Utils::n_symmetric_components<dim>;
+    offsets.initial_volume       = layout.add("initial_volume", 1, Kind::scalar);
+    offsets.volume               = layout.add("volume", 1, Kind::scalar);
+    offsets.J                    = layout.add("J", 1, Kind::scalar);
+    offsets.displacement         = layout.add("displacement", dim, Kind::vector);
+    offsets.strain               = layout.add("strain", n_sym, Kind::symmetric);
+    offsets.stress               = layout.add("stress", n_sym, Kind::symmetric);
+    offsets.material_id          = layout.add("material_id", 1, Kind::scalar);
+    offsets.state                = layout.size();
+    for (const auto &field : model.state_fields())
+      layout.add(field.name, field.n_components, Kind::scalar);
+
+    particle_handler.initialize(grid.get_triangulation(),
+                                grid.get_mapping(),
+                                layout.size());
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::fill(
+    const std::function<bool(const Point<dim> &)> &inside,
+    const unsigned int                             n,
+    const Placement                                placement,
+    const unsigned int                             material_id)
+  {
+    AssertThrow(n >= 1, ExcMessage("At least one point per cell is needed."));
+
+    // Reference positions and volume fractions of the points in a cell.
+    std::vector<Point<dim>> reference_points;
+    std::vector<double>     fractions;
+    if (placement == Placement::gauss)
+      {
+        const QGauss<dim> gauss(n);
+        reference_points = gauss.get_points();
+        fractions        = gauss.get_weights();
+      }
+    else
+      {
+        std::vector<Point<1>> points_1d(n);
+        for (unsigned int i = 0; i < n; ++i)
+          points_1d[i][0] = (i + 0.5) / n;
+        const Quadrature<dim> regular(
+          Quadrature<1>(points_1d, std::vector<double>(n, 1. / n)));
+        reference_points = regular.get_points();
+        fractions        = regular.get_weights();
+      }
+
+    // First collect the new points, so that globally unique ids can be
+    // handed out with one prefix sum over the ranks.
+    struct NewPoint
+    {
+      typename Triangulation<dim>::active_cell_iterator cell;
+      Point<dim>                                        location;
+      Point<dim>                                        reference;
+      double                                            volume;
+    };
+    std::vector<NewPoint> new_points;
+    for (const auto &cell : grid.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double volume = cell->measure();
+          for (unsigned int q = 0; q < reference_points.size(); ++q)
+            {
+              const Point<dim> x = grid.get_mapping().transform_unit_to_real_cell(
+                cell, reference_points[q]);
+              if (inside(x))
+                new_points.push_back(
+                  {cell, x, reference_points[q], volume * fractions[q]});
+            }
+        }
+
+    const MPI_Comm              comm = grid.get_communicator();
+    const types::particle_index n_local = new_points.size();
+    types::particle_index       first_id = 0;
+    MPI_Exscan(&n_local,
+               &first_id,
+               1,
+               Utilities::MPI::mpi_type_id_for_type<types::particle_index>,
+               MPI_SUM,
+               comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first_id = 0;
+    first_id += particle_handler.n_global_particles();
+
+    std::vector<double>     properties(layout.size(), 0.);
+    const unsigned int      n_state = model.n_state_components();
+    for (types::particle_index i = 0; i < n_local; ++i)
+      {
+        const NewPoint &p = new_points[i];
+        std::fill(properties.begin(), properties.end(), 0.);
+        properties[offsets.initial_volume] = p.volume;
+        properties[offsets.volume]         = p.volume;
+        properties[offsets.J]              = 1.;
+        properties[offsets.material_id]    = material_id;
+        model.initialize_state(
+          p.location,
+          ArrayView<double>(properties.data() + offsets.state, n_state));
+        particle_handler.insert_particle(
+          p.location, p.reference, first_id + i, p.cell, properties);
+      }
+    particle_handler.update_cached_numbers();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::fill(const Parameters &parameters)
+  {
+    const Parameters p = parameters;
+    fill(
+      [p](const Point<dim> &x) {
+        if (!p.restrict_to_box)
+          return true;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (x[d] < p.region_lower[d] || x[d] > p.region_upper[d])
+            return false;
+        return true;
+      },
+      parameters.points_per_direction,
+      parameters.placement);
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::advect(const ShapeCache<dim>               &cache,
+                                const TrilinosWrappers::MPI::Vector &du)
+  {
+    const double *values = du.trilinos_vector()[0];
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto  &range = cache.cell(c);
+        unsigned int p     = range.first_point;
+        // The cache was filled in this same order at the start of the step.
+        for (auto &particle : particle_handler.particles_in_cell(range.cell))
+          {
+            Assert(particle.get_properties().data() == cache.properties(p),
+                   ExcInternalError());
+            const Tensor<1, dim> u = cache.interpolate(c, p, values);
+            particle.set_location(particle.get_location() + u);
+            double *data = cache.properties(p);
+            for (unsigned int d = 0; d < dim; ++d)
+              data[offsets.displacement + d] += u[d];
+            ++p;
+          }
+        Assert(p == range.end_point, ExcInternalError());
+      }
+  }
+
+
+
+  template <int dim>
+  types::particle_index
+  MaterialPointSet<dim>::sort_into_cells()
+  {
+    const types::particle_index before = particle_handler.n_global_particles();
+    particle_handler.sort_particles_into_subdomains_and_cells();
+    return before - particle_handler.n_global_particles();
+  }
+
+
+
+  template <int dim>
+  Particles::ParticleHandler<dim> &
+  MaterialPointSet<dim>::get_particle_handler()
+  {
+    return particle_handler;
+  }
+
+
+
+  template <int dim>
+  const Particles::ParticleHandler<dim> &
+  MaterialPointSet<dim>::get_particle_handler() const
+  {
+    return particle_handler;
+  }
+
+
+
+  template <int dim>
+  const PropertyLayout &
+  MaterialPointSet<dim>::get_layout() const
+  {
+    return layout;
+  }
+
+
+
+  template <int dim>
+  const typename MaterialPointSet<dim>::Offsets &
+  MaterialPointSet<dim>::get_offsets() const
+  {
+    return offsets;
+  }
+
+
+
+  template <int dim>
+  const ConstitutiveModel<dim> &
+  MaterialPointSet<dim>::get_model() const
+  {
+    return model;
+  }
+
+
+
+  template <int dim>
+  types::particle_index
+  MaterialPointSet<dim>::n_global_points() const
+  {
+    return particle_handler.n_global_particles();
+  }
+
+
+
+  template <int dim>
+  double
+  MaterialPointSet<dim>::total_volume() const
+  {
+    double volume = 0;
+    for (const auto &particle : particle_handler)
+      volume += particle.get_properties()[offsets.volume];
+    return Utilities::MPI::sum(volume, grid.get_communicator());
+  }
+
+
+
+  template class MaterialPointSet<2>;
+  template class MaterialPointSet<3>;
+} // namespace qsmpm

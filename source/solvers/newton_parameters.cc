@@ -1,0 +1,71 @@
+#include <qsmpm/solvers/newton_parameters.h>
+
+namespace qsmpm
+{
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear solver");
+    {
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Patterns::Double(0., 1.),
+                        "gamma of the Newton stopping test ||R(du_n)|| <= "
+                        "gamma max(floor, ||R(du_0)||) (paper A.1, step 2).");
+      prm.declare_entry("Residual floor",
+                        "1.0",
+                        Patterns::Double(0.),
+                        "The absolute floor of the stopping test; the "
+                        "paper uses 1 (in the units of the forces).");
+      prm.declare_entry("Maximum Newton iterations",
+                        "20",
+                        Patterns::Integer(1),
+                        "A step that has not converged after this many "
+                        "iterations is rejected (and cut back).");
+      prm.declare_entry("Linear tolerance",
+                        "1e-3",
+                        Patterns::Double(0., 1.),
+                        "Relative tolerance of GMRES on the Newton "
+                        "correction.");
+      prm.declare_entry("Maximum linear iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "GMRES iterations per Newton step at most.");
+      prm.declare_entry("GMRES restart",
+                        "50",
+                        Patterns::Integer(2),
+                        "Number of Krylov vectors before GMRES restarts.");
+      prm.declare_entry("Finite difference parameter",
+                        "1e-7",
+                        Patterns::Double(0., 1.),
+                        "sqrt(eps_prec) of Kelley's difference step h "
+                        "(paper A.4); about 1e-7 for double precision.");
+      prm.declare_entry("Line search steps",
+                        "0",
+                        Patterns::Integer(0, 30),
+                        "Backtracking: halve the Newton correction at most "
+                        "this many times while ||R|| does not decrease. 0 "
+                        "gives the paper's full Newton steps.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear solver");
+    {
+      tolerance             = prm.get_double("Tolerance");
+      residual_floor        = prm.get_double("Residual floor");
+      max_iterations        = prm.get_integer("Maximum Newton iterations");
+      linear_tolerance      = prm.get_double("Linear tolerance");
+      max_linear_iterations = prm.get_integer("Maximum linear iterations");
+      gmres_restart         = prm.get_integer("GMRES restart");
+      sqrt_eps_prec         = prm.get_double("Finite difference parameter");
+      max_line_search_steps = prm.get_integer("Line search steps");
+    }
+    prm.leave_subsection();
+  }
+} // namespace qsmpm
