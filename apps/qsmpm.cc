@@ -3,11 +3,9 @@
 //   qsmpm problem.prm          run it
 //   qsmpm --print-parameters   every parameter, its default and documentation
 #include <deal.II/base/mpi.h>
-
-#include <qsmpm/core/quasi_static_problem.h>
-
 #include <fstream>
 #include <iostream>
+#include <qsmpm/core/quasi_static_problem.h>
 
 namespace
 {
@@ -23,7 +21,9 @@ namespace
                       "Space dimension of the problem: 2 or 3.");
     // Only "Dimension" is looked at here; the full file is checked later.
     std::ifstream in(filename);
-    AssertThrow(in, ExcMessage("Cannot open the parameter file <" + filename + ">."));
+    AssertThrow(in,
+                ExcMessage("Cannot open the parameter file <" + filename +
+                           ">."));
     std::string line;
     while (std::getline(in, line))
       if (line.find("Dimension") != std::string::npos &&
@@ -62,7 +62,7 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string argument = argc > 1 ? argv[1] : "";
+      const std::string                argument = argc > 1 ? argv[1] : "";
       if (argument.empty() || argument == "--help" || argument == "-h")
         {
           std::cout << "Usage: qsmpm <file.prm> | --print-parameters\n";

@@ -1,7 +1,6 @@
+#include <Epetra_BlockMap.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/base/utilities.h>
-
-#include <Epetra_BlockMap.h>
 
 namespace qsmpm
 {
@@ -80,7 +79,8 @@ namespace qsmpm
 
   template <int dim>
   void
-  QuasiStaticResidual<dim>::commit(const TrilinosWrappers::MPI::Vector &du) const
+  QuasiStaticResidual<dim>::commit(
+    const TrilinosWrappers::MPI::Vector &du) const
   {
     loop<true>(du, nullptr);
   }
@@ -91,15 +91,15 @@ namespace qsmpm
   template <bool write_back>
   void
   QuasiStaticResidual<dim>::loop(const TrilinosWrappers::MPI::Vector &du,
-                                 TrilinosWrappers::MPI::Vector *R) const
+                                 TrilinosWrappers::MPI::Vector       *R) const
   {
     constexpr unsigned int n_vertices    = ShapeCache<dim>::n_vertices;
     constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
     const auto            &offsets       = points.get_offsets();
     const unsigned int     n_state       = state_scratch.size();
 
-    du_ghosted               = du;
-    const double *du_values  = du_ghosted.trilinos_vector()[0];
+    du_ghosted              = du;
+    const double *du_values = du_ghosted.trilinos_vector()[0];
     if (!write_back)
       std::fill(local_force.begin(), local_force.end(), 0.);
 
@@ -141,10 +141,10 @@ namespace qsmpm
                                                   n_state));
 
             // (2.23)-(2.24): J and the volume at the end of the step.
-            const double J = (1. + trace(d_eps)) * data[offsets.J];
-            const double volume =
-              update_volumes ? J * data[offsets.initial_volume] :
-                               data[offsets.initial_volume];
+            const double J      = (1. + trace(d_eps)) * data[offsets.J];
+            const double volume = update_volumes ?
+                                    J * data[offsets.initial_volume] :
+                                    data[offsets.initial_volume];
 
             if (write_back)
               {

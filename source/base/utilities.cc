@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
-
 #include <qsmpm/base/utilities.h>
 
 namespace qsmpm
@@ -66,7 +65,7 @@ namespace qsmpm
                      const std::string &what,
                      bool              &normal_only)
     {
-      static const char   letters[3] = {'x', 'y', 'z'};
+      static const char     letters[3] = {'x', 'y', 'z'};
       std::array<bool, dim> mask;
       mask.fill(false);
       normal_only = (text == "n");
@@ -112,14 +111,14 @@ namespace qsmpm
 
 
 
-#define QSMPM_INSTANTIATE(dim)                                                \
-  template Point<dim> parse_point<dim>(const std::string &,                   \
-                                       const std::string &);                  \
-  template std::array<unsigned int, dim> parse_subdivisions<dim>(             \
-    const std::string &, const std::string &);                                \
-  template std::array<bool, dim> parse_components<dim>(const std::string &,   \
-                                                       const std::string &,   \
-                                                       bool &);               \
+#define QSMPM_INSTANTIATE(dim)                                                  \
+  template Point<dim>                    parse_point<dim>(const std::string &,  \
+                                       const std::string &); \
+  template std::array<unsigned int, dim> parse_subdivisions<dim>(               \
+    const std::string &, const std::string &);                                  \
+  template std::array<bool, dim>    parse_components<dim>(const std::string &,  \
+                                                       const std::string &,  \
+                                                       bool &);              \
   template std::vector<std::string> symmetric_component_names<dim>();
 
     QSMPM_INSTANTIATE(2)

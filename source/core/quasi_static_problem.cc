@@ -1,8 +1,6 @@
 #include <deal.II/base/mpi.h>
-
-#include <qsmpm/core/quasi_static_problem.h>
-
 #include <iomanip>
+#include <qsmpm/core/quasi_static_problem.h>
 #include <sstream>
 
 namespace qsmpm
@@ -45,7 +43,8 @@ namespace qsmpm
                    TimerOutput::never,
                    TimerOutput::wall_times)
     , background_grid(communicator)
-  {}
+  {
+  }
 
 
 
@@ -164,11 +163,8 @@ namespace qsmpm
                            t_old,
                            t_new,
                            constraints);
-      bcs.assemble_external_force(background_grid,
-                                  cache,
-                                  points().get_offsets().volume,
-                                  t_new,
-                                  f_ext);
+      bcs.assemble_external_force(
+        background_grid, cache, points().get_offsets().volume, t_new, f_ext);
       residual->set_external_force(f_ext);
     }
 
@@ -194,7 +190,7 @@ namespace qsmpm
                             communicator);
       du_ghosted = du;
       points().advect(cache, du_ghosted);
-      last_reactions = bcs.reactions(R, communicator);
+      last_reactions  = bcs.reactions(R, communicator);
       const auto lost = points().sort_into_cells();
       AssertThrow(lost == 0,
                   ExcMessage(std::to_string(lost) +
@@ -219,8 +215,7 @@ namespace qsmpm
     progress << "qsmpm: " << dim << "D, "
              << background_grid.get_triangulation().n_global_active_cells()
              << " cells, " << background_grid.get_dof_handler().n_dofs()
-             << " dofs, " << points().n_global_points()
-             << " material points, "
+             << " dofs, " << points().n_global_points() << " material points, "
              << dealii::Utilities::MPI::n_mpi_processes(communicator)
              << " MPI rank(s)" << std::endl;
 
@@ -246,11 +241,8 @@ namespace qsmpm
         const unsigned int cut_backs = stepper.n_cut_backs();
         stepper.accept();
         wall_timer.stop();
-        reports.push_back({stepper.step(),
-                           t_new,
-                           cut_backs,
-                           newton,
-                           wall_timer.wall_time()});
+        reports.push_back(
+          {stepper.step(), t_new, cut_backs, newton, wall_timer.wall_time()});
 
         std::ostringstream line;
         line << "step " << std::setw(5) << stepper.step()
@@ -259,8 +251,8 @@ namespace qsmpm
              << "  gmres " << std::setw(4) << newton.linear_iterations
              << "  |R| " << std::scientific << std::setprecision(2)
              << newton.initial_residual << " -> " << newton.final_residual
-             << std::defaultfloat << "  " << std::fixed
-             << std::setprecision(3) << wall_timer.wall_time() << " s";
+             << std::defaultfloat << "  " << std::fixed << std::setprecision(3)
+             << wall_timer.wall_time() << " s";
         progress << line.str() << std::endl;
 
         TimerOutput::Scope scope(timer_output, "output");
@@ -273,7 +265,8 @@ namespace qsmpm
             writer.write_increment(background_grid, du, stepper.step(), t_new);
           }
       }
-    timer_output.print_summary();
+    if (progress.is_active())
+      timer_output.print_summary();
   }
 
 

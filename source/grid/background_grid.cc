@@ -1,9 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/grid/grid_generator.h>
-
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/grid/background_grid.h>
 
@@ -43,8 +40,8 @@ namespace qsmpm
         Utils::parse_point<dim>(prm.get("Lower corner"), "Lower corner");
       upper_corner =
         Utils::parse_point<dim>(prm.get("Upper corner"), "Upper corner");
-      subdivisions = Utils::parse_subdivisions<dim>(prm.get("Subdivisions"),
-                                                        "Subdivisions");
+      subdivisions =
+        Utils::parse_subdivisions<dim>(prm.get("Subdivisions"), "Subdivisions");
       for (unsigned int d = 0; d < dim; ++d)
         AssertThrow(upper_corner[d] > lower_corner[d],
                     ExcMessage("Geometry: <Upper corner> must be larger than "
@@ -61,7 +58,8 @@ namespace qsmpm
     , triangulation(communicator)
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
-  {}
+  {
+  }
 
 
 

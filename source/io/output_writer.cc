@@ -1,14 +1,10 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/numerics/data_out.h>
-
 #include <deal.II/particles/data_out.h>
-
-#include <qsmpm/io/output_writer.h>
-
 #include <filesystem>
 #include <iomanip>
+#include <qsmpm/io/output_writer.h>
 
 namespace qsmpm
 {
@@ -66,8 +62,7 @@ namespace qsmpm
         std::filesystem::create_directories(parameters.directory, error);
         AssertThrow(!error,
                     ExcMessage("Cannot create the output directory <" +
-                               parameters.directory + ">: " +
-                               error.message()));
+                               parameters.directory + ">: " + error.message()));
       }
     MPI_Barrier(communicator);
   }
@@ -107,7 +102,7 @@ namespace qsmpm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_increment(const BackgroundGrid<dim> &grid,
+  OutputWriter<dim>::write_increment(const BackgroundGrid<dim>           &grid,
                                      const TrilinosWrappers::MPI::Vector &du,
                                      const unsigned int                   step,
                                      const double load_factor)
@@ -152,8 +147,8 @@ namespace qsmpm
     static const char *const components[3] = {"x", "y", "z"};
     if (!reactions_file)
       {
-        reactions_file = std::make_unique<std::ofstream>(
-          parameters.directory + "/reactions.csv");
+        reactions_file = std::make_unique<std::ofstream>(parameters.directory +
+                                                         "/reactions.csv");
         AssertThrow(*reactions_file,
                     ExcMessage("Cannot write " + parameters.directory +
                                "/reactions.csv"));

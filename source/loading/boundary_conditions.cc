@@ -1,12 +1,9 @@
+#include <algorithm>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/boundary_conditions.h>
-
-#include <algorithm>
 
 namespace qsmpm
 {
@@ -88,17 +85,23 @@ namespace qsmpm
         AssertThrow(parts.size() == 2,
                     ExcMessage("Boundary conditions: the entry <Dirichlet "
                                "boundaries> expects <id>:<components> items, "
-                               "got <" + entry + ">."));
+                               "got <" +
+                               entry + ">."));
         const int id = dealii::Utilities::string_to_int(parts[0]);
         AssertThrow(id >= 0 && id < 2 * dim,
-                    ExcMessage("Boundary conditions: boundary id <" +
-                               parts[0] + "> in <Dirichlet boundaries> does "
+                    ExcMessage("Boundary conditions: boundary id <" + parts[0] +
+                               "> in <Dirichlet boundaries> does "
                                "not exist; a box has ids 0 to " +
                                std::to_string(2 * dim - 1) + "."));
         bool       normal_only = false;
-        const auto components  = Utils::parse_components<dim>(
-          parts[1], "Dirichlet boundaries", normal_only);
-        add_dirichlet_boundary(id, components, parsed_displacement, normal_only);
+        const auto components =
+          Utils::parse_components<dim>(parts[1],
+                                       "Dirichlet boundaries",
+                                       normal_only);
+        add_dirichlet_boundary(id,
+                               components,
+                               parsed_displacement,
+                               normal_only);
       }
     for (const auto &entry : Utils::split(parameters.traction, ','))
       add_traction(dealii::Utilities::string_to_int(entry), parsed_traction);
@@ -194,9 +197,9 @@ namespace qsmpm
         {
           bool constant = true;
           for (unsigned int v = 1; v < face->n_vertices(); ++v)
-            constant = constant && std::abs(face->vertex(v)[d] -
-                                            face->vertex(0)[d]) <=
-                                     1e-12 * face->diameter();
+            constant =
+              constant && std::abs(face->vertex(v)[d] - face->vertex(0)[d]) <=
+                            1e-12 * face->diameter();
           if (constant)
             return d;
         }
@@ -226,10 +229,10 @@ namespace qsmpm
     Vector<double>  g_old(dim), g_new(dim);
 
     // Constrain component c of a vertex with global dof index `dof`.
-    auto constrain = [&](const unsigned int             condition,
+    auto constrain = [&](const unsigned int            condition,
                          const types::global_dof_index dof,
-                         const unsigned int             c,
-                         const double                   increment) {
+                         const unsigned int            c,
+                         const double                  increment) {
       if (!constraints.is_constrained(dof))
         {
           constraints.add_line(dof);
@@ -242,7 +245,7 @@ namespace qsmpm
     for (unsigned int k = 0; k < dirichlet.size(); ++k)
       {
         DirichletCondition &condition = dirichlet[k];
-        auto evaluate = [&](const Point<dim> &x) {
+        auto                evaluate  = [&](const Point<dim> &x) {
           condition.displacement->set_time(t_old);
           condition.displacement->vector_value(x, g_old);
           condition.displacement->set_time(t_new);
@@ -259,7 +262,7 @@ namespace qsmpm
                   if (cell->face(f)->at_boundary() &&
                       cell->face(f)->boundary_id() == condition.boundary_id)
                     {
-                      const auto face = cell->face(f);
+                      const auto            face = cell->face(f);
                       std::array<bool, dim> mask = condition.components;
                       if (condition.normal_only)
                         {
@@ -297,8 +300,7 @@ namespace qsmpm
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         AssertThrow(dealii::Utilities::MPI::sum(dofs.size(),
                                                 grid.get_communicator()) > 0,
-                    ExcMessage("The displacement condition <" +
-                               condition.name +
+                    ExcMessage("The displacement condition <" + condition.name +
                                "> does not select any grid node."));
       }
 
@@ -322,7 +324,7 @@ namespace qsmpm
     const double                   t,
     TrilinosWrappers::MPI::Vector &f_ext) const
   {
-    f_ext = 0;
+    f_ext                                = 0;
     constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     std::vector<double>                  cell_force(dofs_per_cell);
@@ -360,7 +362,7 @@ namespace qsmpm
                                   face_quadrature,
                                   update_values | update_quadrature_points |
                                     update_JxW_values);
-        Vector<double> traction(dim);
+        Vector<double>        traction(dim);
         for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int f : cell->face_indices())
@@ -397,8 +399,7 @@ namespace qsmpm
         for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
           if (!cell->is_artificial() && !found)
             for (const unsigned int v : cell->vertex_indices())
-              if (cell->vertex(v).distance(location) <
-                  1e-10 * cell->diameter())
+              if (cell->vertex(v).distance(location) < 1e-10 * cell->diameter())
                 {
                   found = true;
                   for (unsigned int d = 0; d < dim; ++d)

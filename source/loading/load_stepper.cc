@@ -1,8 +1,6 @@
-#include <deal.II/base/exceptions.h>
-
-#include <qsmpm/loading/load_stepper.h>
-
 #include <algorithm>
+#include <deal.II/base/exceptions.h>
+#include <qsmpm/loading/load_stepper.h>
 #include <sstream>
 
 namespace qsmpm

@@ -1,8 +1,6 @@
 #include <deal.II/base/exceptions.h>
-
-#include <qsmpm/materials/constitutive_model.h>
-
 #include <map>
+#include <qsmpm/materials/constitutive_model.h>
 
 namespace qsmpm
 {
@@ -43,7 +41,7 @@ namespace qsmpm
     template <int dim>
     struct Entry
     {
-      std::string                                 description;
+      std::string                                      description;
       typename ConstitutiveModelFactory<dim>::Declarer declare;
       typename ConstitutiveModelFactory<dim>::Creator  create;
     };
@@ -100,8 +98,8 @@ namespace qsmpm
     for (const auto &entry : registry<dim>())
       {
         selection += (selection.empty() ? "" : "|") + entry.first;
-        documentation += "\n  <" + entry.first + ">: " +
-                         entry.second.description;
+        documentation +=
+          "\n  <" + entry.first + ">: " + entry.second.description;
       }
     prm.enter_subsection("Material");
     {

@@ -9,14 +9,14 @@ namespace qsmpm
                                           const bool   plane_stress)
   {
     AssertThrow(young_modulus > 0,
-                ExcMessage("linear elastic: Young's modulus must be positive."));
+                ExcMessage(
+                  "linear elastic: Young's modulus must be positive."));
     AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
                 ExcMessage("linear elastic: Poisson's ratio must lie in "
                            "(-1, 0.5)."));
-    const double mu = young_modulus / (2. * (1. + poisson_ratio));
-    double       lambda =
-      young_modulus * poisson_ratio /
-      ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    const double mu     = young_modulus / (2. * (1. + poisson_ratio));
+    double       lambda = young_modulus * poisson_ratio /
+                    ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
     // Plane stress: eliminating eps_zz from sigma_zz = 0 replaces lambda by
     // 2 lambda mu / (lambda + 2 mu).
     if (dim == 2 && plane_stress)
@@ -33,7 +33,8 @@ namespace qsmpm
                                     const double poisson_ratio,
                                     const bool   plane_stress)
     : C(isotropic_stiffness(young_modulus, poisson_ratio, plane_stress))
-  {}
+  {
+  }
 
 
 
@@ -42,7 +43,8 @@ namespace qsmpm
     : LinearElastic(prm.get_double("Young's modulus"),
                     prm.get_double("Poisson's ratio"),
                     prm.get_bool("Plane stress"))
-  {}
+  {
+  }
 
 
 

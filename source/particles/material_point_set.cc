@@ -1,6 +1,5 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -52,8 +51,8 @@ namespace qsmpm
     prm.enter_subsection("Material points");
     {
       points_per_direction = prm.get_integer("Points per cell per direction");
-      placement = prm.get("Placement") == "gauss" ? Placement::gauss :
-                                                    Placement::regular;
+      placement =
+        prm.get("Placement") == "gauss" ? Placement::gauss : Placement::regular;
       update_volumes          = prm.get_bool("Update volumes");
       const std::string lower = prm.get("Region lower corner");
       const std::string upper = prm.get("Region upper corner");
@@ -63,10 +62,8 @@ namespace qsmpm
       restrict_to_box = !lower.empty();
       if (restrict_to_box)
         {
-          region_lower =
-            Utils::parse_point<dim>(lower, "Region lower corner");
-          region_upper =
-            Utils::parse_point<dim>(upper, "Region upper corner");
+          region_lower = Utils::parse_point<dim>(lower, "Region lower corner");
+          region_upper = Utils::parse_point<dim>(upper, "Region upper corner");
         }
     }
     prm.leave_subsection();
@@ -80,16 +77,16 @@ namespace qsmpm
     : grid(grid)
     , model(model)
   {
-    using Kind                   = PropertyLayout::Kind;
-    const unsigned int n_sym     = Utils::n_symmetric_components<dim>;
-    offsets.initial_volume       = layout.add("initial_volume", 1, Kind::scalar);
-    offsets.volume               = layout.add("volume", 1, Kind::scalar);
-    offsets.J                    = layout.add("J", 1, Kind::scalar);
-    offsets.displacement         = layout.add("displacement", dim, Kind::vector);
-    offsets.strain               = layout.add("strain", n_sym, Kind::symmetric);
-    offsets.stress               = layout.add("stress", n_sym, Kind::symmetric);
-    offsets.material_id          = layout.add("material_id", 1, Kind::scalar);
-    offsets.state                = layout.size();
+    using Kind               = PropertyLayout::Kind;
+    const unsigned int n_sym = Utils::n_symmetric_components<dim>;
+    offsets.initial_volume   = layout.add("initial_volume", 1, Kind::scalar);
+    offsets.volume           = layout.add("volume", 1, Kind::scalar);
+    offsets.J                = layout.add("J", 1, Kind::scalar);
+    offsets.displacement     = layout.add("displacement", dim, Kind::vector);
+    offsets.strain           = layout.add("strain", n_sym, Kind::symmetric);
+    offsets.stress           = layout.add("stress", n_sym, Kind::symmetric);
+    offsets.material_id      = layout.add("material_id", 1, Kind::scalar);
+    offsets.state            = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);
 
@@ -146,16 +143,17 @@ namespace qsmpm
           const double volume = cell->measure();
           for (unsigned int q = 0; q < reference_points.size(); ++q)
             {
-              const Point<dim> x = grid.get_mapping().transform_unit_to_real_cell(
-                cell, reference_points[q]);
+              const Point<dim> x =
+                grid.get_mapping().transform_unit_to_real_cell(
+                  cell, reference_points[q]);
               if (inside(x))
                 new_points.push_back(
                   {cell, x, reference_points[q], volume * fractions[q]});
             }
         }
 
-    const MPI_Comm              comm = grid.get_communicator();
-    const types::particle_index n_local = new_points.size();
+    const MPI_Comm              comm     = grid.get_communicator();
+    const types::particle_index n_local  = new_points.size();
     types::particle_index       first_id = 0;
     MPI_Exscan(&n_local,
                &first_id,
@@ -167,8 +165,8 @@ namespace qsmpm
       first_id = 0;
     first_id += particle_handler.n_global_particles();
 
-    std::vector<double>     properties(layout.size(), 0.);
-    const unsigned int      n_state = model.n_state_components();
+    std::vector<double> properties(layout.size(), 0.);
+    const unsigned int  n_state = model.n_state_components();
     for (types::particle_index i = 0; i < n_local; ++i)
       {
         const NewPoint &p = new_points[i];

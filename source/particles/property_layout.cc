@@ -1,5 +1,4 @@
 #include <deal.II/base/exceptions.h>
-
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/property_layout.h>
 

@@ -1,8 +1,6 @@
-#include <deal.II/base/exceptions.h>
-
-#include <qsmpm/particles/shape_cache.h>
-
 #include <Epetra_BlockMap.h>
+#include <deal.II/base/exceptions.h>
+#include <qsmpm/particles/shape_cache.h>
 
 namespace qsmpm
 {
@@ -51,7 +49,7 @@ namespace qsmpm
                  fe.system_to_component_index(v * dim + c).second == v,
                ExcInternalError());
 
-    auto &particle_handler = points.get_particle_handler();
+    auto              &particle_handler = points.get_particle_handler();
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
 
@@ -63,13 +61,12 @@ namespace qsmpm
     point_properties.resize(n_local_points);
     point_positions.resize(n_local_points);
 
-    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    const Epetra_BlockMap               &map = ghosted.trilinos_vector().Map();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     Tensor<1, dim>                       reference_gradients[n_vertices];
 
     unsigned int p = 0;
-    for (const auto &dof_cell :
-         grid.get_dof_handler().active_cell_iterators())
+    for (const auto &dof_cell : grid.get_dof_handler().active_cell_iterators())
       if (dof_cell->is_locally_owned())
         {
           const typename Triangulation<dim>::active_cell_iterator cell(
@@ -81,7 +78,8 @@ namespace qsmpm
           dof_cell->get_dof_indices(dofs);
           for (const auto dof : dofs)
             {
-              const int lid = map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
+              const int lid =
+                map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
               AssertThrow(lid >= 0, ExcInternalError());
               cell_local_dofs.push_back(lid);
               cell_global_dofs.push_back(dof);
@@ -93,12 +91,13 @@ namespace qsmpm
               // The Jacobian of the Q1 map at the point: exact for any
               // (bi/tri)linear cell, and diagonal on the Cartesian grid.
               const Point<dim> xi = particle.get_reference_location();
-              q1_shape<dim>(xi, &shape_values[p * n_vertices],
+              q1_shape<dim>(xi,
+                            &shape_values[p * n_vertices],
                             reference_gradients);
               Tensor<2, dim> jacobian;
               for (unsigned int v = 0; v < n_vertices; ++v)
-                jacobian += outer_product(cell->vertex(v),
-                                          reference_gradients[v]);
+                jacobian +=
+                  outer_product(cell->vertex(v), reference_gradients[v]);
               const Tensor<2, dim> inverse_transpose =
                 transpose(invert(jacobian));
               for (unsigned int v = 0; v < n_vertices; ++v)
@@ -128,7 +127,7 @@ namespace qsmpm
     // the sum over ranks tells which nodes are inactive everywhere.
     TrilinosWrappers::MPI::Vector count(grid.locally_owned_dofs(),
                                         grid.get_communicator());
-    std::vector<double> ones(dofs_per_cell, 1.);
+    std::vector<double>           ones(dofs_per_cell, 1.);
     for (unsigned int c = 0; c < n_cells(); ++c)
       count.add(std::vector<types::global_dof_index>(global_dofs(c),
                                                      global_dofs(c) +
@@ -156,8 +155,8 @@ namespace qsmpm
                                const unsigned int p,
                                const double      *local_values) const
   {
-    const int      *dofs = local_dofs(c);
-    const double   *N    = values(p);
+    const int     *dofs = local_dofs(c);
+    const double  *N    = values(p);
     Tensor<1, dim> result;
     for (unsigned int v = 0; v < n_vertices; ++v)
       for (unsigned int d = 0; d < dim; ++d)

@@ -2,12 +2,10 @@
 #define qsmpm_assembly_quasi_static_residual_h
 
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
-
 #include <vector>
 
 namespace qsmpm
@@ -84,11 +82,11 @@ namespace qsmpm
 
     TrilinosWrappers::MPI::Vector f_ext;
     /// Scratch: du with ghost entries, and the local force accumulator.
-    mutable TrilinosWrappers::MPI::Vector        du_ghosted;
-    mutable std::vector<double>                  local_force;
-    mutable std::vector<double>                  state_scratch;
-    std::vector<types::global_dof_index>         relevant_gids;
-    mutable unsigned long                        evaluation_count = 0;
+    mutable TrilinosWrappers::MPI::Vector du_ghosted;
+    mutable std::vector<double>           local_force;
+    mutable std::vector<double>           state_scratch;
+    std::vector<types::global_dof_index>  relevant_gids;
+    mutable unsigned long                 evaluation_count = 0;
   };
 } // namespace qsmpm
 

@@ -1,10 +1,9 @@
 #ifndef qsmpm_base_utilities_h
 #define qsmpm_base_utilities_h
 
+#include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
-
-#include <array>
 #include <string>
 #include <vector>
 

@@ -4,10 +4,9 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
-
+#include <memory>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
@@ -17,8 +16,6 @@
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
 #include <qsmpm/solvers/newton_krylov.h>
-
-#include <memory>
 #include <vector>
 
 namespace qsmpm
@@ -153,22 +150,22 @@ namespace qsmpm
     void
     setup_step_data();
 
-    MPI_Comm                                communicator;
-    ConditionalOStream                      progress;
-    TimerOutput                             timer_output;
-    Parameters                              prm_values;
-    BackgroundGrid<dim>                     background_grid;
-    std::unique_ptr<ConstitutiveModel<dim>> model;
-    std::unique_ptr<MaterialPointSet<dim>>  material_points;
-    BoundaryConditions<dim>                 bcs;
-    ShapeCache<dim>                         cache;
+    MPI_Comm                                  communicator;
+    ConditionalOStream                        progress;
+    TimerOutput                               timer_output;
+    Parameters                                prm_values;
+    BackgroundGrid<dim>                       background_grid;
+    std::unique_ptr<ConstitutiveModel<dim>>   model;
+    std::unique_ptr<MaterialPointSet<dim>>    material_points;
+    BoundaryConditions<dim>                   bcs;
+    ShapeCache<dim>                           cache;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
-    AffineConstraints<double>               constraints;
-    VectorType                              du;
-    VectorType                              R;
-    VectorType                              f_ext;
-    std::vector<Tensor<1, dim>>             last_reactions;
-    std::vector<StepReport>                 reports;
+    AffineConstraints<double>                 constraints;
+    VectorType                                du;
+    VectorType                                R;
+    VectorType                                f_ext;
+    std::vector<Tensor<1, dim>>               last_reactions;
+    std::vector<StepReport>                   reports;
   };
 } // namespace qsmpm
 

@@ -1,18 +1,14 @@
 #ifndef qsmpm_grid_background_grid_h
 #define qsmpm_grid_background_grid_h
 
+#include <array>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
-
-#include <array>
 
 namespace qsmpm
 {

@@ -2,14 +2,11 @@
 #define qsmpm_io_output_writer_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <qsmpm/grid/background_grid.h>
-#include <qsmpm/particles/material_point_set.h>
-
 #include <fstream>
 #include <memory>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/material_point_set.h>
 #include <string>
 #include <vector>
 
@@ -71,11 +68,11 @@ namespace qsmpm
     get_parameters() const;
 
   private:
-    const Parameters                          parameters;
-    const MPI_Comm                            communicator;
+    const Parameters                            parameters;
+    const MPI_Comm                              communicator;
     std::vector<std::pair<double, std::string>> point_records;
     std::vector<std::pair<double, std::string>> increment_records;
-    std::unique_ptr<std::ofstream>            reactions_file;
+    std::unique_ptr<std::ofstream>              reactions_file;
   };
 } // namespace qsmpm
 

@@ -1,19 +1,16 @@
 #ifndef qsmpm_loading_boundary_conditions_h
 #define qsmpm_loading_boundary_conditions_h
 
+#include <array>
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <qsmpm/grid/background_grid.h>
-#include <qsmpm/particles/shape_cache.h>
-
-#include <array>
 #include <functional>
 #include <memory>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/shape_cache.h>
 #include <string>
 #include <vector>
 
@@ -61,7 +58,7 @@ namespace qsmpm
     {
       std::string name;
       /// numbers::invalid_boundary_id for a node set.
-      types::boundary_id boundary_id;
+      types::boundary_id                      boundary_id;
       std::function<bool(const Point<dim> &)> selector;
       std::array<bool, dim>                   components;
       bool                                    normal_only;
@@ -84,7 +81,7 @@ namespace qsmpm
     void
     add_dirichlet_nodes(const std::string                             &name,
                         const std::function<bool(const Point<dim> &)> &selector,
-                        const std::array<bool, dim>                   &components,
+                        const std::array<bool, dim>          &components,
                         const std::shared_ptr<Function<dim>> &displacement);
 
     /// A traction (force per area, dim components) on boundary @p id.
@@ -114,11 +111,11 @@ namespace qsmpm
      * degrees of freedom in @p inactive_dofs (nodes without points).
      */
     void
-    make_constraints(const BackgroundGrid<dim>  &grid,
-                     const IndexSet             &inactive_dofs,
-                     const double                t_old,
-                     const double                t_new,
-                     AffineConstraints<double>  &constraints);
+    make_constraints(const BackgroundGrid<dim> &grid,
+                     const IndexSet            &inactive_dofs,
+                     const double               t_old,
+                     const double               t_new,
+                     AffineConstraints<double> &constraints);
 
     /**
      * The external force f_ext(t) (paper eq. 2.10): body force at the points
@@ -154,8 +151,8 @@ namespace qsmpm
       constrained_dofs;
 
     std::vector<std::pair<types::boundary_id, std::shared_ptr<Function<dim>>>>
-                                   tractions;
-    std::shared_ptr<Function<dim>> body_force;
+                                                       tractions;
+    std::shared_ptr<Function<dim>>                     body_force;
     std::vector<std::pair<Point<dim>, Tensor<1, dim>>> point_loads;
 
     /// Functions read from the .prm file.

@@ -5,7 +5,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
-
 #include <functional>
 #include <memory>
 #include <string>
@@ -109,10 +108,11 @@ namespace qsmpm
   {
   public:
     using Declarer = std::function<void(ParameterHandler &)>;
-    using Creator =
-      std::function<std::unique_ptr<ConstitutiveModel<dim>>(ParameterHandler &)>;
+    using Creator  = std::function<std::unique_ptr<ConstitutiveModel<dim>>(
+      ParameterHandler &)>;
 
-    /// Add a model to the registry. Called by QSMPM_REGISTER_CONSTITUTIVE_MODEL.
+    /// Add a model to the registry. Called by
+    /// QSMPM_REGISTER_CONSTITUTIVE_MODEL.
     static bool
     register_model(const std::string &name,
                    const std::string &description,
@@ -143,25 +143,25 @@ namespace qsmpm
  * subsection) and a constructor taking the ParameterHandler positioned in
  * that subsection.
  */
-#define QSMPM_REGISTER_CONSTITUTIVE_MODEL(classname, name, description)      \
-  namespace                                                                  \
-  {                                                                          \
-    template <int dim>                                                       \
-    bool register_##classname()                                              \
-    {                                                                        \
-      return ConstitutiveModelFactory<dim>::register_model(                  \
-        name,                                                                \
-        description,                                                         \
-        [](dealii::ParameterHandler &prm) {                                  \
-          classname<dim>::declare_parameters(prm);                           \
-        },                                                                   \
-        [](dealii::ParameterHandler &prm) {                                  \
-          return std::unique_ptr<ConstitutiveModel<dim>>(                    \
-            new classname<dim>(prm));                                        \
-        });                                                                  \
-    }                                                                        \
-    const bool classname##_registered_2 = register_##classname<2>();         \
-    const bool classname##_registered_3 = register_##classname<3>();         \
+#define QSMPM_REGISTER_CONSTITUTIVE_MODEL(classname, name, description) \
+  namespace                                                             \
+  {                                                                     \
+    template <int dim>                                                  \
+    bool register_##classname()                                         \
+    {                                                                   \
+      return ConstitutiveModelFactory<dim>::register_model(             \
+        name,                                                           \
+        description,                                                    \
+        [](dealii::ParameterHandler &prm) {                             \
+          classname<dim>::declare_parameters(prm);                      \
+        },                                                              \
+        [](dealii::ParameterHandler &prm) {                             \
+          return std::unique_ptr<ConstitutiveModel<dim>>(               \
+            new classname<dim>(prm));                                   \
+        });                                                             \
+    }                                                                   \
+    const bool classname##_registered_2 = register_##classname<2>();    \
+    const bool classname##_registered_3 = register_##classname<3>();    \
   }
 
 #endif

@@ -2,16 +2,12 @@
 #define qsmpm_particles_material_point_set_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <deal.II/particles/particle_handler.h>
-
+#include <functional>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/property_layout.h>
-
-#include <functional>
 
 namespace qsmpm
 {
@@ -74,7 +70,7 @@ namespace qsmpm
       unsigned int state;
     };
 
-    MaterialPointSet(const BackgroundGrid<dim>      &grid,
+    MaterialPointSet(const BackgroundGrid<dim>    &grid,
                      const ConstitutiveModel<dim> &model);
 
     /**

@@ -2,7 +2,6 @@
 #define qsmpm_particles_property_layout_h
 
 #include <deal.II/numerics/data_component_interpretation.h>
-
 #include <string>
 #include <vector>
 
@@ -31,7 +30,9 @@ namespace qsmpm
      * Append a field and return its offset. Names must be unique.
      */
     unsigned int
-    add(const std::string &name, const unsigned int n_components, const Kind kind);
+    add(const std::string &name,
+        const unsigned int n_components,
+        const Kind         kind);
 
     /// Offset of the field @p name; throws if there is none.
     unsigned int

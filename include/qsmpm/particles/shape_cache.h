@@ -3,12 +3,9 @@
 
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
-
 #include <vector>
 
 namespace qsmpm
@@ -49,8 +46,8 @@ namespace qsmpm
      * index its local storage directly.
      */
     void
-    reinit(const BackgroundGrid<dim>              &grid,
-           MaterialPointSet<dim>                  &points,
+    reinit(const BackgroundGrid<dim>           &grid,
+           MaterialPointSet<dim>               &points,
            const TrilinosWrappers::MPI::Vector &ghosted);
 
     unsigned int

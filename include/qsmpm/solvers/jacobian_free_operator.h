@@ -11,7 +11,8 @@ namespace qsmpm
    *
    *   J(du) s ~ (R(du + h s) - R(du)) / h,
    *   h = sqrt(eps_prec) ||du|| / ||s||   if du != 0,
-   *   h = sqrt(eps_prec) ||s||            if du  = 0,   (h = 0, Js = 0, if s = 0).
+   *   h = sqrt(eps_prec) ||s||            if du  = 0,   (h = 0, Js = 0, if s =
+   * 0).
    *
    * Constrained components of the product are zero, so the Krylov vectors
    * never leave the space of admissible corrections.
@@ -31,7 +32,8 @@ namespace qsmpm
       , R_du(R_du)
       , sqrt_eps_prec(sqrt_eps_prec)
       , du_norm(du.l2_norm())
-    {}
+    {
+    }
 
     void
     vmult(VectorType &dst, const VectorType &s) const
@@ -43,7 +45,7 @@ namespace qsmpm
           return;
         }
       const double h = du_norm > 0. ? sqrt_eps_prec * du_norm / s_norm :
-                                       sqrt_eps_prec * s_norm;
+                                      sqrt_eps_prec * s_norm;
       perturbed.reinit(du, /*omit_zeroing_entries=*/true);
       perturbed = du;
       perturbed.add(h, s);
@@ -62,12 +64,12 @@ namespace qsmpm
     }
 
   private:
-    const Operator     &op;
-    const VectorType   &du;
-    const VectorType   &R_du;
-    const double        sqrt_eps_prec;
-    const double        du_norm;
-    mutable VectorType  perturbed;
+    const Operator      &op;
+    const VectorType    &du;
+    const VectorType    &R_du;
+    const double         sqrt_eps_prec;
+    const double         du_norm;
+    mutable VectorType   perturbed;
     mutable unsigned int n_products = 0;
   };
 } // namespace qsmpm

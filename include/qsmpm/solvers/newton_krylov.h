@@ -1,13 +1,11 @@
 #ifndef qsmpm_solvers_newton_krylov_h
 #define qsmpm_solvers_newton_krylov_h
 
+#include <cmath>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
-
 #include <qsmpm/solvers/jacobian_free_operator.h>
 #include <qsmpm/solvers/newton_parameters.h>
-
-#include <cmath>
 #include <string>
 
 namespace qsmpm
@@ -55,7 +53,8 @@ namespace qsmpm
   public:
     explicit NewtonKrylov(const NewtonParameters &parameters)
       : parameters(parameters)
-    {}
+    {
+    }
 
     /**
      * Solve R(du) = 0 from the initial guess @p du. On return @p R holds the
@@ -72,8 +71,8 @@ namespace qsmpm
       trial.reinit(du);
 
       op.residual(du, R);
-      double norm               = free_norm(op, R, rhs);
-      report.initial_residual   = norm;
+      double norm             = free_norm(op, R, rhs);
+      report.initial_residual = norm;
       const double target =
         parameters.tolerance * std::max(parameters.residual_floor, norm);
 
@@ -92,8 +91,8 @@ namespace qsmpm
             }
           if (n == parameters.max_iterations)
             {
-              report.failure = "no convergence in " +
-                               std::to_string(n) + " Newton iterations";
+              report.failure =
+                "no convergence in " + std::to_string(n) + " Newton iterations";
               return report;
             }
 
@@ -105,8 +104,7 @@ namespace qsmpm
           const JacobianFreeOperator<Operator, VectorType> J(
             op, du, R, parameters.sqrt_eps_prec);
           SolverControl control(parameters.max_linear_iterations,
-                                parameters.linear_tolerance *
-                                  rhs.l2_norm(),
+                                parameters.linear_tolerance * rhs.l2_norm(),
                                 /*log_history=*/false,
                                 /*log_result=*/false);
           // Right preconditioning: GMRES then measures the true residual.
@@ -144,7 +142,7 @@ namespace qsmpm
               alpha *= 0.5;
               ++report.line_search_steps;
             }
-          du = trial;
+          du                       = trial;
           report.newton_iterations = n + 1;
         }
     }

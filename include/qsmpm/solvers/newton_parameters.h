@@ -16,12 +16,12 @@ namespace qsmpm
     /// gamma of the stopping test ||R_n|| <= gamma max(floor, ||R_0||).
     double tolerance = 1e-6;
     /// The absolute floor of that test (the paper's 1).
-    double residual_floor = 1.;
+    double       residual_floor = 1.;
     unsigned int max_iterations = 20;
     /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
-    double       linear_tolerance  = 1e-3;
+    double       linear_tolerance      = 1e-3;
     unsigned int max_linear_iterations = 1000;
-    unsigned int gmres_restart     = 50;
+    unsigned int gmres_restart         = 50;
     /// sqrt(eps_prec) of Kelley's difference parameter (A.4).
     double sqrt_eps_prec = 1e-7;
     /// Backtracking line search on ||R|| (halving, at most this many times).

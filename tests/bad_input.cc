@@ -1,0 +1,154 @@
+// Bad input must stop with a message that names the cause:
+//  - an out-of-range value in a .prm file,
+//  - an unknown entry,
+//  - a malformed or impossible boundary condition,
+//  - a missing parameter file,
+//  - a load step that does not converge (after the allowed cut-backs), and
+//    nothing of that step is committed to the points.
+#include "tests.h"
+
+#include <deal.II/base/function.h>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/materials/linear_elastic.h>
+
+// deal.II's exception text carries file names and line numbers; keep the
+// part meant for the user, on one line.
+std::string
+user_message(const std::exception &exc)
+{
+  std::string text = exc.what();
+  const auto  pos  = text.find("Additional information:");
+  if (pos != std::string::npos)
+    text = text.substr(pos + 23);
+  const auto end = text.find("Stacktrace:");
+  if (end != std::string::npos)
+    text = text.substr(0, end);
+  // Drop separator lines of dashes, fold white space.
+  for (auto dashes = text.find("---"); dashes != std::string::npos;
+       dashes      = text.find("---"))
+    text.erase(dashes, text.find_first_not_of('-', dashes) - dashes);
+  std::string result;
+  bool        space = false;
+  for (const char c : text)
+    if (std::isspace(static_cast<unsigned char>(c)))
+      space = !result.empty();
+    else
+      {
+        if (space)
+          result += ' ';
+        result += c;
+        space = false;
+      }
+  return result;
+}
+
+void
+try_input(const std::string &what, const std::string &input)
+{
+  ParameterHandler prm;
+  qsmpm::QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
+  try
+    {
+      prm.parse_input_from_string(input);
+      qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+      problem.pcout().set_condition(false);
+      problem.initialize(prm);
+      deallog << what << ": accepted (FAIL)" << std::endl;
+    }
+  catch (const std::exception &exc)
+    {
+      deallog << what << ": stopped (PASS): " << user_message(exc) << std::endl;
+    }
+}
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+
+  try_input("out-of-range value",
+            "subsection Material\n"
+            "  subsection linear elastic\n"
+            "    set Poisson's ratio = 0.7\n"
+            "  end\n"
+            "end\n");
+  try_input("unknown entry",
+            "subsection Material\n"
+            "  set Youngs modulus = 1\n"
+            "end\n");
+  try_input("unknown model",
+            "subsection Material\n"
+            "  set Model = plasticity\n"
+            "end\n");
+  try_input("boundary id that does not exist",
+            "subsection Boundary conditions\n"
+            "  set Dirichlet boundaries = 7:xy\n"
+            "end\n");
+  try_input("unknown component",
+            "subsection Boundary conditions\n"
+            "  set Dirichlet boundaries = 0:xw\n"
+            "end\n");
+  try_input("wrong number of coordinates",
+            "subsection Geometry\n"
+            "  set Upper corner = 1,1,1\n"
+            "end\n");
+
+  // A missing file.
+  try
+    {
+      ParameterHandler prm;
+      qsmpm::QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
+      prm.parse_input("no-such-file.prm");
+      deallog << "missing file: accepted (FAIL)" << std::endl;
+    }
+  catch (const std::exception &exc)
+    {
+      deallog << "missing file: stopped (PASS)" << std::endl;
+    }
+
+  // A step that cannot converge: one Newton iteration allowed, a tolerance
+  // GMRES cannot reach in one, and two cut-backs. The run must stop, and the
+  // points must still hold their initial (zero) displacement.
+  {
+    qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    problem.pcout().set_condition(false);
+    problem.grid().make_box(Point<2>(), Point<2>(1, 1), {{4, 4}});
+    problem.set_model(std::make_unique<qsmpm::LinearElastic<2>>(100., 0.3));
+    problem.points().fill([](const Point<2> &) { return true; },
+                          2,
+                          qsmpm::MaterialPointSet<2>::Placement::regular);
+    problem.boundary_conditions().add_dirichlet_boundary(
+      0, {{true, true}}, std::make_shared<Functions::ZeroFunction<2>>(2));
+    problem.boundary_conditions().set_body_force(
+      std::make_shared<Functions::ConstantFunction<2>>(
+        std::vector<double>{0., -100.}));
+    auto &prm                             = problem.parameters();
+    prm.nonlinear_solver.max_iterations   = 1;
+    prm.nonlinear_solver.tolerance        = 1e-12;
+    prm.nonlinear_solver.residual_floor   = 0.;
+    prm.nonlinear_solver.linear_tolerance = 1e-2;
+    prm.load_stepping.max_cut_backs       = 2;
+    prm.output.directory                  = "results";
+    prm.output.interval                   = 0;
+    try
+      {
+        problem.run();
+        deallog << "non-converging step: accepted (FAIL)" << std::endl;
+      }
+    catch (const std::exception &exc)
+      {
+        deallog << "non-converging step: stopped (PASS): " << user_message(exc)
+                << std::endl;
+      }
+    double max_u = 0;
+    for (const auto &particle : problem.points().get_particle_handler())
+      for (unsigned int d = 0; d < 2; ++d)
+        max_u =
+          std::max(max_u,
+                   std::abs(
+                     particle.get_properties()
+                       [problem.points().get_offsets().displacement + d]));
+    check("  displacement committed by the failed step", max_u, 0.);
+  }
+}

@@ -1,0 +1,205 @@
+// With points at the 2^dim Gauss points of every cell and volumes equal to
+// the Gauss weights times the cell volume (JxW), and without volume updates,
+// the first MPM load step is exactly the Q1 finite element method with
+// 2-point Gauss quadrature. Compare the grid displacement with a deal.II
+// finite element solve (direct solver) of the same problem on the same mesh:
+// a box fixed on the left, pulled down with a prescribed u_y on the bottom,
+// a traction on the right and a body force. Tolerance 1e-8 relative: the
+// JFNK solve is converged to 1e-12, so only round-off and the
+// finite-difference Jacobian limit the agreement.
+#include "tests.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/materials/linear_elastic.h>
+
+template <int dim>
+class BottomDisplacement : public Function<dim>
+{
+public:
+  BottomDisplacement()
+    : Function<dim>(dim)
+  {
+  }
+  double
+  value(const Point<dim> &x, const unsigned int c) const override
+  {
+    return c == 1 ? -2e-3 * x[0] * this->get_time() : 0.;
+  }
+};
+
+template <int dim>
+Tensor<1, dim>
+traction()
+{
+  Tensor<1, dim> t;
+  t[0] = 0.2;
+  t[1] = -0.1;
+  return t;
+}
+
+template <int dim>
+Tensor<1, dim>
+body_force()
+{
+  Tensor<1, dim> b;
+  b[1] = -1.;
+  return b;
+}
+
+// The reference: textbook Q1 linear elasticity, assembled with FEValues.
+template <int dim>
+Vector<double>
+fem_solution(const DoFHandler<dim>         &dof_handler,
+             const SymmetricTensor<4, dim> &C)
+{
+  const auto                      &fe = dof_handler.get_fe();
+  AffineConstraints<double>        constraints;
+  const FEValuesExtractors::Vector u(0);
+  VectorTools::interpolate_boundary_values(dof_handler,
+                                           0,
+                                           Functions::ZeroFunction<dim>(dim),
+                                           constraints);
+  BottomDisplacement<dim> bottom;
+  bottom.set_time(1.);
+  ComponentMask y_only(dim, false);
+  y_only.set(1, true);
+  VectorTools::interpolate_boundary_values(
+    dof_handler, 2, bottom, constraints, y_only);
+  constraints.close();
+
+  DynamicSparsityPattern dsp(dof_handler.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+  SparsityPattern sparsity;
+  sparsity.copy_from(dsp);
+  SparseMatrix<double> K(sparsity);
+  Vector<double>       f(dof_handler.n_dofs()), solution(dof_handler.n_dofs());
+
+  const QGauss<dim>                    quadrature(2);
+  const QGauss<dim - 1>                face_quadrature(2);
+  FEValues<dim>                        fe_values(fe,
+                          quadrature,
+                          update_values | update_gradients | update_JxW_values);
+  FEFaceValues<dim>                    fe_face(fe,
+                            face_quadrature,
+                            update_values | update_JxW_values);
+  const unsigned int                   n = fe.dofs_per_cell;
+  FullMatrix<double>                   K_cell(n, n);
+  Vector<double>                       f_cell(n);
+  std::vector<types::global_dof_index> dofs(n);
+  for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      K_cell = 0;
+      f_cell = 0;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto eps_i = fe_values[u].symmetric_gradient(i, q);
+            for (unsigned int j = 0; j < n; ++j)
+              K_cell(i, j) += eps_i * C *
+                              fe_values[u].symmetric_gradient(j, q) *
+                              fe_values.JxW(q);
+            f_cell(i) +=
+              fe_values[u].value(i, q) * body_force<dim>() * fe_values.JxW(q);
+          }
+      for (const unsigned int face : cell->face_indices())
+        if (cell->face(face)->at_boundary() &&
+            cell->face(face)->boundary_id() == 1)
+          {
+            fe_face.reinit(cell, face);
+            for (const unsigned int q : fe_face.quadrature_point_indices())
+              for (unsigned int i = 0; i < n; ++i)
+                f_cell(i) +=
+                  fe_face[u].value(i, q) * traction<dim>() * fe_face.JxW(q);
+          }
+      cell->get_dof_indices(dofs);
+      constraints.distribute_local_to_global(K_cell, f_cell, dofs, K, f);
+    }
+  SparseDirectUMFPACK direct;
+  direct.initialize(K);
+  direct.vmult(solution, f);
+  constraints.distribute(solution);
+  return solution;
+}
+
+template <int dim>
+void
+test()
+{
+  qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+  problem.pcout().set_condition(false);
+  Point<dim>                    upper;
+  std::array<unsigned int, dim> n;
+  for (unsigned int d = 0; d < dim; ++d)
+    {
+      upper[d] = d == 0 ? 3. : 1.;
+      n[d]     = d == 0 ? 9 : 3;
+    }
+  problem.grid().make_box(Point<dim>(), upper, n);
+  auto model = std::make_unique<qsmpm::LinearElastic<dim>>(100., 0.25);
+  const SymmetricTensor<4, dim> C = model->stiffness();
+  problem.set_model(std::move(model));
+  problem.points().fill([](const Point<dim> &) { return true; },
+                        2,
+                        qsmpm::MaterialPointSet<dim>::Placement::gauss);
+
+  auto                 &bcs = problem.boundary_conditions();
+  std::array<bool, dim> all, y_only;
+  all.fill(true);
+  y_only.fill(false);
+  y_only[1] = true;
+  bcs.add_dirichlet_boundary(
+    0, all, std::make_shared<Functions::ZeroFunction<dim>>(dim));
+  bcs.add_dirichlet_boundary(2,
+                             y_only,
+                             std::make_shared<BottomDisplacement<dim>>());
+  // One load step: constant loads are the loads at t = 1.
+  auto constant = [](const Tensor<1, dim> &value) {
+    std::vector<double> values(value.begin_raw(), value.begin_raw() + dim);
+    return std::make_shared<Functions::ConstantFunction<dim>>(values);
+  };
+  bcs.add_traction(1, constant(traction<dim>()));
+  bcs.set_body_force(constant(body_force<dim>()));
+
+  auto &prm                             = problem.parameters();
+  prm.material_points.update_volumes    = false;
+  prm.nonlinear_solver.tolerance        = 1e-12;
+  prm.nonlinear_solver.residual_floor   = 0.;
+  prm.nonlinear_solver.linear_tolerance = 1e-10;
+  prm.output.directory                  = "results";
+  prm.output.interval                   = 0;
+  problem.run();
+
+  const Vector<double> u_fem =
+    fem_solution(problem.grid().get_dof_handler(), C);
+  Vector<double> u_mpm(u_fem.size());
+  for (unsigned int i = 0; i < u_fem.size(); ++i)
+    u_mpm[i] = problem.increment()(i);
+  Vector<double> difference = u_mpm;
+  difference -= u_fem;
+
+  deallog << dim << "D, " << u_fem.size() << " dofs, "
+          << problem.points().n_global_points() << " points, Newton iterations "
+          << problem.step_reports()[0].newton.newton_iterations << std::endl;
+  check("  ||u_MPM - u_FEM|| / ||u_FEM||",
+        difference.l2_norm() / u_fem.l2_norm(),
+        1e-8);
+}
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+  test<2>();
+  test<3>();
+}

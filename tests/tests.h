@@ -1,0 +1,104 @@
+// A small stand-in for deal.II's tests/tests.h (Debian does not install it):
+// deallog goes to the file "output" that the test harness compares with the
+// .output file, and MPI tests log from rank 0 only.
+#ifndef qsmpm_tests_h
+#define qsmpm_tests_h
+
+#include <cmath>
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+using namespace dealii;
+
+namespace qsmpm_tests
+{
+  inline std::ofstream &
+  logfile()
+  {
+    static std::ofstream file;
+    return file;
+  }
+
+  /// Serial tests: log to "output".
+  inline void
+  initlog()
+  {
+    logfile().open("output");
+    logfile() << std::setprecision(6);
+    deallog.attach(logfile(), /*print_job_id=*/false);
+    deallog.depth_console(0);
+  }
+
+  /// MPI tests: rank 0 logs to "output", the others stay silent.
+  class MPILogInitAll
+  {
+  public:
+    MPILogInitAll()
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        initlog();
+      else
+        deallog.depth_console(0);
+    }
+    ~MPILogInitAll()
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        deallog.detach();
+    }
+  };
+
+  /// A tolerance as written by a person: 1e-10, 0.05, 1.8.
+  inline std::string
+  format(const double value)
+  {
+    std::ostringstream s;
+    s << std::setprecision(3) << value;
+    return s.str();
+  }
+
+  /**
+   * "PASS" if |value| <= tolerance, else "FAIL" with the value. The value
+   * itself is printed only on failure, so that the output does not depend on
+   * round-off.
+   */
+  inline void
+  check(const std::string &what, const double value, const double tolerance)
+  {
+    const bool pass = std::isfinite(value) && std::abs(value) <= tolerance;
+    deallog << what << " <= " << format(tolerance) << ": "
+            << (pass ? "PASS" : "FAIL");
+    if (!pass)
+      deallog << " (value " << value << ")";
+    deallog << std::endl;
+  }
+
+  /// "PASS" if value >= bound, else "FAIL" with the value.
+  inline void
+  check_at_least(const std::string &what,
+                 const double       value,
+                 const double       bound)
+  {
+    const bool pass = std::isfinite(value) && value >= bound;
+    deallog << what << " >= " << format(bound) << ": "
+            << (pass ? "PASS" : "FAIL");
+    if (!pass)
+      deallog << " (value " << value << ")";
+    deallog << std::endl;
+  }
+
+  /// "PASS" or "FAIL" for a boolean condition.
+  inline void
+  check_that(const std::string &what, const bool condition)
+  {
+    deallog << what << ": " << (condition ? "PASS" : "FAIL") << std::endl;
+  }
+} // namespace qsmpm_tests
+
+using namespace qsmpm_tests;
+
+#endif
