@@ -131,11 +131,17 @@ namespace qsmpm
   QuasiStaticProblem<dim>::setup_step_data()
   {
     if (!residual)
-      residual = std::make_unique<QuasiStaticResidual<dim>>(
-        background_grid,
-        points(),
-        cache,
-        prm_values.material_points.update_volumes);
+      {
+        residual = std::make_unique<QuasiStaticResidual<dim>>(
+          background_grid,
+          points(),
+          cache,
+          prm_values.material_points.update_volumes);
+        preconditioner = Preconditioner<dim>(Preconditioner<dim>::parse_type(
+          prm_values.nonlinear_solver.preconditioner));
+        if (preconditioner.needs_matrix())
+          tangent.reinit(background_grid);
+      }
     du.reinit(background_grid.locally_owned_dofs(), communicator);
     R.reinit(du);
     f_ext.reinit(du);
@@ -167,6 +173,12 @@ namespace qsmpm
         background_grid, cache, points().get_offsets().volume, t_new, f_ext);
       residual->set_external_force(f_ext);
     }
+    if (preconditioner.needs_matrix())
+      {
+        TimerOutput::Scope scope(timer_output, "preconditioner setup");
+        tangent.assemble(background_grid, points(), cache, constraints);
+        preconditioner.setup(tangent.matrix(), background_grid);
+      }
 
     // A.1 step 1: zero initial guess but for the prescribed increments.
     du = 0.;
@@ -174,7 +186,7 @@ namespace qsmpm
 
     {
       TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
-      const StepOperator op{*residual, constraints};
+      const StepOperator op{*residual, constraints, preconditioner};
       const NewtonKrylov<StepOperator, VectorType> newton(
         prm_values.nonlinear_solver);
       report = newton.solve(op, du, R);
@@ -299,6 +311,15 @@ namespace qsmpm
 
 
   template <int dim>
+  const TrilinosWrappers::SparseMatrix &
+  QuasiStaticProblem<dim>::stiffness() const
+  {
+    return tangent.matrix();
+  }
+
+
+
+  template <int dim>
   ConditionalOStream &
   QuasiStaticProblem<dim>::pcout()
   {
@@ -342,7 +363,7 @@ namespace qsmpm
     VectorType       &dst,
     const VectorType &src) const
   {
-    dst = src;
+    preconditioner.vmult(dst, src);
   }
 
 

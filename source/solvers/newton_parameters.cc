@@ -40,6 +40,20 @@ namespace qsmpm
                         Patterns::Double(0., 1.),
                         "sqrt(eps_prec) of Kelley's difference step h "
                         "(paper A.4); about 1e-7 for double precision.");
+      prm.declare_entry("Preconditioner",
+                        "amg",
+                        Patterns::Selection("none|jacobi|amg"),
+                        "Preconditioner of GMRES, built once per load step "
+                        "from the stiffness at the points: none (the "
+                        "paper's solver), jacobi, or amg (algebraic "
+                        "multigrid with the rigid-body near-null space).");
+      prm.declare_entry("Forcing term",
+                        "constant",
+                        Patterns::Selection("constant|eisenstat-walker"),
+                        "constant: GMRES always solves to <Linear "
+                        "tolerance> (the paper); eisenstat-walker: adapt it "
+                        "to the Newton convergence (Eisenstat and Walker's "
+                        "choice 2), starting from <Linear tolerance>.");
       prm.declare_entry("Line search steps",
                         "0",
                         Patterns::Integer(0, 30),
@@ -65,6 +79,8 @@ namespace qsmpm
       gmres_restart         = prm.get_integer("GMRES restart");
       sqrt_eps_prec         = prm.get_double("Finite difference parameter");
       max_line_search_steps = prm.get_integer("Line search steps");
+      preconditioner        = prm.get("Preconditioner");
+      eisenstat_walker      = prm.get("Forcing term") == "eisenstat-walker";
     }
     prm.leave_subsection();
   }

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
 #include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/assembly/tangent_assembler.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/loading/boundary_conditions.h>
@@ -16,6 +17,7 @@
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
 #include <qsmpm/solvers/newton_krylov.h>
+#include <qsmpm/solvers/preconditioner.h>
 #include <vector>
 
 namespace qsmpm
@@ -125,6 +127,11 @@ namespace qsmpm
     const VectorType &
     increment() const;
 
+    /// The stiffness at the points of the last step (if a preconditioner
+    /// needed it).
+    const TrilinosWrappers::SparseMatrix &
+    stiffness() const;
+
     /// Progress and summary printing (rank 0); silence with set_condition().
     ConditionalOStream &
     pcout();
@@ -138,6 +145,7 @@ namespace qsmpm
     {
       const QuasiStaticResidual<dim>  &residual_evaluator;
       const AffineConstraints<double> &constraints;
+      const Preconditioner<dim>       &preconditioner;
 
       void
       residual(const VectorType &du, VectorType &R) const;
@@ -160,6 +168,8 @@ namespace qsmpm
     BoundaryConditions<dim>                   bcs;
     ShapeCache<dim>                           cache;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
+    TangentAssembler<dim>                     tangent;
+    Preconditioner<dim>                       preconditioner;
     AffineConstraints<double>                 constraints;
     VectorType                                du;
     VectorType                                R;

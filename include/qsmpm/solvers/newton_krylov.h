@@ -76,6 +76,7 @@ namespace qsmpm
       const double target =
         parameters.tolerance * std::max(parameters.residual_floor, norm);
 
+      double forcing = parameters.linear_tolerance, previous_norm = norm;
       for (unsigned int n = 0;; ++n)
         {
           report.final_residual = norm;
@@ -95,6 +96,10 @@ namespace qsmpm
                 "no convergence in " + std::to_string(n) + " Newton iterations";
               return report;
             }
+
+          if (parameters.eisenstat_walker && n > 0)
+            forcing = eisenstat_walker(forcing, norm, previous_norm, target);
+          previous_norm = norm;
 
           // A.1 step 4: J s = -R with constrained components of s zero.
           rhs = R;
@@ -148,6 +153,26 @@ namespace qsmpm
     }
 
   private:
+    /**
+     * Eisenstat and Walker's forcing term, choice 2 (gamma = 0.9,
+     * alpha = 2), with their safeguard against too small forcing terms and
+     * a floor that avoids solving more accurately than the Newton target.
+     */
+    static double
+    eisenstat_walker(const double previous_forcing,
+                     const double norm,
+                     const double previous_norm,
+                     const double target)
+    {
+      const double gamma = 0.9, eta_max = 0.9;
+      double       eta       = gamma * std::pow(norm / previous_norm, 2);
+      const double safeguard = gamma * previous_forcing * previous_forcing;
+      if (safeguard > 0.1)
+        eta = std::max(eta, safeguard);
+      eta = std::min(eta, eta_max);
+      return std::max(eta, 0.5 * target / norm);
+    }
+
     /// The preconditioner as deal.II's solvers want it: a vmult().
     struct Preconditioner
     {

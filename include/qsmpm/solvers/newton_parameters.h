@@ -2,6 +2,7 @@
 #define qsmpm_solvers_newton_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <string>
 
 namespace qsmpm
 {
@@ -24,6 +25,10 @@ namespace qsmpm
     unsigned int gmres_restart         = 50;
     /// sqrt(eps_prec) of Kelley's difference parameter (A.4).
     double sqrt_eps_prec = 1e-7;
+    /// none, jacobi or amg (see Preconditioner).
+    std::string preconditioner = "amg";
+    /// Eisenstat-Walker forcing terms instead of the fixed linear tolerance.
+    bool eisenstat_walker = false;
     /// Backtracking line search on ||R|| (halving, at most this many times).
     unsigned int max_line_search_steps = 0;
 

@@ -1,0 +1,51 @@
+#ifndef qsmpm_assembly_tangent_assembler_h
+#define qsmpm_assembly_tangent_assembler_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+
+namespace qsmpm
+{
+  /**
+   * The stiffness matrix at the material points,
+   *
+   *   K_ij = sum_p Omega_p B_i(x_p)^T C_p B_j(x_p),
+   *
+   * with C_p the tangent the constitutive model supplies at the committed
+   * state of point p. Since R(du) = f_ext - f(du), the Jacobian of the
+   * residual is J = -K when C_p is the exact tangent (linear models, without
+   * volume updates); otherwise K is an approximation that is good enough to
+   * precondition the Jacobian-free GMRES.
+   *
+   * Rows and columns of constrained degrees of freedom carry only a diagonal
+   * entry, so the matrix is regular and AMG can be built on it.
+   */
+  template <int dim>
+  class TangentAssembler
+  {
+  public:
+    /// Build the sparsity pattern of the grid (once, or after the grid
+    /// changed).
+    void
+    reinit(const BackgroundGrid<dim> &grid);
+
+    /// Assemble K at the points of @p cache.
+    void
+    assemble(const BackgroundGrid<dim>       &grid,
+             const MaterialPointSet<dim>     &points,
+             const ShapeCache<dim>           &cache,
+             const AffineConstraints<double> &constraints);
+
+    const TrilinosWrappers::SparseMatrix &
+    matrix() const;
+
+  private:
+    TrilinosWrappers::SparseMatrix K;
+  };
+} // namespace qsmpm
+
+#endif

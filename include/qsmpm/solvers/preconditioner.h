@@ -1,0 +1,77 @@
+#ifndef qsmpm_solvers_preconditioner_h
+#define qsmpm_solvers_preconditioner_h
+
+#include <Epetra_MultiVector.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <qsmpm/grid/background_grid.h>
+#include <string>
+
+namespace qsmpm
+{
+  /**
+   * The rigid-body modes of the grid's displacement space (dim translations
+   * and dim(dim-1)/2 infinitesimal rotations about the box centre) at the
+   * locally owned degrees of freedom: the near-null space of elasticity that
+   * smoothed-aggregation AMG needs to coarsen vector problems well. deal.II
+   * 9.4 only offers constant modes, so they are built here.
+   */
+  template <int dim>
+  std::unique_ptr<Epetra_MultiVector>
+  make_rigid_body_modes(const BackgroundGrid<dim> &grid,
+                        const Epetra_Map          &owned_map);
+
+  /**
+   * The preconditioner of the Jacobian-free GMRES: an approximate inverse of
+   * the stiffness K at the points (TangentAssembler), rebuilt once per load
+   * step. Since the Jacobian is J ~ -K, vmult() applies -K^{-1}.
+   *
+   * Types: "none" (the paper's unpreconditioned GMRES), "jacobi" (diagonal
+   * of K) and "amg" (Trilinos ML smoothed aggregation with the rigid-body
+   * near-null space, one V-cycle per application).
+   */
+  template <int dim>
+  class Preconditioner
+  {
+  public:
+    enum class Type
+    {
+      none,
+      jacobi,
+      amg
+    };
+
+    static Type
+    parse_type(const std::string &name);
+
+    explicit Preconditioner(const Type type = Type::amg);
+
+    Type
+    type() const;
+
+    /// Whether a matrix is needed (false for none).
+    bool
+    needs_matrix() const;
+
+    /// Build from the stiffness @p K of the current step.
+    void
+    setup(const TrilinosWrappers::SparseMatrix &K,
+          const BackgroundGrid<dim>            &grid);
+
+    /// dst = -P^{-1} src (identity copy for none).
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+  private:
+    Type                                 preconditioner_type;
+    TrilinosWrappers::PreconditionJacobi jacobi;
+    TrilinosWrappers::PreconditionAMG    amg;
+    std::unique_ptr<Epetra_MultiVector>  rigid_body_modes;
+  };
+} // namespace qsmpm
+
+#endif
