@@ -30,11 +30,11 @@ namespace qsmpm
     du_ghosted.reinit(grid.locally_owned_dofs(),
                       grid.locally_relevant_dofs(),
                       grid.get_communicator());
-    const Epetra_BlockMap &map = du_ghosted.trilinos_vector().Map();
-    relevant_gids.resize(map.NumMyElements());
-    for (int lid = 0; lid < map.NumMyElements(); ++lid)
-      relevant_gids[lid] = map.GID(lid);
-    local_force.resize(relevant_gids.size());
+    const Epetra_BlockMap &relevant_map = du_ghosted.trilinos_vector().Map();
+    const Epetra_BlockMap &owned_map    = f_ext.trilinos_vector().Map();
+    importer    = std::make_unique<Epetra_Import>(relevant_map, owned_map);
+    exporter    = std::make_unique<Epetra_Export>(relevant_map, owned_map);
+    local_force = std::make_unique<Epetra_Vector>(relevant_map);
   }
 
 
@@ -98,10 +98,13 @@ namespace qsmpm
     const auto            &offsets       = points.get_offsets();
     const unsigned int     n_state       = state_scratch.size();
 
-    du_ghosted              = du;
+    du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
+                                        *importer,
+                                        Insert);
     const double *du_values = du_ghosted.trilinos_vector()[0];
+    double       *force     = local_force->Values();
     if (!write_back)
-      std::fill(local_force.begin(), local_force.end(), 0.);
+      local_force->PutScalar(0.);
 
     double du_cell[dofs_per_cell];
     double f_cell[dofs_per_cell];
@@ -169,15 +172,17 @@ namespace qsmpm
 
         if (!write_back)
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            local_force[dofs[i]] += f_cell[i];
+            force[dofs[i]] += f_cell[i];
       }
 
     if (!write_back)
       {
         ++evaluation_count;
-        *R = f_ext;
-        R->add(relevant_gids, local_force);
-        R->compress(VectorOperation::add);
+        R->trilinos_vector().PutScalar(0.);
+        const int ierr =
+          R->trilinos_vector().Export(*local_force, *exporter, Add);
+        AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+        *R += f_ext;
       }
   }
 

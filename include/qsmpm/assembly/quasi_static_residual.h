@@ -1,7 +1,11 @@
 #ifndef qsmpm_assembly_quasi_static_residual_h
 #define qsmpm_assembly_quasi_static_residual_h
 
+#include <Epetra_Export.h>
+#include <Epetra_Import.h>
+#include <Epetra_Vector.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <memory>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -81,12 +85,15 @@ namespace qsmpm
     const bool                    update_volumes;
 
     TrilinosWrappers::MPI::Vector f_ext;
-    /// Scratch: du with ghost entries, and the local force accumulator.
-    mutable TrilinosWrappers::MPI::Vector du_ghosted;
-    mutable std::vector<double>           local_force;
-    mutable std::vector<double>           state_scratch;
-    std::vector<types::global_dof_index>  relevant_gids;
-    mutable unsigned long                 evaluation_count = 0;
+    /// Scratch: du with ghost entries, and the force on the same layout.
+    mutable TrilinosWrappers::MPI::Vector  du_ghosted;
+    mutable std::unique_ptr<Epetra_Vector> local_force;
+    mutable std::vector<double>            state_scratch;
+    /// Communication plans owned -> relevant and back, built once: deal.II's
+    /// vector assignment between layouts would rebuild one per evaluation.
+    std::unique_ptr<Epetra_Import> importer;
+    std::unique_ptr<Epetra_Export> exporter;
+    mutable unsigned long          evaluation_count = 0;
   };
 } // namespace qsmpm
 

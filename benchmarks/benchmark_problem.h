@@ -1,0 +1,98 @@
+// The block problem shared by the benchmarks: a box of 2^dim regularly placed
+// points per cell, clamped at the bottom, its top pushed down and sideways by
+// displacement control, isotropic linear elasticity, one load step.
+#ifndef qsmpm_benchmarks_benchmark_problem_h
+#define qsmpm_benchmarks_benchmark_problem_h
+
+#include <deal.II/base/function.h>
+#include <fstream>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/materials/linear_elastic.h>
+#include <string>
+
+namespace Benchmarks
+{
+  using namespace dealii;
+
+  /// Top plate: u = t (0.5e-3, -1e-3, 0).
+  template <int dim>
+  class TopDisplacement : public Function<dim>
+  {
+  public:
+    TopDisplacement()
+      : Function<dim>(dim)
+    {
+    }
+    double
+    value(const Point<dim> &, const unsigned int c) const override
+    {
+      return this->get_time() * (c == 0 ? 0.5e-3 : (c == 1 ? -1e-3 : 0.));
+    }
+  };
+
+  /// Set up the block with n cells per direction.
+  template <int dim>
+  void
+  setup_block(qsmpm::QuasiStaticProblem<dim> &problem,
+              const unsigned int              n,
+              const std::string              &preconditioner)
+  {
+    problem.pcout().set_condition(false);
+    Point<dim>                    upper;
+    std::array<unsigned int, dim> subdivisions;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        upper[d]        = 1.;
+        subdivisions[d] = n;
+      }
+    // Leave room above and beside the body is not needed: the body is
+    // compressed, so its points stay inside the box.
+    problem.grid().make_box(Point<dim>(), upper, subdivisions);
+    problem.set_model(std::make_unique<qsmpm::LinearElastic<dim>>(1e3, 0.3));
+    problem.points().fill([](const Point<dim> &) { return true; },
+                          2,
+                          qsmpm::MaterialPointSet<dim>::Placement::regular);
+    std::array<bool, dim> all;
+    all.fill(true);
+    problem.boundary_conditions().add_dirichlet_boundary(
+      2, all, std::make_shared<Functions::ZeroFunction<dim>>(dim));
+    problem.boundary_conditions().add_dirichlet_boundary(
+      3, all, std::make_shared<TopDisplacement<dim>>());
+
+    auto &prm                                  = problem.parameters();
+    prm.nonlinear_solver.preconditioner        = preconditioner;
+    prm.nonlinear_solver.tolerance             = 1e-6;
+    prm.nonlinear_solver.linear_tolerance      = 1e-3;
+    prm.nonlinear_solver.max_linear_iterations = 20000;
+    prm.nonlinear_solver.gmres_restart         = 200;
+    prm.output.directory                       = "benchmark_output";
+    prm.output.interval                        = 0;
+    prm.load_stepping.n_steps                  = 1;
+  }
+
+  /// Peak resident memory of this process in bytes (VmHWM).
+  inline double
+  peak_memory()
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   line;
+    while (std::getline(status, line))
+      if (line.rfind("VmHWM:", 0) == 0)
+        return 1024. * std::stod(line.substr(6));
+    return 0.;
+  }
+
+  /// Current resident memory of this process in bytes (VmRSS).
+  inline double
+  resident_memory()
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   line;
+    while (std::getline(status, line))
+      if (line.rfind("VmRSS:", 0) == 0)
+        return 1024. * std::stod(line.substr(6));
+    return 0.;
+  }
+} // namespace Benchmarks
+
+#endif
