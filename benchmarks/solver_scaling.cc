@@ -8,10 +8,11 @@
 // is the wall time of the load step (shape functions, constraints,
 // preconditioner setup, Newton-Krylov solve, commit and point motion).
 //
-// Options: --dim 2|3 (default both), --max-2d N (default 512 cells across),
-// --max-3d N (default 64), --max-none-2d N (default 256) and --max-none-3d N
-// (default 32): unpreconditioned cases above these sizes are skipped, since
-// their GMRES iteration count, and so their cost, grows with the grid.
+// Options: --dim 2|3 (default both), --min-2d/--max-2d N (default 32 and
+// 512 cells across), --min-3d/--max-3d N (default 8 and 64), --max-none-2d N
+// (default 256) and --max-none-3d N (default 32): unpreconditioned cases above
+// these sizes are skipped, since their GMRES iteration count, and so their
+// cost, grows with the grid.
 #include "benchmark_problem.h"
 
 #include <deal.II/base/mpi.h>
@@ -48,6 +49,8 @@ main(int argc, char *argv[])
       std::map<std::string, unsigned int>      option{{"--dim", 0},
                                                  {"--max-2d", 512},
                                                  {"--max-3d", 64},
+                                                 {"--min-2d", 32},
+                                                 {"--min-3d", 8},
                                                  {"--max-none-2d", 256},
                                                  {"--max-none-3d", 32}};
       for (int i = 1; i + 1 < argc; i += 2)
@@ -62,12 +65,14 @@ main(int argc, char *argv[])
                      "gmres_iterations,seconds"
                   << std::endl;
       if (option["--dim"] != 3)
-        for (unsigned int n = 32; n <= option["--max-2d"]; n *= 2)
+        for (unsigned int n = option["--min-2d"]; n <= option["--max-2d"];
+             n *= 2)
           for (const std::string p : {"none", "amg"})
             if (p == "amg" || n <= option["--max-none-2d"])
               run<2>(n, p);
       if (option["--dim"] != 2)
-        for (unsigned int n = 8; n <= option["--max-3d"]; n *= 2)
+        for (unsigned int n = option["--min-3d"]; n <= option["--max-3d"];
+             n *= 2)
           for (const std::string p : {"none", "amg"})
             if (p == "amg" || n <= option["--max-none-3d"])
               run<3>(n, p);
