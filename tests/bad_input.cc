@@ -23,6 +23,11 @@ user_message(const std::exception &exc)
   const auto end = text.find("Stacktrace:");
   if (end != std::string::npos)
     text = text.substr(0, end);
+  // The list of models in a Selection pattern grows with every registered
+  // model; the message names the entry and the value, which is what counts.
+  const auto selection = text.find("[Selection");
+  if (selection != std::string::npos)
+    text = text.substr(0, selection) + "[Selection ...]";
   // Drop separator lines of dashes, fold white space.
   for (auto dashes = text.find("---"); dashes != std::string::npos;
        dashes      = text.find("---"))
