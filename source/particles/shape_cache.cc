@@ -42,7 +42,7 @@ namespace qsmpm
                           MaterialPointSet<dim>               &points,
                           const TrilinosWrappers::MPI::Vector &ghosted)
   {
-    const FESystem<dim> &fe = grid.get_fe();
+    [[maybe_unused]] const FESystem<dim> &fe = grid.get_fe();
     for (unsigned int v = 0; v < n_vertices; ++v)
       for (unsigned int c = 0; c < dim; ++c)
         Assert(fe.system_to_component_index(v * dim + c).first == c &&
