@@ -1,0 +1,860 @@
+/* ---------------------------------------------------------------------
+ *
+ * qsmpm example: polycrystal
+ *
+ * The effective elastic stiffness of a textured, columnar nickel
+ * polycrystal from six virtual tests with the quasi-static material-point
+ * method, following Section 4 of Sanchez, Schreyer, Sulsky and Wallstedt,
+ * "Solving Quasi-Static Equations with the Material-Point Method".
+ *
+ * Usage:
+ *   ./polycrystal [file.prm]
+ *   mpirun -np 2 ./polycrystal [file.prm]
+ *   ./polycrystal --make-odfs <directory>   (writes the shipped ODF files)
+ *
+ * Without an argument, polycrystal.prm next to the executable is read.
+ *
+ * ---------------------------------------------------------------------
+ */
+
+// @sect3{Include files}
+//
+// Besides the core of the library (reached through QuasiStaticProblem,
+// which VirtualTests uses internally) we need the homogenization module:
+// the grain structure, the orientation distribution and its
+// discretization, the six virtual tests and the Voigt/Reuss/Hill
+// estimates, and the cubic crystal model.
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <qsmpm/base/rotation.h>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/homogenization/columnar_voronoi.h>
+#include <qsmpm/homogenization/orientation_distribution.h>
+#include <qsmpm/homogenization/stiffness_bounds.h>
+#include <qsmpm/homogenization/texture_sampler.h>
+#include <qsmpm/homogenization/virtual_tests.h>
+#include <qsmpm/materials/cubic_elastic.h>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Polycrystal
+{
+  using namespace dealii;
+  using namespace qsmpm;
+
+  using Matrix6 = StiffnessBounds::Matrix6;
+
+  // @sect3{The parameters}
+  //
+  // The program's own subsection "Polycrystal" holds the sample (size,
+  // grains, resolution), the texture and the tests. The material constants
+  // come from the library's subsection "Material/cubic elastic" and the
+  // solver settings from "Nonlinear solver", so that the same entries mean
+  // the same thing in every qsmpm program.
+  struct Parameters
+  {
+    double                   side_length;
+    unsigned int             n_grains;
+    unsigned int             grain_seed;
+    bool                     periodic_grains;
+    unsigned int             cells_in_plane;
+    unsigned int             cells_through_thickness;
+    unsigned int             points_per_direction;
+    std::string              odf_file;
+    unsigned int             n_elementary_volumes;
+    double                   threshold_degrees;
+    unsigned int             texture_seed;
+    std::vector<std::string> boundary_conditions;
+    double                   strain;
+    unsigned int             n_load_steps;
+    unsigned int             n_realizations;
+    std::string              output_directory;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+  };
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Polycrystal");
+    {
+      prm.declare_entry("Side length",
+                        "1.0",
+                        Patterns::Double(0.),
+                        "L: edge of the cubic sample (the paper's 1 micron; "
+                        "the stiffness does not depend on it).");
+      prm.declare_entry("Number of grains",
+                        "1000",
+                        Patterns::Integer(1),
+                        "Voronoi generating points in the film plane (x, y); "
+                        "grains are columns through the thickness z.");
+      prm.declare_entry("Grain seed",
+                        "1",
+                        Patterns::Integer(0),
+                        "Seed of the generating points (realization r uses "
+                        "seed + r).");
+      prm.declare_entry("Periodic grains",
+                        "false",
+                        Patterns::Bool(),
+                        "Periodic tessellation of the film plane (grains cut "
+                        "by one face continue on the opposite face).");
+      prm.declare_entry("Cells in plane",
+                        "64",
+                        Patterns::Integer(1),
+                        "Background grid cells along x and along y.");
+      prm.declare_entry("Cells through thickness",
+                        "4",
+                        Patterns::Integer(1),
+                        "Background grid cells along z. The grains are "
+                        "columns, so z may be coarser than the plane.");
+      prm.declare_entry("Points per cell per direction",
+                        "2",
+                        Patterns::Integer(1, 6),
+                        "Regularly placed material points per cell and "
+                        "direction.");
+      prm.declare_entry("ODF file",
+                        "odf/electrodeposited_ni.txt",
+                        Patterns::Anything(),
+                        "Orientation distribution on the 5 degree Bunge grid "
+                        "(format: see OrientationDistribution); relative to "
+                        "the directory of the parameter file.");
+      prm.declare_entry("Elementary volumes",
+                        "50000",
+                        Patterns::Integer(1),
+                        "N_u of the texture discretization (paper Sec. 4.3).");
+      prm.declare_entry("Disorientation threshold",
+                        "7",
+                        Patterns::Double(0., 62.8),
+                        "Degrees; the orientations averaged into one grain "
+                        "lie within this disorientation of a seed.");
+      prm.declare_entry("Texture seed",
+                        "1",
+                        Patterns::Integer(0),
+                        "Seed of the texture sampling (realization r uses "
+                        "seed + r).");
+      prm.declare_entry("Boundary conditions",
+                        "mixed",
+                        Patterns::List(Patterns::Selection("mixed|affine")),
+                        "mixed: the paper's tests (four confined faces free "
+                        "to slide, two loaded faces); affine: the "
+                        "macroscopic displacement on all faces. A list runs "
+                        "all of them on the first realization; the first "
+                        "gives effective_stiffness.csv.");
+      prm.declare_entry("Strain",
+                        "0.004",
+                        Patterns::Double(0.),
+                        "Macroscopic strain of each test (the paper's "
+                        "faces move by 0.002 L each: 0.004).");
+      prm.declare_entry("Load steps",
+                        "2",
+                        Patterns::Integer(1),
+                        "Load steps per test.");
+      prm.declare_entry("Number of realizations",
+                        "1",
+                        Patterns::Integer(1),
+                        "M samples with seeds (grain seed + r, texture seed "
+                        "+ r); M > 1 gives the mean, standard deviation and "
+                        "histogram of the in-plane modulus.");
+      prm.declare_entry("Output directory",
+                        "polycrystal-output",
+                        Patterns::Anything(),
+                        "Where results go (relative to the working "
+                        "directory).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Parameters::parse_parameters(ParameterHandler  &prm,
+                               const std::string &prm_directory)
+  {
+    prm.enter_subsection("Polycrystal");
+    {
+      side_length             = prm.get_double("Side length");
+      n_grains                = prm.get_integer("Number of grains");
+      grain_seed              = prm.get_integer("Grain seed");
+      periodic_grains         = prm.get_bool("Periodic grains");
+      cells_in_plane          = prm.get_integer("Cells in plane");
+      cells_through_thickness = prm.get_integer("Cells through thickness");
+      points_per_direction = prm.get_integer("Points per cell per direction");
+      odf_file             = prm.get("ODF file");
+      if (!odf_file.empty() && std::filesystem::path(odf_file).is_relative())
+        odf_file = (std::filesystem::path(prm_directory) / odf_file).string();
+      n_elementary_volumes = prm.get_integer("Elementary volumes");
+      threshold_degrees    = prm.get_double("Disorientation threshold");
+      texture_seed         = prm.get_integer("Texture seed");
+      boundary_conditions  = Utils::split(prm.get("Boundary conditions"), ',');
+      strain               = prm.get_double("Strain");
+      n_load_steps         = prm.get_integer("Load steps");
+      n_realizations       = prm.get_integer("Number of realizations");
+      output_directory     = prm.get("Output directory");
+    }
+    prm.leave_subsection();
+    AssertThrow(!boundary_conditions.empty(),
+                ExcMessage("Polycrystal: <Boundary conditions> is empty."));
+    AssertThrow(strain > 0 && strain < 0.05,
+                ExcMessage("Polycrystal: <Strain> must lie in (0, 0.05): the "
+                           "model is small-strain elasticity."));
+  }
+
+
+
+  // @sect3{The shipped orientation distributions}
+  //
+  // Three ODFs come with the example, on the 5 degree grid of Bunge angles
+  // in [0, 90] degrees:
+  //
+  // - uniform.txt: f = 1 (a random texture);
+  // - fibre_001.txt: a <001> fibre along the film normal z, i.e. a Gaussian
+  //   $f = \exp(-\theta^2 / (2 \cdot 10^\circ{}^2))$ of the angle $\theta$
+  //   between z and the nearest crystal <001> direction. In Bunge's
+  //   convention z has the crystal components
+  //   $(\sin\varphi_2\sin\Phi, \cos\varphi_2\sin\Phi, \cos\Phi)$ (the third
+  //   column of g), and $\cos\theta$ is the largest of their absolute
+  //   values, which is invariant under all cubic and orthorhombic symmetry
+  //   operations, as an ODF must be;
+  // - electrodeposited_ni.txt: the fibre (normalized to mean 1) with weight
+  //   w plus a random part 1 - w. The real films' texture is not public;
+  //   what is known is their Hill in-plane modulus, 194.7 GPa (paper
+  //   Table I). We choose w by bisection so that the Hill in-plane modulus
+  //   of this ODF for the nickel constants is 194.7 GPa.
+  //
+  // The Hill modulus of an ODF is computed from the cell centres weighted
+  // with the cells' volume fractions.
+  double
+  fibre_density(const double, const double Phi, const double phi2)
+  {
+    const double n[3] = {std::sin(phi2) * std::sin(Phi),
+                         std::cos(phi2) * std::sin(Phi),
+                         std::cos(Phi)};
+    const double c = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+    const double theta = std::acos(std::min(1., c));
+    const double sigma = 10. * M_PI / 180.;
+    return std::exp(-0.5 * theta * theta / (sigma * sigma));
+  }
+
+
+
+  StiffnessBounds
+  odf_bounds(const OrientationDistribution &odf,
+             const SymmetricTensor<4, 3>   &C_crystal)
+  {
+    std::vector<Tensor<2, 3>> g;
+    std::vector<double>       w;
+    for (unsigned int i = 0; i < OrientationDistribution::n_cells; ++i)
+      if (odf.cell_fractions()[i] > 0)
+        {
+          g.push_back(OrientationDistribution::cell_orientation(i));
+          w.push_back(odf.cell_fractions()[i]);
+        }
+    return StiffnessBounds(C_crystal, g, w);
+  }
+
+
+
+  void
+  make_odfs(const std::string &directory)
+  {
+    std::filesystem::create_directories(directory);
+    const auto C = Rotation::cubic_stiffness(249., 155., 114.);
+
+    const OrientationDistribution uniform(
+      [](double, double, double) { return 1.; });
+    uniform.write(directory + "/uniform.txt",
+                  "uniform (random) texture, f = 1");
+
+    const OrientationDistribution fibre(fibre_density);
+    fibre.write(directory + "/fibre_001.txt",
+                "<001> fibre along the film normal z: f = exp(-theta^2 / (2 "
+                "(10 deg)^2)), theta = angle between z and the nearest "
+                "crystal <001>");
+
+    // The mean of the fibre density over Euler space (dg-weighted), to
+    // mix it with the uniform part in volume fractions.
+    double fibre_mean = 0;
+    {
+      const auto &m = OrientationDistribution::cell_measures();
+      for (unsigned int i = 0; i < OrientationDistribution::n_cells; ++i)
+        {
+          const auto a = OrientationDistribution::cell_centre(i);
+          fibre_mean += m[i] * fibre_density(a[0], a[1], a[2]);
+        }
+    }
+    auto mixed = [fibre_mean](const double w) {
+      return OrientationDistribution(
+        [w, fibre_mean](double a, double b, double c) {
+          return w * fibre_density(a, b, c) / fibre_mean + (1. - w);
+        });
+    };
+    const double target = 194.7;
+    double       lo = 0., hi = 1.;
+    for (unsigned int it = 0; it < 50; ++it)
+      {
+        const double w = 0.5 * (lo + hi);
+        const double E_hill =
+          StiffnessBounds::in_plane(odf_bounds(mixed(w), C).hill()).E_in_plane;
+        (E_hill > target ? lo : hi) = w;
+      }
+    const double       w = 0.5 * (lo + hi);
+    std::ostringstream comment;
+    comment << std::setprecision(6)
+            << "electrodeposited-Ni-like texture: fibre_001 with volume "
+               "fraction w = "
+            << w
+            << " plus a random part 1 - w; w makes the Hill in-plane "
+               "modulus 194.7 GPa (C11, C12, C44 = 249, 155, 114 GPa)";
+    mixed(w).write(directory + "/electrodeposited_ni.txt", comment.str());
+    std::cout << "Wrote uniform.txt, fibre_001.txt and electrodeposited_ni.txt "
+                 "(fibre fraction w = "
+              << w << ") to " << directory << std::endl;
+  }
+
+
+
+  // @sect3{One sample: grains, texture and the virtual tests}
+  //
+  // A realization is one sample: its Voronoi grains, the orientation of
+  // every grain and, for each requested kind of boundary condition, the
+  // 6x6 stiffness from the six virtual tests. All ranks compute the grains
+  // and the texture redundantly from the same seeds, so all agree on them
+  // without communication.
+  struct SampleResult
+  {
+    unsigned int                                       grain_seed;
+    unsigned int                                       texture_seed;
+    std::vector<double>                                grain_areas;
+    TextureSampler::Result                             texture;
+    std::unique_ptr<StiffnessBounds>                   bounds;
+    std::vector<std::string>                           bc_names;
+    std::vector<Matrix6>                               C;
+    std::vector<Matrix6>                               C_reaction;
+    std::vector<Matrix6>                               C_mean_strain;
+    std::vector<std::array<std::array<bool, 6>, 6>>    reaction_mask;
+    std::vector<std::vector<VirtualTests::TestReport>> reports;
+    std::vector<double>                                wall_time;
+    unsigned long                                      n_points = 0;
+    unsigned long                                      n_cells  = 0;
+  };
+
+
+
+  SampleResult
+  run_sample(const Parameters               &par,
+             const NewtonParameters         &solver,
+             const OrientationDistribution  &odf,
+             const SymmetricTensor<4, 3>    &C_crystal,
+             const double                    C11,
+             const double                    C12,
+             const double                    C44,
+             const unsigned int              realization,
+             const std::vector<std::string> &bcs,
+             ConditionalOStream             &pcout)
+  {
+    SampleResult result;
+    result.grain_seed   = par.grain_seed + realization;
+    result.texture_seed = par.texture_seed + realization;
+
+    // The grains: planar Voronoi cells in the film plane (x, y), columns
+    // through z. Their areas are counted on the in-plane lattice of the
+    // material points, so that the grain volumes are exactly those the
+    // points represent.
+    const double          L = par.side_length;
+    const ColumnarVoronoi grains(par.n_grains,
+                                 {{0., 0.}},
+                                 {{L, L}},
+                                 result.grain_seed,
+                                 par.periodic_grains);
+    const unsigned int    n_lattice =
+      par.cells_in_plane * par.points_per_direction;
+    result.grain_areas = grains.areas(n_lattice, n_lattice);
+    const unsigned int n_empty =
+      std::count(result.grain_areas.begin(), result.grain_areas.end(), 0.);
+    AssertThrow(n_empty == 0,
+                ExcMessage(std::to_string(n_empty) +
+                           " grains hold no material point: refine the grid "
+                           "(Cells in plane, Points per cell per direction) "
+                           "or use fewer grains."));
+
+    // The texture: N_u elementary volumes sampled from the ODF, grouped
+    // into grains largest first (Melchior and Delannay).
+    const TextureSampler sampler(par.n_elementary_volumes,
+                                 par.threshold_degrees * M_PI / 180.);
+    result.texture =
+      sampler.assign(odf, result.grain_areas, result.texture_seed);
+    result.bounds =
+      std::make_unique<StiffnessBounds>(C_crystal,
+                                        result.texture.orientations,
+                                        result.grain_areas);
+
+    // The virtual tests. Each test builds its own problem and model; the
+    // model asks for the orientation of each new point, which is that of
+    // its grain.
+    const auto &orientations = result.texture.orientations;
+    for (const std::string &bc : bcs)
+      {
+        VirtualTests::Parameters vt;
+        vt.boundary_type        = VirtualTests::parse_boundary_type(bc);
+        vt.side_length          = L;
+        vt.subdivisions         = {{par.cells_in_plane,
+                                    par.cells_in_plane,
+                                    par.cells_through_thickness}};
+        vt.points_per_direction = par.points_per_direction;
+        vt.strain               = par.strain;
+        vt.n_load_steps         = par.n_load_steps;
+        vt.solver               = solver;
+        vt.output_directory     = par.output_directory + "/tests_" + bc + "_r" +
+                              std::to_string(realization);
+        VirtualTests tests(vt, MPI_COMM_WORLD);
+        Timer        timer(MPI_COMM_WORLD, true);
+        tests.run(
+          [&]() {
+            auto model = std::make_unique<CubicElastic<3>>(C11, C12, C44);
+            model->set_orientation(
+              [&](const Point<3> &x) { return orientations[grains.grain(x)]; });
+            return std::unique_ptr<ConstitutiveModel<3>>(std::move(model));
+          },
+          [&](const Point<3> &x) { return grains.grain(x); });
+        timer.stop();
+        static const char *const names[6] = {
+          "11", "22", "33", "23", "13", "12"};
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            const auto &r = tests.reports()[k];
+            pcout << "    " << bc << " test " << names[k] << ": Newton "
+                  << r.newton_iterations << ", GMRES " << r.gmres_iterations
+                  << ", " << std::fixed << std::setprecision(1) << r.wall_time
+                  << " s" << std::defaultfloat << std::endl;
+          }
+        result.bc_names.push_back(bc);
+        result.C.push_back(tests.stiffness());
+        result.C_reaction.push_back(tests.stiffness_from_reactions());
+        result.C_mean_strain.push_back(tests.stiffness_from_mean_strains());
+        result.reaction_mask.push_back(tests.reaction_mask());
+        result.reports.push_back(tests.reports());
+        result.wall_time.push_back(timer.wall_time());
+        result.n_points = tests.n_points();
+        result.n_cells  = tests.n_cells();
+      }
+    return result;
+  }
+
+
+
+  // @sect3{Output}
+  //
+  // Matrices are written as plain CSV, six rows of six values in GPa,
+  // Voigt order 11, 22, 33, 23, 13, 12 with engineering shear strains (the
+  // paper's eq. 4.3).
+  void
+  write_matrix(const std::string &filename, const Matrix6 &C)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Cannot write <" + filename + ">."));
+    out << std::fixed << std::setprecision(4);
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int b = 0; b < 6; ++b)
+        out << C[a][b] << (b < 5 ? "," : "\n");
+  }
+
+
+
+  std::string
+  format_matrix(const Matrix6 &C, const std::string &indent)
+  {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2);
+    for (unsigned int a = 0; a < 6; ++a)
+      {
+        s << indent;
+        for (unsigned int b = 0; b < 6; ++b)
+          s << std::setw(9) << C[a][b];
+        s << '\n';
+      }
+    return s.str();
+  }
+
+
+
+  // The largest difference between the stiffness from the reactions and
+  // from the volume average (both over the nominal strain), over the
+  // entries the reactions measure in the first n_columns tests, relative to
+  // the norm of C.
+  double
+  reaction_difference(const Matrix6                            &C,
+                      const Matrix6                            &C_reaction,
+                      const std::array<std::array<bool, 6>, 6> &mask,
+                      const unsigned int                        n_columns)
+  {
+    double norm = 0, max_diff = 0;
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int b = 0; b < 6; ++b)
+        {
+          norm += C[a][b] * C[a][b];
+          if (mask[a][b] && b < n_columns)
+            max_diff = std::max(max_diff, std::abs(C[a][b] - C_reaction[a][b]));
+        }
+    return max_diff / std::sqrt(norm);
+  }
+
+
+
+  // @sect3{The main routine}
+  //
+  // Read the parameters and the ODF, run the first realization with every
+  // requested kind of boundary condition and write its results, then run
+  // the other realizations (with the first kind only) and write their
+  // statistics.
+  void
+  run(const std::string &parameter_file)
+  {
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    ConstitutiveModelFactory<3>::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    prm.parse_input(parameter_file);
+
+    Parameters par;
+    par.parse_parameters(
+      prm, std::filesystem::path(parameter_file).parent_path().string());
+    NewtonParameters solver;
+    solver.parse_parameters(prm);
+
+    prm.enter_subsection("Material");
+    AssertThrow(prm.get("Model") == "cubic elastic",
+                ExcMessage("The polycrystal needs the cubic crystal model: "
+                           "set Material/Model = cubic elastic."));
+    prm.enter_subsection("cubic elastic");
+    const double C11 = prm.get_double("C11");
+    const double C12 = prm.get_double("C12");
+    const double C44 = prm.get_double("C44");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    const SymmetricTensor<4, 3> C_crystal =
+      Rotation::cubic_stiffness(C11, C12, C44);
+    // Constructing the model once checks the constants.
+    CubicElastic<3>(C11, C12, C44);
+
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    ConditionalOStream            pcout(std::cout, root);
+    const OrientationDistribution odf(par.odf_file);
+    if (root)
+      std::filesystem::create_directories(par.output_directory);
+
+    pcout << "Polycrystal: " << par.n_grains << " columnar grains, grid "
+          << par.cells_in_plane << "x" << par.cells_in_plane << "x"
+          << par.cells_through_thickness << ", " << par.points_per_direction
+          << "^3 points per cell, ODF " << par.odf_file << ", "
+          << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)"
+          << std::endl;
+
+    Timer total_timer(MPI_COMM_WORLD, true);
+
+    // The first realization, with every kind of boundary condition.
+    pcout << "  realization 0 (grain seed " << par.grain_seed
+          << ", texture seed " << par.texture_seed << ")" << std::endl;
+    const SampleResult first = run_sample(par,
+                                          solver,
+                                          odf,
+                                          C_crystal,
+                                          C11,
+                                          C12,
+                                          C44,
+                                          0,
+                                          par.boundary_conditions,
+                                          pcout);
+
+    const auto E_V = StiffnessBounds::in_plane(first.bounds->voigt());
+    const auto E_R = StiffnessBounds::in_plane(first.bounds->reuss());
+    const auto E_H = StiffnessBounds::in_plane(first.bounds->hill());
+    const auto ODF_H =
+      StiffnessBounds::in_plane(odf_bounds(odf, C_crystal).hill());
+    // The effective stiffness relates the mean stress to the mean strain
+    // (paper eq. 4.3). For affine conditions the mean strain is the nominal
+    // one; under the paper's mixed conditions the sample may rotate in the
+    // shear tests (the confined faces slide), so we divide by the mean
+    // strain of the points, not by the nominal strain. Both other variants
+    // are written too.
+    const Matrix6 &C  = first.C_mean_strain[0];
+    const auto     E  = StiffnessBounds::in_plane(C);
+    const auto     En = StiffnessBounds::in_plane(first.C[0]);
+    const auto     Er = StiffnessBounds::in_plane(first.C_reaction[0]);
+
+    std::ostringstream summary;
+    summary << std::setprecision(6);
+    summary << "# polycrystal: effective stiffness of a columnar Ni "
+               "polycrystal (paper Section 4)\n"
+            << "# moduli in GPa; C in effective_stiffness.csv (Voigt order "
+               "11, 22, 33, 23, 13, 12)\n"
+            << "boundary_conditions = " << first.bc_names[0] << '\n'
+            << "n_grains = " << par.n_grains << '\n'
+            << "n_points = " << first.n_points << '\n'
+            << "n_cells = " << first.n_cells << '\n'
+            << "grid = " << par.cells_in_plane << "x" << par.cells_in_plane
+            << "x" << par.cells_through_thickness << '\n'
+            << "points_per_cell_per_direction = " << par.points_per_direction
+            << '\n'
+            << "points_per_grain = "
+            << static_cast<double>(first.n_points) / par.n_grains << '\n'
+            << "odf_file = " << par.odf_file << '\n'
+            << "grain_seed = " << first.grain_seed << '\n'
+            << "texture_seed = " << first.texture_seed << '\n'
+            << "E_in_plane_GPa = " << E.E_in_plane << '\n'
+            << "E_x_GPa = " << E.E_x << '\n'
+            << "E_y_GPa = " << E.E_y << '\n'
+            << "E_in_plane_from_reactions_GPa = " << Er.E_in_plane << '\n'
+            << "E_in_plane_nominal_strain_GPa = " << En.E_in_plane << '\n'
+            << "E_voigt_GPa = " << E_V.E_in_plane << '\n'
+            << "E_reuss_GPa = " << E_R.E_in_plane << '\n'
+            << "E_hill_GPa = " << E_H.E_in_plane << '\n'
+            << "E_voigt_x_GPa = " << E_V.E_x << '\n'
+            << "E_voigt_y_GPa = " << E_V.E_y << '\n'
+            << "E_reuss_x_GPa = " << E_R.E_x << '\n'
+            << "E_reuss_y_GPa = " << E_R.E_y << '\n'
+            << "E_hill_odf_GPa = " << ODF_H.E_in_plane << '\n'
+            << "misfit_percent = " << 100. * first.texture.misfit_sampled
+            << '\n'
+            << "misfit_method = histogram of the N_u sampled orientations on "
+               "the 5 degree cells (piecewise constant), paper formula\n"
+            << "misfit_grains_percent = " << 100. * first.texture.misfit_grains
+            << '\n'
+            << "elementary_volumes = " << par.n_elementary_volumes << '\n'
+            << "disorientation_threshold_degrees = " << par.threshold_degrees
+            << '\n'
+            << "fallback_grains = " << first.texture.n_fallback << '\n'
+            << "fallback_max_disorientation_degrees = "
+            << first.texture.max_fallback_angle * 180. / M_PI << '\n'
+            << "C_asymmetry_relative = " << VirtualTests::relative_asymmetry(C)
+            << '\n'
+            << "reaction_vs_volume_difference_normal_tests_relative = "
+            << reaction_difference(first.C[0],
+                                   first.C_reaction[0],
+                                   first.reaction_mask[0],
+                                   3)
+            << '\n'
+            << "reaction_vs_volume_difference_all_tests_relative = "
+            << reaction_difference(first.C[0],
+                                   first.C_reaction[0],
+                                   first.reaction_mask[0],
+                                   6)
+            << '\n';
+    for (unsigned int b = 0; b < first.bc_names.size(); ++b)
+      {
+        const auto Eb     = StiffnessBounds::in_plane(first.C_mean_strain[b]);
+        unsigned   newton = 0, gmres = 0;
+        for (const auto &r : first.reports[b])
+          {
+            newton += r.newton_iterations;
+            gmres += r.gmres_iterations;
+          }
+        summary << "E_in_plane_" << first.bc_names[b]
+                << "_GPa = " << Eb.E_in_plane << '\n'
+                << "E_x_" << first.bc_names[b] << "_GPa = " << Eb.E_x << '\n'
+                << "E_y_" << first.bc_names[b] << "_GPa = " << Eb.E_y << '\n'
+                << "wall_time_" << first.bc_names[b]
+                << "_s = " << first.wall_time[b] << '\n'
+                << "newton_iterations_" << first.bc_names[b] << " = " << newton
+                << '\n'
+                << "gmres_iterations_" << first.bc_names[b] << " = " << gmres
+                << '\n';
+      }
+
+    if (root)
+      {
+        const std::string dir = par.output_directory + "/";
+        write_matrix(dir + "effective_stiffness.csv", C);
+        write_matrix(dir + "effective_stiffness_symmetric.csv",
+                     VirtualTests::symmetric_part(C));
+        write_matrix(dir + "effective_stiffness_reactions.csv",
+                     first.C_reaction[0]);
+        write_matrix(dir + "effective_stiffness_nominal_strain.csv",
+                     first.C[0]);
+        write_matrix(dir + "voigt_stiffness.csv", first.bounds->voigt());
+        write_matrix(dir + "reuss_stiffness.csv", first.bounds->reuss());
+        for (unsigned int b = 1; b < first.bc_names.size(); ++b)
+          write_matrix(dir + "effective_stiffness_" + first.bc_names[b] +
+                         ".csv",
+                       first.C_mean_strain[b]);
+
+        // The grains and their orientations.
+        std::ofstream grains_out(dir + "grains.csv");
+        grains_out << "grain,area,elementary_volumes,phi1_deg,Phi_deg,"
+                      "phi2_deg\n"
+                   << std::setprecision(8);
+        for (unsigned int g = 0; g < par.n_grains; ++g)
+          {
+            const auto a = Rotation::to_bunge(first.texture.orientations[g]);
+            grains_out << g << ',' << first.grain_areas[g] << ','
+                       << first.texture.n_elementary[g] << ','
+                       << a[0] * 180. / M_PI << ',' << a[1] * 180. / M_PI << ','
+                       << a[2] * 180. / M_PI << '\n';
+          }
+
+        // A grain map of the in-plane point lattice (x, y, grain) for
+        // gnuplot, like the paper's Fig. 5.
+        const ColumnarVoronoi grains(par.n_grains,
+                                     {{0., 0.}},
+                                     {{par.side_length, par.side_length}},
+                                     first.grain_seed,
+                                     par.periodic_grains);
+        std::ofstream         map(dir + "grain_map.dat");
+        const unsigned int    n = par.cells_in_plane * par.points_per_direction;
+        const double          h = par.side_length / n;
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              map << (i + 0.5) * h << ' ' << (j + 0.5) * h << ' '
+                  << grains.grain((i + 0.5) * h, (j + 0.5) * h) << '\n';
+            map << '\n';
+          }
+      }
+
+    pcout << "\n  effective stiffness C (GPa, " << first.bc_names[0]
+          << " boundary conditions, mean stress over mean strain of the "
+             "points):\n"
+          << format_matrix(C, "    ")
+          << "  paper's method: reaction forces over the nominal strain "
+             "(entries no face measures are 0):\n"
+          << format_matrix(first.C_reaction[0], "    ")
+          << "  volume-averaged point stress over the nominal strain:\n"
+          << format_matrix(first.C[0], "    ") << std::setprecision(5)
+          << "  E_x = " << E.E_x << ", E_y = " << E.E_y
+          << ", E_in-plane = " << E.E_in_plane << " GPa (paper's method "
+          << Er.E_in_plane << ", nominal strain " << En.E_in_plane << ")\n"
+          << "  bounds of the assigned orientations: Reuss " << E_R.E_in_plane
+          << ", Hill " << E_H.E_in_plane << ", Voigt " << E_V.E_in_plane
+          << " GPa (Hill of the ODF " << ODF_H.E_in_plane << ")\n"
+          << "  misfit " << 100. * first.texture.misfit_sampled
+          << " % (N_u sampled orientations), fallback grains "
+          << first.texture.n_fallback << std::endl;
+    for (unsigned int b = 1; b < first.bc_names.size(); ++b)
+      pcout << "  " << first.bc_names[b]
+            << " boundary conditions: E_in-plane = "
+            << StiffnessBounds::in_plane(first.C_mean_strain[b]).E_in_plane
+            << " GPa\n"
+            << format_matrix(first.C_mean_strain[b], "    ");
+
+    // @sect4{Realizations}
+    //
+    // Further samples differ in both seeds. Their in-plane moduli give the
+    // distribution the paper names as its next step.
+    std::vector<std::array<double, 6>> rows;
+    auto record = [&](const SampleResult &s, const unsigned int r) {
+      const auto e = StiffnessBounds::in_plane(s.C_mean_strain[0]);
+      rows.push_back({{static_cast<double>(r),
+                       e.E_x,
+                       e.E_y,
+                       e.E_in_plane,
+                       StiffnessBounds::in_plane(s.bounds->hill()).E_in_plane,
+                       100. * s.texture.misfit_sampled}});
+    };
+    record(first, 0);
+    for (unsigned int r = 1; r < par.n_realizations; ++r)
+      {
+        pcout << "  realization " << r << std::endl;
+        const SampleResult s = run_sample(par,
+                                          solver,
+                                          odf,
+                                          C_crystal,
+                                          C11,
+                                          C12,
+                                          C44,
+                                          r,
+                                          {par.boundary_conditions[0]},
+                                          pcout);
+        record(s, r);
+        pcout << "    E_in-plane = " << rows.back()[3] << " GPa" << std::endl;
+      }
+    double mean = 0, var = 0;
+    for (const auto &row : rows)
+      mean += row[3] / rows.size();
+    for (const auto &row : rows)
+      var += (row[3] - mean) * (row[3] - mean);
+    const double stddev =
+      rows.size() > 1 ? std::sqrt(var / (rows.size() - 1)) : 0.;
+    summary << "n_realizations = " << rows.size() << '\n'
+            << "E_in_plane_mean_GPa = " << mean << '\n'
+            << "E_in_plane_std_GPa = " << stddev << '\n';
+    total_timer.stop();
+    summary << "wall_time_total_s = " << total_timer.wall_time() << '\n'
+            << "mpi_ranks = " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+            << '\n';
+    if (root)
+      {
+        std::ofstream out(par.output_directory + "/realizations.csv");
+        out << "realization,E_x_GPa,E_y_GPa,E_in_plane_GPa,E_hill_GPa,"
+               "misfit_percent\n"
+            << std::setprecision(8);
+        for (const auto &row : rows)
+          for (unsigned int c = 0; c < 6; ++c)
+            out << row[c] << (c < 5 ? "," : "\n");
+        std::ofstream(par.output_directory + "/summary.txt") << summary.str();
+      }
+    pcout << "  realizations: " << rows.size() << ", E_in-plane mean " << mean
+          << " GPa, standard deviation " << stddev << " GPa\n"
+          << "  wall time " << total_timer.wall_time() << " s; results in "
+          << par.output_directory << "/" << std::endl;
+  }
+} // namespace Polycrystal
+
+
+
+// @sect3{The main function}
+//
+// As in the deal.II tutorials: MPI, the parameter file, and any exception
+// turned into a message naming the cause and a non-zero exit code.
+int
+main(int argc, char *argv[])
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      if (argc > 1 && std::string(argv[1]) == "--make-odfs")
+        {
+          AssertThrow(argc > 2,
+                      dealii::ExcMessage("--make-odfs needs a directory."));
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            Polycrystal::make_odfs(argv[2]);
+          return 0;
+        }
+      const std::string parameter_file =
+        argc > 1 ?
+          std::string(argv[1]) :
+          (std::filesystem::path(argv[0]).parent_path() / "polycrystal.prm")
+            .string();
+      AssertThrow(std::filesystem::exists(parameter_file),
+                  dealii::ExcMessage("Cannot find the parameter file <" +
+                                     parameter_file + ">."));
+      Polycrystal::run(parameter_file);
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "\n----------------------------------------------------\n"
+                << "polycrystal stopped: " << exc.what() << std::endl
+                << "----------------------------------------------------"
+                << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "polycrystal stopped: unknown exception" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,153 @@
+#ifndef qsmpm_homogenization_virtual_tests_h
+#define qsmpm_homogenization_virtual_tests_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <functional>
+#include <memory>
+#include <mpi.h>
+#include <qsmpm/homogenization/stiffness_bounds.h>
+#include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/solvers/newton_parameters.h>
+#include <string>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The six virtual tests of paper Section 4.4 (Fig. 6) on a box of
+   * material, in 3D, that give the full effective stiffness C of eq. (4.3)
+   * column by column without assuming any symmetry.
+   *
+   * Test k (Voigt order 11, 22, 33, 23, 13, 12) prescribes the macroscopic
+   * strain eps_k = "Strain" (0.004 in the paper: faces displaced by 0.002 L
+   * each, equal and opposite) in "Load steps" steps. Boundary conditions:
+   *
+   * - mixed (the paper's): tests 11, 22, 33 load the faces normal to x_k
+   *   with u = +-(strain L / 2) e_k (all components prescribed), tests ij
+   *   (23, 13, 12) the faces normal to x_j with u = +-(strain L / 2) e_i
+   *   (simple shear, gamma_ij = strain); the four other faces are confined:
+   *   zero normal displacement, free to slide. The loaded faces' conditions
+   *   are added first, so at shared edges they win.
+   * - affine (kinematic uniform): u = E (x - x_centre) on all six faces,
+   *   E the macroscopic strain tensor of the test.
+   *
+   * Results: the effective stress of every test twice, from the reaction
+   * forces (paper: the force on each face, averaged over the pair of
+   * opposite faces, per unit area; a shear component only where the face's
+   * tangential component is prescribed, the average of both faces' estimates
+   * where both are) and as the volume average of the point stresses,
+   * sum_p Omega_p sigma_p / sum_p Omega_p; column k of C is the stress
+   * divided by the strain. The volume average is the complete one and gives
+   * the main result.
+   */
+  class VirtualTests
+  {
+  public:
+    using Matrix6 = StiffnessBounds::Matrix6;
+
+    enum class BoundaryType
+    {
+      mixed,
+      affine
+    };
+
+    struct Parameters
+    {
+      BoundaryType                boundary_type        = BoundaryType::mixed;
+      double                      side_length          = 1.;
+      std::array<unsigned int, 3> subdivisions         = {{16, 16, 4}};
+      unsigned int                points_per_direction = 2;
+      double                      strain               = 0.004;
+      unsigned int                n_load_steps         = 2;
+      NewtonParameters            solver;
+      /// Where each test writes its reactions.csv (subdirectory test_k).
+      std::string output_directory = "output";
+      /// Tests to run (Voigt indices); default all six.
+      std::vector<unsigned int> tests = {0, 1, 2, 3, 4, 5};
+    };
+
+    /// Result of one test.
+    struct TestReport
+    {
+      std::array<double, 6> stress_volume{};
+      std::array<double, 6> stress_reaction{};
+      /// Whether stress_reaction[a] was measured by some face.
+      std::array<bool, 6> reaction_measured{};
+      /// Volume average of the point strains (Voigt, engineering shear).
+      std::array<double, 6> mean_strain{};
+      unsigned int          newton_iterations = 0;
+      unsigned int          gmres_iterations  = 0;
+      double                wall_time         = 0;
+    };
+
+    /// Creates a fresh constitutive model for each test.
+    using ModelFactory = std::function<std::unique_ptr<ConstitutiveModel<3>>()>;
+    /// Optional: the material id (e.g. grain) of a point at x.
+    using MaterialId = std::function<unsigned int(const Point<3> &)>;
+
+    VirtualTests(const Parameters &parameters, const MPI_Comm communicator);
+
+    /// Run the tests; every rank returns the same results.
+    void
+    run(const ModelFactory &make_model, const MaterialId &material_id = {});
+
+    /// C from the volume averages (columns of tests not run are zero).
+    const Matrix6 &
+    stiffness() const;
+
+    /// C from the reaction forces; unmeasured entries are zero.
+    const Matrix6 &
+    stiffness_from_reactions() const;
+
+    /**
+     * C = Sigma E^-1 from the volume-averaged stresses (columns of Sigma)
+     * and the volume-averaged point strains (columns of E) of the six tests:
+     * the stiffness that relates the mean stress to the strain the sample
+     * actually has on average, which differs from the nominal strain where
+     * the boundary conditions let the sample rotate or bend. Needs all six
+     * tests.
+     */
+    Matrix6
+    stiffness_from_mean_strains() const;
+
+    /// Whether an entry of stiffness_from_reactions() was measured.
+    const std::array<std::array<bool, 6>, 6> &
+    reaction_mask() const;
+
+    const std::vector<TestReport> &
+    reports() const;
+
+    /// Number of material points and grid cells of each test.
+    unsigned long
+    n_points() const;
+    unsigned long
+    n_cells() const;
+
+    /// "mixed" or "affine" -> BoundaryType; throws otherwise.
+    static BoundaryType
+    parse_boundary_type(const std::string &name);
+    static std::string
+    name(const BoundaryType type);
+
+    /// Symmetric part (C + C^T) / 2 of a 6x6 matrix.
+    static Matrix6
+    symmetric_part(const Matrix6 &C);
+
+    /// Frobenius norm of the skew part over the norm of C.
+    static double
+    relative_asymmetry(const Matrix6 &C);
+
+  private:
+    Parameters                         prm;
+    MPI_Comm                           communicator;
+    Matrix6                            C_volume{};
+    Matrix6                            C_reaction{};
+    std::array<std::array<bool, 6>, 6> mask{};
+    std::vector<TestReport>            test_reports;
+    unsigned long                      points = 0, cells = 0;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,215 @@
+#include <cmath>
+#include <qsmpm/base/rotation.h>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/materials/cubic_elastic.h>
+
+namespace qsmpm
+{
+  namespace
+  {
+    // The tensor index pair of an unrolled symmetric-tensor component.
+    template <int dim>
+    TableIndices<2>
+    unrolled_pair(const unsigned int a)
+    {
+      return SymmetricTensor<2, dim>::unrolled_to_component_indices(a);
+    }
+
+    // Position of M_ab (a <= b) in the packed upper triangle.
+    template <int dim>
+    constexpr unsigned int
+    packed(const unsigned int a, const unsigned int b)
+    {
+      constexpr unsigned int n =
+        SymmetricTensor<2, dim>::n_independent_components;
+      return a * n - a * (a - 1) / 2 + (b - a);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  CubicElastic<dim>::CubicElastic(const double                 C11,
+                                  const double                 C12,
+                                  const double                 C44,
+                                  const std::array<double, 3> &euler_angles)
+    : C_crystal(Rotation::cubic_stiffness(C11, C12, C44))
+    , default_orientation(
+        Rotation::from_bunge(euler_angles[0], euler_angles[1], euler_angles[2]))
+  {
+    // Positive definiteness of a cubic stiffness.
+    AssertThrow(C11 - C12 > 0 && C11 + 2. * C12 > 0 && C44 > 0,
+                ExcMessage("cubic elastic: the stiffness must be positive "
+                           "definite: C11 - C12 > 0, C11 + 2 C12 > 0 and "
+                           "C44 > 0."));
+  }
+
+
+
+  template <int dim>
+  CubicElastic<dim>::CubicElastic(ParameterHandler &prm)
+    : CubicElastic(prm.get_double("C11"),
+                   prm.get_double("C12"),
+                   prm.get_double("C44"),
+                   [&prm] {
+                     const auto angles =
+                       Utils::split(prm.get("Euler angles"), ',');
+                     AssertThrow(angles.size() == 3,
+                                 ExcMessage("cubic elastic: <Euler angles> "
+                                            "needs three values, phi1, Phi, "
+                                            "phi2 (degrees)."));
+                     std::array<double, 3> a;
+                     for (unsigned int i = 0; i < 3; ++i)
+                       a[i] = dealii::Utilities::string_to_double(angles[i]) *
+                              M_PI / 180.;
+                     return a;
+                   }())
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("C11",
+                      "249",
+                      Patterns::Double(0.),
+                      "Cubic constant C11 in the crystal frame (default: "
+                      "nickel, GPa; paper Section 4).");
+    prm.declare_entry("C12", "155", Patterns::Double(), "Cubic constant C12.");
+    prm.declare_entry("C44",
+                      "114",
+                      Patterns::Double(0.),
+                      "Cubic constant C44.");
+    prm.declare_entry("Euler angles",
+                      "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 3, 3),
+                      "Bunge angles phi1, Phi, phi2 in degrees of the "
+                      "orientation of all points (programs such as the "
+                      "polycrystal example set one per grain instead).");
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::set_orientation(const OrientationFunction &function)
+  {
+    orientation = function;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  CubicElastic<dim>::state_fields() const
+  {
+    return {{"rotated_stiffness", n_entries}};
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  CubicElastic<dim>::sample_stiffness(const Tensor<2, 3> &g) const
+  {
+    const SymmetricTensor<4, 3> C = Rotation::rotate_to_sample(C_crystal, g);
+    SymmetricTensor<4, dim>     result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = k; l < dim; ++l)
+            result[i][j][k][l] = C[i][j][k][l];
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::initialize_state(const Point<dim> &x,
+                                      ArrayView<double> state) const
+  {
+    const SymmetricTensor<4, dim> C =
+      sample_stiffness(orientation ? orientation(x) : default_orientation);
+    constexpr unsigned int n =
+      SymmetricTensor<2, dim>::n_independent_components;
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = a; b < n; ++b)
+        {
+          const auto ij            = unrolled_pair<dim>(a);
+          const auto kl            = unrolled_pair<dim>(b);
+          state[packed<dim>(a, b)] = C[ij[0]][ij[1]][kl[0]][kl[1]];
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::update_stress(const PointState<dim>         &old,
+                                   const SymmetricTensor<2, dim> &d_eps,
+                                   SymmetricTensor<2, dim>       &stress,
+                                   ArrayView<double> new_state) const
+  {
+    // sigma_a += sum_b M_ab d_eps_b, off-diagonal strain components counted
+    // twice (eps_xy and eps_yx).
+    constexpr unsigned int n =
+      SymmetricTensor<2, dim>::n_independent_components;
+    const double *M = old.state.data();
+    double        e[n];
+    for (unsigned int b = 0; b < n; ++b)
+      e[b] = d_eps.access_raw_entry(b) * (b < dim ? 1. : 2.);
+    stress = old.stress;
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        double s = 0;
+        for (unsigned int b = 0; b < n; ++b)
+          s += M[a <= b ? packed<dim>(a, b) : packed<dim>(b, a)] * e[b];
+        stress.access_raw_entry(a) += s;
+      }
+    std::copy(M, M + n_entries, new_state.data());
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  CubicElastic<dim>::tangent(const PointState<dim> &old) const
+  {
+    constexpr unsigned int n =
+      SymmetricTensor<2, dim>::n_independent_components;
+    SymmetricTensor<4, dim> C;
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = 0; b < n; ++b)
+        {
+          const auto ij = unrolled_pair<dim>(a);
+          const auto kl = unrolled_pair<dim>(b);
+          C[ij[0]][ij[1]][kl[0]][kl[1]] =
+            old.state[a <= b ? packed<dim>(a, b) : packed<dim>(b, a)];
+        }
+    return C;
+  }
+
+
+
+  template <int dim>
+  const SymmetricTensor<4, 3> &
+  CubicElastic<dim>::crystal_stiffness() const
+  {
+    return C_crystal;
+  }
+
+
+
+  template class CubicElastic<2>;
+  template class CubicElastic<3>;
+
+  QSMPM_REGISTER_CONSTITUTIVE_MODEL(CubicElastic,
+                                    "cubic elastic",
+                                    "linear elasticity of a cubic crystal "
+                                    "(C11, C12, C44) in a per-point Bunge "
+                                    "orientation; plane strain in 2D.")
+} // namespace qsmpm
