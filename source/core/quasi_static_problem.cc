@@ -265,17 +265,24 @@ namespace qsmpm
              << newton.initial_residual << " -> " << newton.final_residual
              << std::defaultfloat << "  " << std::fixed << std::setprecision(3)
              << wall_timer.wall_time() << " s";
+        if (cut_backs > 0)
+          line << "  cut-backs " << cut_backs;
+        if (newton.line_search_steps > 0)
+          line << "  line search " << newton.line_search_steps;
         progress << line.str() << std::endl;
+        const bool stop = step_callback && !step_callback(reports.back());
 
         TimerOutput::Scope scope(timer_output, "output");
         if (!names.empty())
           writer.write_reactions(stepper.step(), t_new, names, last_reactions);
         if (writer.fields_due(stepper.step()) ||
-            (stepper.finished() && prm_values.output.interval > 0))
+            ((stepper.finished() || stop) && prm_values.output.interval > 0))
           {
             writer.write_points(points(), stepper.step(), t_new);
             writer.write_increment(background_grid, du, stepper.step(), t_new);
           }
+        if (stop)
+          break;
       }
     if (progress.is_active())
       timer_output.print_summary();
@@ -288,6 +295,16 @@ namespace qsmpm
   QuasiStaticProblem<dim>::step_reports() const
   {
     return reports;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::set_step_callback(
+    const std::function<bool(const StepReport &)> &callback)
+  {
+    step_callback = callback;
   }
 
 

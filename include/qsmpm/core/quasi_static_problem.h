@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <memory>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
@@ -119,6 +120,15 @@ namespace qsmpm
     const std::vector<StepReport> &
     step_reports() const;
 
+    /**
+     * A function that run() calls after every accepted step (before that
+     * step's output) with the step's report. If it returns false, run()
+     * writes the fields of that step (if output is enabled) and stops, e.g.
+     * once the load has fallen below a fraction of its peak.
+     */
+    void
+    set_step_callback(const std::function<bool(const StepReport &)> &callback);
+
     /// Reaction forces of the last accepted step, per displacement condition.
     const std::vector<Tensor<1, dim>> &
     reactions() const;
@@ -176,6 +186,7 @@ namespace qsmpm
     VectorType                                f_ext;
     std::vector<Tensor<1, dim>>               last_reactions;
     std::vector<StepReport>                   reports;
+    std::function<bool(const StepReport &)>   step_callback;
   };
 } // namespace qsmpm
 

@@ -1,0 +1,395 @@
+/* ---------------------------------------------------------------------
+ *
+ * qsmpm example: compact_tension
+ *
+ * Failure of a concrete compact-tension specimen (paper Section 3) with the
+ * quasi-static material-point method of Sanchez, Schreyer, Sulsky and
+ * Wallstedt, "Solving Quasi-Static Equations with the Material-Point
+ * Method", and Schreyer's elastic-decohesive smeared-crack model.
+ *
+ * Usage:
+ *   ./compact_tension b15.prm
+ *   mpirun -np 2 ./compact_tension b30.prm
+ *
+ * ---------------------------------------------------------------------
+ */
+
+// @sect3{Include files}
+//
+// Besides QuasiStaticProblem, which owns grid, points, loads and the load-step
+// loop, we use three pieces of the library that exist for this problem: the
+// decohesion model, the specimen geometry with its supports, and a
+// load-deflection curve that integrates the work of the load.
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/fracture/compact_tension_geometry.h>
+#include <qsmpm/fracture/load_displacement_curve.h>
+#include <qsmpm/materials/decohesion.h>
+#include <string>
+#include <vector>
+
+namespace CompactTension
+{
+  using namespace dealii;
+  using namespace qsmpm;
+
+  // @sect3{The problem}
+  //
+  // A work-of-fracture test: the two appendages of a notched specimen are
+  // pulled apart by a testing machine that controls the load-point
+  // displacement $\delta$ and measures the force $P$. The area under
+  // $P(\delta)$ up to complete failure is the energy needed to break the
+  // ligament, $G_f\,b\,d$. Wittmann et al. measured it for specimens with
+  // ligaments $b$ = 15, 30 and 60 cm; the paper reproduces their
+  // load-deflection curves with the size-dependent $G_f$ they report.
+  //
+  // The specimen is modelled in 2D (plane stress by default) with one
+  // material point per square cell of size $h$ = 1, 2 and 4 cm. Cracks may
+  // only form in the column of cells that contains the centre line, with
+  // their normal fixed to $x$; the notch is the upper part of that column,
+  // left empty, so the two appendages share no grid node. Everything about
+  // the geometry lives in CompactTensionGeometry, whose documentation also
+  // explains the outer dimensions we chose (they are not given in the
+  // paper).
+  //
+  // The load factor $t$ of the library is the load-point displacement in
+  // metres; the parameter files advance it by $10^{-3}$ mm per step as in
+  // the paper. Rather than run to a fixed end, the program stops once the
+  // load has fallen below a fraction (2 %) of its peak: what is left of the
+  // curve then holds a negligible part of the energy.
+  //
+  // @sect3{Parameters}
+  //
+  // The library's subsections ("Material", "Material points", "Load
+  // stepping", "Nonlinear solver", "Output") are read as by the general
+  // driver; the specimen comes from "Compact tension" and the few things
+  // this program adds from "Run".
+  struct RunParameters
+  {
+    double      stop_fraction;
+    double      partial_failure_fraction;
+    std::string plot_label;
+
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Run");
+      prm.declare_entry("Stop below fraction of peak",
+                        "0.02",
+                        Patterns::Double(0., 1.),
+                        "The run ends after the first step past the peak at "
+                        "which the load is below this fraction of the peak "
+                        "load.");
+      prm.declare_entry("Partial failure at fraction of peak",
+                        "0.5",
+                        Patterns::Double(0., 1.),
+                        "The point fields of 'partial failure' are written at "
+                        "the first step past the peak at which the load is "
+                        "below this fraction of the peak load.");
+      prm.declare_entry("Label",
+                        "",
+                        Patterns::Anything(),
+                        "A name for the run in the summary (e.g. b = 15 cm).");
+      prm.leave_subsection();
+    }
+
+    void
+    parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Run");
+      stop_fraction = prm.get_double("Stop below fraction of peak");
+      partial_failure_fraction =
+        prm.get_double("Partial failure at fraction of peak");
+      plot_label = prm.get("Label");
+      prm.leave_subsection();
+    }
+  };
+
+
+
+  // @sect3{Point fields for pictures}
+  //
+  // The PVTU output holds every point field, including the normalized crack
+  // opening $[[u_n]]/u_0$ and stresses $\sigma_{xx}/\tau_{nf}$,
+  // $\sigma_{yy}/\tau_{nf}$ that the decohesion model keeps for this purpose.
+  // For pictures without ParaView we also write these three fields of all
+  // points into a small CSV file at the three moments of the paper's
+  // Fig. 4. Each rank sends its points to rank 0, which writes the file.
+  template <int dim>
+  void
+  write_point_csv(QuasiStaticProblem<dim> &problem,
+                  const std::string       &filename,
+                  const MPI_Comm           communicator)
+  {
+    const auto        &layout = problem.points().get_layout();
+    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
+                       sxx =
+                         layout.offset(Decohesion<dim>::sigma_xx_ratio_name),
+                       syy =
+                         layout.offset(Decohesion<dim>::sigma_yy_ratio_name);
+    std::vector<double> local;
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const auto properties = particle.get_properties();
+        const auto x          = particle.get_location();
+        local.insert(
+          local.end(),
+          {x[0], x[1], properties[w], properties[sxx], properties[syy]});
+      }
+    const auto all = Utilities::MPI::gather(communicator, local, 0);
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::ofstream file(filename);
+    file << "x,y,opening_over_u0,sigma_xx_over_tau_nf,sigma_yy_over_tau_nf\n"
+         << std::setprecision(6);
+    for (const auto &rank : all)
+      for (unsigned int i = 0; i < rank.size(); i += 5)
+        file << rank[i] << ',' << rank[i + 1] << ',' << rank[i + 2] << ','
+             << rank[i + 3] << ',' << rank[i + 4] << '\n';
+  }
+
+
+
+  // @sect3{Setting up and running the problem}
+  template <int dim>
+  void
+  run(const std::string &parameter_file)
+  {
+    const MPI_Comm   communicator = MPI_COMM_WORLD;
+    ParameterHandler prm;
+    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
+    CompactTensionGeometry<dim>::Parameters::declare_parameters(prm);
+    RunParameters::declare_parameters(prm);
+    prm.parse_input(parameter_file);
+
+    typename CompactTensionGeometry<dim>::Parameters specimen;
+    specimen.parse_parameters(prm);
+    RunParameters run_parameters;
+    run_parameters.parse_parameters(prm);
+    const CompactTensionGeometry<dim> geometry(specimen);
+
+    QuasiStaticProblem<dim> problem(communicator);
+    problem.parameters().parse_parameters(prm);
+    geometry.make_grid(problem.grid());
+
+    // The material. The smearing length must follow the grid (see the
+    // documentation of Decohesion: the crack band is one cell wide whatever
+    // the number of points per cell), so we set "Crack band width" to h
+    // here instead of asking for it twice in the parameter file. The
+    // constructor checks the local stability limit L_c < M u0 / tau_nf and
+    // stops with a message if h is too large. Cracks may only form in the
+    // cells on the centre line, as in the paper.
+    prm.enter_subsection("Material");
+    AssertThrow(prm.get("Model") == "decohesion",
+                ExcMessage("compact_tension: set Material/Model = "
+                           "decohesion."));
+    prm.enter_subsection("decohesion");
+    prm.set("Crack band width", geometry.cell_size());
+    auto         model  = std::make_unique<Decohesion<dim>>(prm);
+    const double G_f    = prm.get_double("Fracture energy");
+    const double tau_nf = model->tensile_strength();
+    const double u0     = model->critical_opening();
+    prm.leave_subsection();
+    prm.leave_subsection();
+    model->set_crack_region(
+      [&geometry](const Point<dim> &x) { return geometry.in_crack_band(x); });
+    problem.set_model(std::move(model));
+
+    // The body: points in every cell but those of the notch.
+    const auto &mp = problem.parameters().material_points;
+    problem.points().fill(
+      [&geometry](const Point<dim> &x) { return geometry.in_body(x); },
+      mp.points_per_direction,
+      mp.placement);
+    const unsigned int right_pin =
+      geometry.add_supports(problem.boundary_conditions());
+
+    const std::string directory = problem.parameters().output.directory;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::filesystem::create_directories(directory);
+
+    auto &out = problem.pcout();
+    out << "Compact tension " << run_parameters.plot_label
+        << ": b = " << geometry.ligament() << " m, d = " << geometry.depth()
+        << " m, W x H = " << geometry.width() << " x " << geometry.height()
+        << " m, h = " << geometry.cell_size() << " m, load points at x = +-"
+        << geometry.load_point_x() << " m\n"
+        << "  tau_nf = " << tau_nf << " Pa, G_f = " << G_f
+        << " J/m^2, u0 = " << u0 << " m" << std::endl;
+
+    // @sect3{Following the curve}
+    //
+    // After each accepted step the library calls us back. We record the
+    // point of the load-deflection curve, log what the solver did, write
+    // the point pictures when one of the three moments of Fig. 4 is
+    // reached, and tell the library to stop once the load has fallen far
+    // enough. All ranks see the same (summed) reaction force, so they all
+    // take the same decision.
+    LoadDisplacementCurve curve;
+    std::ofstream         steps_log;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        steps_log.open(directory + "/steps.csv");
+        steps_log << "step,displacement_m,force_N,newton_iterations,"
+                     "gmres_iterations,line_search_steps,cut_backs,"
+                     "wall_time_s\n";
+      }
+    bool               initiated = false, partially_failed = false;
+    const auto        &layout = problem.points().get_layout();
+    const unsigned int opening_offset =
+      layout.offset(Decohesion<dim>::crack_opening_name);
+    problem.set_step_callback(
+      [&](const typename QuasiStaticProblem<dim>::StepReport &report) {
+        const double delta = report.load_factor;
+        const double P     = geometry.load(problem.reactions(), right_pin);
+        curve.add(report.step, delta, P);
+        if (steps_log.is_open())
+          steps_log << report.step << ',' << std::setprecision(10) << delta
+                    << ',' << P << ',' << report.newton.newton_iterations << ','
+                    << report.newton.linear_iterations << ','
+                    << report.newton.line_search_steps << ','
+                    << report.cut_backs << ',' << std::setprecision(4)
+                    << report.wall_time << std::endl;
+
+        if (!initiated)
+          {
+            double largest_opening = 0.;
+            for (const auto &particle : problem.points().get_particle_handler())
+              largest_opening =
+                std::max(largest_opening,
+                         particle.get_properties()[opening_offset]);
+            if (Utilities::MPI::max(largest_opening, communicator) > 0.)
+              {
+                initiated = true;
+                out << "  crack initiation at step " << report.step
+                    << ", delta = " << delta << " m, P = " << P << " N"
+                    << std::endl;
+                write_point_csv(problem,
+                                directory + "/points_initiation.csv",
+                                communicator);
+              }
+          }
+        if (!partially_failed &&
+            curve.fallen_below(run_parameters.partial_failure_fraction))
+          {
+            partially_failed = true;
+            write_point_csv(problem,
+                            directory + "/points_partial.csv",
+                            communicator);
+          }
+        if (curve.fallen_below(run_parameters.stop_fraction))
+          {
+            write_point_csv(problem,
+                            directory + "/points_complete.csv",
+                            communicator);
+            return false;
+          }
+        return true;
+      });
+
+    Timer timer;
+    problem.run();
+    timer.stop();
+
+    // @sect3{Summary}
+    //
+    // The run must have reached the end of the curve: if the load never fell
+    // below the stop fraction, the load stepping ended first, and the
+    // energy balance below would be meaningless. We then compare the work
+    // of the load with the fracture energy of the ligament and print what
+    // the solver needed per step (the paper reports 1 to 6 Newton
+    // iterations per step).
+    AssertThrow(curve.fallen_below(run_parameters.stop_fraction),
+                ExcMessage("compact_tension: the load did not fall below " +
+                           std::to_string(run_parameters.stop_fraction) +
+                           " of its peak before the final load factor; "
+                           "raise 'Load stepping/Final load factor' and the "
+                           "number of steps."));
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      curve.write_csv(directory + "/load_displacement.csv");
+
+    unsigned int newton_min = 1000, newton_max = 0, newton_sum = 0,
+                 gmres_sum = 0, gmres_max = 0, line_search = 0, cut_backs = 0;
+    for (const auto &step : problem.step_reports())
+      {
+        newton_min = std::min(newton_min, step.newton.newton_iterations);
+        newton_max = std::max(newton_max, step.newton.newton_iterations);
+        newton_sum += step.newton.newton_iterations;
+        gmres_sum += step.newton.linear_iterations;
+        gmres_max = std::max(gmres_max, step.newton.linear_iterations);
+        line_search += step.newton.line_search_steps;
+        cut_backs += step.cut_backs;
+      }
+    const unsigned int n_steps = problem.step_reports().size();
+    const double       energy  = G_f * geometry.ligament() * geometry.depth();
+    out << std::setprecision(5) << '\n'
+        << "Compact tension " << run_parameters.plot_label << " finished\n"
+        << "  peak load P_max                = " << curve.peak_force()
+        << " N at delta = " << curve.peak_displacement() * 1e3 << " mm\n"
+        << "  last step                      = " << n_steps
+        << ", delta = " << curve.points().back().displacement * 1e3
+        << " mm, P = " << curve.points().back().force << " N\n"
+        << "  work of the load int P d(delta) = " << curve.work() << " J\n"
+        << "  G_f b d                        = " << energy << " J\n"
+        << "  energy ratio                   = " << curve.work() / energy
+        << '\n'
+        << "  Newton iterations per step     = " << newton_min << " to "
+        << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
+        << '\n'
+        << "  GMRES iterations               = " << gmres_sum << " in all, "
+        << static_cast<double>(gmres_sum) / std::max(1u, newton_sum)
+        << " per Newton iteration, at most " << gmres_max << " per step\n"
+        << "  line-search halvings           = " << line_search << '\n'
+        << "  load-step cut-backs            = " << cut_backs << '\n'
+        << "  wall time                      = " << timer.wall_time()
+        << " s on " << Utilities::MPI::n_mpi_processes(communicator)
+        << " rank(s)" << std::endl;
+  }
+} // namespace CompactTension
+
+
+
+// @sect3{The main function}
+//
+// As in the deal.II tutorials: initialize MPI, check the argument, and turn
+// every exception (bad parameter, violated stability limit, a step that did
+// not converge after the allowed cut-backs) into a message and a non-zero
+// exit code.
+int
+main(int argc, char *argv[])
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      AssertThrow(argc > 1,
+                  dealii::ExcMessage("Usage: compact_tension file.prm"));
+      const std::string parameter_file = argv[1];
+      AssertThrow(std::filesystem::exists(parameter_file),
+                  dealii::ExcMessage("Cannot find the parameter file <" +
+                                     parameter_file + ">."));
+      CompactTension::run<2>(parameter_file);
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "\n----------------------------------------------------\n"
+                << "compact_tension stopped: " << exc.what() << std::endl
+                << "----------------------------------------------------"
+                << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "compact_tension stopped: unknown exception" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,132 @@
+#ifndef qsmpm_fracture_compact_tension_geometry_h
+#define qsmpm_fracture_compact_tension_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/loading/boundary_conditions.h>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The compact-tension specimen (CTS) of paper Section 3.3 (Fig. 2) on a
+   * uniform grid of square cells of size h: a rectangle of width W (in x)
+   * and height H = a + b (in y) with a notch of width h and depth a from the
+   * top edge along the centre line x = 0, which leaves the ligament b below
+   * the notch. The two halves beside the notch are the appendages. The grid
+   * is the rectangle itself, with one column of cells centred on x = 0: the
+   * notch is the upper part of that column (cells without points), the
+   * ligament its lower part, which is where cracks may form (the cells that
+   * contain the centre line).
+   *
+   * Loads (displacement control, load factor t = load-point displacement in
+   * metres): a pin at the top centre of each appendage that moves the top
+   * grid nodes within half the "Load plate width" (2 cells by default) of
+   * the load point together in x and holds the node at the load point in y,
+   * so that it transmits no moment. The left pin is fixed, the right one
+   * moves by t in +x. See add_supports() for why a pin of one node does not
+   * work with one point per cell.
+   *
+   * The outer dimensions of the specimens of Wittmann et al. are not given
+   * in the paper; the defaults follow ASTM E399-like proportions with a notch
+   * as deep as the ligament: W = 2.4 b, a = b. W is rounded to an odd
+   * number of cells (so that a column is centred on x = 0), and the load
+   * points to the nearest grid node. In 3D the specimen is extruded through
+   * the depth d in z (the loads act on lines of nodes); in 2D the depth only
+   * scales the forces.
+   */
+  template <int dim>
+  class CompactTensionGeometry
+  {
+  public:
+    /**
+     * The subsection "Compact tension" of a .prm file.
+     */
+    struct Parameters
+    {
+      /// Ligament length b (m).
+      double ligament = 0.15;
+      /// Specimen depth d (m).
+      double depth = 0.12;
+      /// Grid cell size h (m).
+      double cell_size = 0.01;
+      /// W / b.
+      double width_ratio = 2.4;
+      /// a / b: notch depth from the top edge over the ligament.
+      double notch_ratio = 1.0;
+      /// Width of the load pins in cells (plate_cells + 1 nodes each).
+      unsigned int plate_cells = 2;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    explicit CompactTensionGeometry(const Parameters &parameters);
+
+    /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D).
+    void
+    make_grid(BackgroundGrid<dim> &grid) const;
+
+    /// Whether @p x lies in the specimen (not in the notch).
+    bool
+    in_body(const Point<dim> &x) const;
+
+    /// Whether @p x lies in the cells that contain the centre line, where
+    /// cracks are allowed.
+    bool
+    in_crack_band(const Point<dim> &x) const;
+
+    /**
+     * Add the two load pins to @p bcs, in this order: "left load point"
+     * (u_x = 0 on the pin's nodes), "left load point y" (u_y = 0 at the load
+     * point), "right load point" (u_x = t), "right load point y" (u_y = 0),
+     * and return the index of "right load point" among
+     * bcs.dirichlet_conditions().
+     *
+     * Each pin moves plate_cells + 1 top nodes in x. With one point per cell
+     * (at the cell centre) and a single node per pin, the pins would sit on
+     * nodes of opposite parity (a column is centred on x = 0), and a
+     * translation by t/2 plus the checkerboard hourglass mode of one-point
+     * quadrature with amplitude t/2 would satisfy both without any strain:
+     * the specimen would carry no load. Only one node per pin is held in y,
+     * so that the appendages can rotate about the pins.
+     */
+    unsigned int
+    add_supports(BoundaryConditions<dim> &bcs) const;
+
+    /**
+     * The load P (N) for the full depth d from the reactions of the last
+     * step: the x force the right load point exerts on the specimen.
+     */
+    double
+    load(const std::vector<Tensor<1, dim>> &reactions,
+         const unsigned int                 right_condition) const;
+
+    /// Cell size h.
+    double
+    cell_size() const;
+    /// Ligament b as discretized (a whole number of cells).
+    double
+    ligament() const;
+    /// Depth d.
+    double
+    depth() const;
+    /// Width W and height H of the grid.
+    double
+    width() const;
+    double
+    height() const;
+    /// x coordinate of the right load point (the left one is at -x).
+    double
+    load_point_x() const;
+
+  private:
+    const Parameters parameters;
+    unsigned int     n_x, n_ligament, n_notch;
+  };
+} // namespace qsmpm
+
+#endif

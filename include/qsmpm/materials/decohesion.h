@@ -1,0 +1,174 @@
+#ifndef qsmpm_materials_decohesion_h
+#define qsmpm_materials_decohesion_h
+
+#include <deal.II/base/tensor.h>
+#include <functional>
+#include <qsmpm/materials/constitutive_model.h>
+
+namespace qsmpm
+{
+  /**
+   * Schreyer's elastic-decohesive model for quasi-brittle materials in mode
+   * I with linear softening (paper Section 3.2, eqs. 3.1-3.2), as a smeared
+   * crack ("crack band") at each material point:
+   *
+   *   F_n = tau_n / tau_nf + [[u_n]] / u0 - 1,     u0 = 2 G_f / tau_nf,
+   *   sigma = C : (eps - eps_dc),
+   *   eps_dc = (1 / (2 L_c)) ([[u]] (x) n + n (x) [[u]]) = ([[u_n]]/L_c) n(x)n.
+   *
+   * - Isotropic linear elasticity until the Rankine criterion F_n(sigma.n, 0)
+   *   = 0 is met in the region where cracking is allowed. The crack normal n
+   *   is then either the direction of the largest principal stress of that
+   *   moment or a fixed direction (the paper fixes it to x). One crack per
+   *   point; n never changes afterwards.
+   * - Softening: tau_n = n.sigma.n <= tau_nf max(0, 1 - [[u_n]]/u0); the
+   *   opening [[u_n]] is an internal variable that never decreases, as the
+   *   plastic strain of a rate-independent plasticity model. Because C is
+   *   constant and the softening law is linear in [[u_n]], the return
+   *   mapping has a closed form (see update_stress()).
+   * - Unloading and reloading are elastic at the current opening; after
+   *   complete failure ([[u_n]] >= u0) the crack carries no tensile normal
+   *   traction, ever again. Compression across an open crack is carried
+   *   elastically (there is no separate crack-closure law). Shear tractions
+   *   on the crack are not softened (mode I only).
+   *
+   * <h3>The smearing length</h3>
+   * The paper defines L_c as the point volume divided by the crack area
+   * across the point, which is the cell size h for one point per cell and a
+   * crack parallel to a cell edge. With n x n points per cell and bilinear
+   * shape functions, however, eps_xx is constant in x inside a cell: all n
+   * points of a cell row see the same strain and crack together, so the
+   * crack band is one cell wide whatever the number of points. The model
+   * therefore uses the width of the band of cells that cracks,
+   *
+   *   L_c = h_band max_i |n_i|,
+   *
+   * with h_band the parameter "Crack band width" (the cell size of the
+   * background grid) and max_i |n_i| = V_cell / (area of the cell's mid
+   * plane normal to n), exact for a square cell in 2D and for normals in a
+   * coordinate plane in 3D. Each point then dissipates
+   * G_f V_p / L_c, and the points of one cell together dissipate G_f times
+   * the crack area through the cell, for any number of points per cell and
+   * any h (Bazant and Oh's crack band).
+   *
+   * <h3>Local stability</h3>
+   * The softening branch of one point is stable under strain control only if
+   * L_c < M u0 / tau_nf with M = n.C:(n(x)n).n (for isotropic C, M = lambda
+   * + 2 mu whatever n). The constructor checks this with h_band and stops
+   * with a message if it is violated.
+   *
+   * Selected in a .prm file with `set Model = decohesion` (subsection
+   * "Material/decohesion").
+   */
+  template <int dim>
+  class Decohesion : public ConstitutiveModel<dim>
+  {
+  public:
+    /**
+     * @p fixed_normal: the crack normal, or the zero tensor for the direction
+     * of the largest principal stress at initiation.
+     * @p band_width: h_band of the class documentation.
+     */
+    Decohesion(const double          young_modulus,
+               const double          poisson_ratio,
+               const bool            plane_stress,
+               const double          tensile_strength,
+               const double          fracture_energy,
+               const Tensor<1, dim> &fixed_normal,
+               const double          band_width);
+
+    /// Construct from the subsection "decohesion".
+    explicit Decohesion(ParameterHandler &prm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Cracking is allowed only at points created where @p region is true
+     * (evaluated by initialize_state(), i.e. when the points are made).
+     * Replaces the "Cracking region" expression of the parameter file.
+     */
+    void
+    set_crack_region(const std::function<bool(const Point<dim> &)> &region);
+
+    std::vector<StateField>
+    state_fields() const override;
+
+    void
+    initialize_state(const Point<dim> &x,
+                     ArrayView<double> state) const override;
+
+    /**
+     * The closed-form return mapping. With the trial stress
+     * sigma_tr = sigma^k + C : d_eps and tau_tr = n.sigma_tr.n, the opening
+     * increment d_w >= 0 solves
+     *
+     *   tau_tr - (M / L_c) d_w = tau_nf max(0, 1 - (w^k + d_w) / u0)
+     *
+     * (a piecewise linear, decreasing function of d_w when the point is
+     * locally stable), and sigma = sigma_tr - (d_w / L_c) C:(n(x)n).
+     */
+    void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const override;
+
+    /**
+     * The elastic stiffness, but with no normal stiffness across completely
+     * failed cracks (C - C:nn (x) nn:C / M), for preconditioning.
+     */
+    SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const override;
+
+    /// u0 = 2 G_f / tau_nf: the opening at complete failure.
+    double
+    critical_opening() const;
+
+    /// tau_nf.
+    double
+    tensile_strength() const;
+
+    /// The smearing length L_c for the crack normal @p n.
+    double
+    smearing_length(const Tensor<1, dim> &n) const;
+
+    /// M u0 / tau_nf: L_c must stay below this.
+    double
+    stability_limit() const;
+
+    /// The elastic stiffness C.
+    const SymmetricTensor<4, dim> &
+    stiffness() const;
+
+    /// Names of the model's state fields (see state_fields()).
+    static constexpr const char *crack_allowed_name  = "crack_allowed";
+    static constexpr const char *crack_normal_name   = "crack_normal";
+    static constexpr const char *crack_opening_name  = "crack_opening";
+    static constexpr const char *opening_ratio_name  = "opening_over_u0";
+    static constexpr const char *sigma_xx_ratio_name = "sigma_xx_over_tau_nf";
+    static constexpr const char *sigma_yy_ratio_name = "sigma_yy_over_tau_nf";
+
+  private:
+    /// The crack normal for the trial stress @p sigma_trial of an uncracked
+    /// point, or the zero tensor if the Rankine criterion is not met.
+    Tensor<1, dim>
+    initiation_normal(const SymmetricTensor<2, dim> &sigma_trial) const;
+
+    const SymmetricTensor<4, dim> C;
+    const double                  tau_nf;
+    const double                  G_f;
+    const double                  u0;
+    const Tensor<1, dim>          fixed_normal;
+    const double                  band_width;
+    /// M = n.C:(n(x)n).n, the same for every n (isotropic C).
+    const double                            M;
+    std::function<bool(const Point<dim> &)> crack_region;
+
+    /// Offsets of the fields within the model's state (from state_fields()).
+    unsigned int allowed_offset, normal_offset, opening_offset,
+      opening_ratio_offset, sigma_xx_offset, sigma_yy_offset;
+  };
+} // namespace qsmpm
+
+#endif

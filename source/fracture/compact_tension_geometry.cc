@@ -1,0 +1,288 @@
+#include <cmath>
+#include <deal.II/base/function.h>
+#include <qsmpm/fracture/compact_tension_geometry.h>
+
+namespace qsmpm
+{
+  namespace
+  {
+    /// u_x = t (the load factor), the other components zero.
+    template <int dim>
+    class LoadPointDisplacement : public Function<dim>
+    {
+    public:
+      LoadPointDisplacement()
+        : Function<dim>(dim)
+      {
+      }
+      double
+      value(const Point<dim> &, const unsigned int component) const override
+      {
+        return component == 0 ? this->get_time() : 0.;
+      }
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  CompactTensionGeometry<dim>::Parameters::declare_parameters(
+    ParameterHandler &prm)
+  {
+    prm.enter_subsection("Compact tension");
+    {
+      prm.declare_entry("Ligament length",
+                        "0.15",
+                        Patterns::Double(0.),
+                        "b (m): the uncracked length below the notch tip. "
+                        "Rounded to a whole number of cells.");
+      prm.declare_entry("Depth",
+                        "0.12",
+                        Patterns::Double(0.),
+                        "d (m): specimen thickness. In 2D it only scales the "
+                        "load P.");
+      prm.declare_entry("Cell size",
+                        "0.01",
+                        Patterns::Double(0.),
+                        "h (m): size of the square grid cells; also the notch "
+                        "width and the width of the crack band.");
+      prm.declare_entry("Width over ligament",
+                        "2.4",
+                        Patterns::Double(0.),
+                        "W / b: specimen width (in x, across the notch) over "
+                        "the ligament. The original dimensions are unknown; "
+                        "2.4 is the ASTM E399 ratio 1.2 W_astm / (W_astm - a) "
+                        "with a = W_astm / 2.");
+      prm.declare_entry("Load plate width",
+                        "2",
+                        Patterns::Integer(1),
+                        "Width, in cells, of the rigid pin at the top centre "
+                        "of each appendage: the top nodes within half of it "
+                        "from the load point are displaced together. At least "
+                        "1 (two nodes) with one point per cell, see "
+                        "CompactTensionGeometry::add_supports().");
+      prm.declare_entry("Notch depth over ligament",
+                        "1.0",
+                        Patterns::Double(0.),
+                        "a / b: depth of the notch from the top edge over the "
+                        "ligament; the specimen height is a + b.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  CompactTensionGeometry<dim>::Parameters::parse_parameters(
+    ParameterHandler &prm)
+  {
+    prm.enter_subsection("Compact tension");
+    {
+      ligament    = prm.get_double("Ligament length");
+      depth       = prm.get_double("Depth");
+      cell_size   = prm.get_double("Cell size");
+      width_ratio = prm.get_double("Width over ligament");
+      notch_ratio = prm.get_double("Notch depth over ligament");
+      plate_cells = prm.get_integer("Load plate width");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  CompactTensionGeometry<dim>::CompactTensionGeometry(
+    const Parameters &parameters)
+    : parameters(parameters)
+  {
+    const double h = parameters.cell_size;
+    AssertThrow(h > 0 && parameters.ligament >= 2 * h,
+                ExcMessage("Compact tension: the ligament must span at least "
+                           "two cells (Ligament length >= 2 Cell size)."));
+    n_ligament = static_cast<unsigned int>(std::round(parameters.ligament / h));
+    n_notch    = static_cast<unsigned int>(
+      std::round(parameters.notch_ratio * parameters.ligament / h));
+    // An odd number of columns, so that one is centred on x = 0.
+    n_x =
+      2 * static_cast<unsigned int>(std::round(
+            0.5 * (parameters.width_ratio * parameters.ligament / h - 1.))) +
+      1;
+    AssertThrow(n_notch >= 1 && n_x >= 5,
+                ExcMessage("Compact tension: the notch must be at least one "
+                           "cell deep and the specimen at least five cells "
+                           "wide."));
+  }
+
+
+
+  template <int dim>
+  void
+  CompactTensionGeometry<dim>::make_grid(BackgroundGrid<dim> &grid) const
+  {
+    const double                  h = parameters.cell_size;
+    Point<dim>                    lower, upper;
+    std::array<unsigned int, dim> subdivisions;
+    lower[0]        = -0.5 * width();
+    upper[0]        = 0.5 * width();
+    subdivisions[0] = n_x;
+    upper[1]        = height();
+    subdivisions[1] = n_ligament + n_notch;
+    if (dim == 3)
+      {
+        subdivisions[dim - 1] =
+          std::max(1u,
+                   static_cast<unsigned int>(std::round(parameters.depth / h)));
+        upper[dim - 1] = parameters.depth;
+      }
+    grid.make_box(lower, upper, subdivisions);
+  }
+
+
+
+  template <int dim>
+  bool
+  CompactTensionGeometry<dim>::in_body(const Point<dim> &x) const
+  {
+    return !(in_crack_band(x) && x[1] > ligament());
+  }
+
+
+
+  template <int dim>
+  bool
+  CompactTensionGeometry<dim>::in_crack_band(const Point<dim> &x) const
+  {
+    return std::abs(x[0]) < 0.5 * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CompactTensionGeometry<dim>::add_supports(BoundaryConditions<dim> &bcs) const
+  {
+    const double tolerance = 1e-6 * parameters.cell_size;
+    const double x_load = load_point_x(), y_top = height();
+    // Each pin moves the top nodes within half the plate width of the load
+    // point (2 cells: 3 nodes by default) together in x, and holds only the
+    // node at the load point in y. It thus transmits no moment: the
+    // appendages may rotate about their pins, which they must do once the
+    // ligament has broken (a pin fixed in y at all its nodes would clamp
+    // them and the load would rise again). A single node in x does not work
+    // with one point per cell: both pins would sit on nodes of opposite
+    // parity, and a translation in x plus the zero-energy checkerboard
+    // (hourglass) mode of one-point quadrature would satisfy both without
+    // any strain -- the specimen would carry no load.
+    const double half_plate =
+      (0.5 * parameters.plate_cells + 1e-6) * parameters.cell_size;
+    std::array<bool, dim> x_only{}, y_only{};
+    x_only[0]         = true;
+    y_only[1]         = true;
+    const auto zero   = std::make_shared<Functions::ZeroFunction<dim>>(dim);
+    const auto on_pin = [=](const double x_centre, const double half_width) {
+      return [=](const Point<dim> &p) {
+        return std::abs(p[0] - x_centre) < half_width &&
+               std::abs(p[1] - y_top) < tolerance;
+      };
+    };
+    // Left pin: fixed.
+    bcs.add_dirichlet_nodes("left load point",
+                            on_pin(-x_load, half_plate),
+                            x_only,
+                            zero);
+    bcs.add_dirichlet_nodes("left load point y",
+                            on_pin(-x_load, tolerance),
+                            y_only,
+                            zero);
+    // Right pin: u_x = t, u_y = 0.
+    const unsigned int right = bcs.dirichlet_conditions().size();
+    bcs.add_dirichlet_nodes("right load point",
+                            on_pin(x_load, half_plate),
+                            x_only,
+                            std::make_shared<LoadPointDisplacement<dim>>());
+    bcs.add_dirichlet_nodes("right load point y",
+                            on_pin(x_load, tolerance),
+                            y_only,
+                            zero);
+    return right;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::load(
+    const std::vector<Tensor<1, dim>> &reactions,
+    const unsigned int                 right_condition) const
+  {
+    AssertThrow(right_condition < reactions.size(),
+                ExcMessage("Compact tension: no reaction of the load point."));
+    // In 2D the point volumes are areas: forces per unit depth.
+    return reactions[right_condition][0] * (dim == 2 ? parameters.depth : 1.);
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::cell_size() const
+  {
+    return parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::ligament() const
+  {
+    return n_ligament * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::depth() const
+  {
+    return parameters.depth;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::width() const
+  {
+    return n_x * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::height() const
+  {
+    return (n_ligament + n_notch) * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionGeometry<dim>::load_point_x() const
+  {
+    // The middle of an appendage, [h/2, W/2], snapped to a grid node (nodes
+    // lie at x = (k + 1/2) h).
+    const double h = parameters.cell_size;
+    const double x = 0.25 * (width() + h);
+    return (std::round(x / h - 0.5) + 0.5) * h;
+  }
+
+
+
+  template class CompactTensionGeometry<2>;
+  template class CompactTensionGeometry<3>;
+} // namespace qsmpm

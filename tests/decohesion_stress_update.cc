@@ -1,0 +1,253 @@
+// Single-point stress updates of the elastic-decohesive model (paper eqs.
+// 3.1-3.2) in 2D plane stress, against closed-form values:
+//
+// - uniaxial strain in x (eps_yy = 0, sigma = C:(eps - (w/L_c) x(x)x)):
+//   elastic until sigma_xx = tau_nf (initiation), then on the softening line
+//   sigma_xx = tau_nf (1 - w/u0) with w = (M eps - tau_nf)/(M/L_c -
+//   tau_nf/u0); unloading and reloading elastic at the current opening;
+//   complete failure at w = u0, after which sigma_xx <= 0 for good;
+// - a stress state with principal directions at 30 degrees: with the
+//   principal-stress normal the crack normal is (cos 30, sin 30) and
+//   L_c = h cos 30; with the normal fixed to x the same state does not crack;
+// - one increment gives the same state as many small ones (closed form);
+// - points outside the cracking region stay elastic;
+// - the local stability limit L_c < M u0 / tau_nf is enforced.
+#include "tests.h"
+
+#include <qsmpm/materials/decohesion.h>
+
+using namespace qsmpm;
+
+namespace
+{
+  const double E = 1000., nu = 0.2, tau = 1., G_f = 0.05, h = 0.1;
+  const double u0 = 2. * G_f / tau;
+
+  /// A material point: committed strain, stress and state.
+  struct MaterialPoint
+  {
+    SymmetricTensor<2, 2> strain, stress;
+    std::vector<double>   state;
+  };
+
+  /// Apply the strain increment d_eps to @p p (and commit).
+  void
+  step(const Decohesion<2>         &model,
+       MaterialPoint               &p,
+       const SymmetricTensor<2, 2> &d_eps)
+  {
+    std::vector<double>   new_state(p.state.size());
+    SymmetricTensor<2, 2> stress;
+    model.update_stress(
+      {p.strain, p.stress, ArrayView<const double>(p.state), 1.},
+      d_eps,
+      stress,
+      ArrayView<double>(new_state));
+    p.strain += d_eps;
+    p.stress = stress;
+    p.state  = new_state;
+  }
+
+  MaterialPoint
+  make_point(const Decohesion<2> &model, const dealii::Point<2> &x)
+  {
+    MaterialPoint p;
+    p.state.resize(model.n_state_components());
+    model.initialize_state(x, ArrayView<double>(p.state));
+    return p;
+  }
+
+  SymmetricTensor<2, 2>
+  uniaxial(const double e)
+  {
+    SymmetricTensor<2, 2> d;
+    d[0][0] = e;
+    return d;
+  }
+
+  /// Offsets of the model's fields by name, as the library finds them.
+  unsigned int
+  offset(const Decohesion<2> &model, const std::string &name)
+  {
+    unsigned int o = 0;
+    for (const auto &f : model.state_fields())
+      {
+        if (f.name == name)
+          return o;
+        o += f.n_components;
+      }
+    return numbers::invalid_unsigned_int;
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  Tensor<1, 2> x_normal;
+  x_normal[0] = 1.;
+  Decohesion<2> model(E, nu, true, tau, G_f, x_normal, h);
+  const double  M        = E / (1. - nu * nu);
+  const double  L        = h;
+  const auto    w_offset = offset(model, Decohesion<2>::crack_opening_name);
+  const auto    n_offset = offset(model, Decohesion<2>::crack_normal_name);
+  const double  eps_i    = tau / M;
+  // The opening on the softening line at total strain eps.
+  const auto w_softening = [&](const double eps) {
+    return (M * eps - tau) / (M / L - tau / u0);
+  };
+
+  deallog << "Uniaxial strain in x, fixed normal x" << std::endl;
+  MaterialPoint p = make_point(model, dealii::Point<2>());
+  // Elastic up to 0.99 eps_i.
+  for (unsigned int i = 0; i < 99; ++i)
+    step(model, p, uniaxial(0.01 * eps_i));
+  check("  elastic: |sigma_xx - M eps| / tau_nf",
+        (p.stress[0][0] - M * p.strain[0][0]) / tau,
+        1e-12);
+  check_that("  elastic: no crack below tau_nf",
+             p.state[w_offset] == 0. && p.state[n_offset] == 0.);
+  // Initiation within the next increment.
+  step(model, p, uniaxial(0.02 * eps_i));
+  check_that("  initiation: crack with normal x",
+             p.state[n_offset] == 1. && p.state[n_offset + 1] == 0.);
+  double eps = p.strain[0][0];
+  check("  initiation: |w - w_exact| / u0",
+        (p.state[w_offset] - w_softening(eps)) / u0,
+        1e-12);
+  // Softening.
+  for (unsigned int i = 0; i < 20; ++i)
+    step(model, p, uniaxial(0.5 * u0 / L / 20));
+  eps             = p.strain[0][0];
+  const double w1 = p.state[w_offset];
+  check("  softening: |w - w_exact| / u0", (w1 - w_softening(eps)) / u0, 1e-12);
+  check("  softening: |sigma_xx - tau_nf (1 - w/u0)| / tau_nf",
+        (p.stress[0][0] - tau * (1. - w1 / u0)) / tau,
+        1e-12);
+  check("  softening: |sigma_xx - M (eps - w/L_c)| / tau_nf",
+        (p.stress[0][0] - M * (eps - w1 / L)) / tau,
+        1e-12);
+  check("  softening: |sigma_yy - nu sigma_xx| / tau_nf",
+        (p.stress[1][1] - nu * p.stress[0][0]) / tau,
+        1e-12);
+  // Unloading, into compression.
+  const double sigma1 = p.stress[0][0];
+  step(model, p, uniaxial(-2. * sigma1 / M));
+  check("  unloading: opening unchanged, |w - w_before| / u0",
+        (p.state[w_offset] - w1) / u0,
+        0.);
+  check("  unloading: |sigma_xx + sigma_before| / tau_nf (elastic)",
+        (p.stress[0][0] + sigma1) / tau,
+        1e-12);
+  // Reloading to the softening line: elastic, then softening again.
+  step(model, p, uniaxial(2. * sigma1 / M));
+  check("  reloading to the previous strain: |w - w_before| / u0",
+        (p.state[w_offset] - w1) / u0,
+        1e-12);
+  check("  reloading: |sigma_xx - sigma_before| / tau_nf",
+        (p.stress[0][0] - sigma1) / tau,
+        1e-12);
+  step(model, p, uniaxial(0.1 * u0 / L));
+  check("  reloading beyond: |w - w_exact| / u0",
+        (p.state[w_offset] - w_softening(p.strain[0][0])) / u0,
+        1e-12);
+  // Complete failure and beyond.
+  step(model, p, uniaxial(2. * u0 / L));
+  check("  complete failure: |sigma_xx| / tau_nf", p.stress[0][0] / tau, 1e-12);
+  check("  complete failure: |w - L_c eps| / u0",
+        (p.state[w_offset] - L * p.strain[0][0]) / u0,
+        1e-12);
+  check_at_least("  complete failure: w / u0", p.state[w_offset] / u0, 1.);
+  const double w2 = p.state[w_offset];
+  step(model, p, uniaxial(-0.1 * u0 / L));
+  check_that("  after failure, closing: sigma_xx < 0, w unchanged",
+             p.stress[0][0] < 0 && p.state[w_offset] == w2);
+  step(model, p, uniaxial(0.3 * u0 / L));
+  check("  after failure, reopening: |sigma_xx| / tau_nf (traction free)",
+        p.stress[0][0] / tau,
+        1e-12);
+
+  deallog << "One increment = many increments (closed form)" << std::endl;
+  {
+    MaterialPoint a = make_point(model, dealii::Point<2>()), b = a;
+    step(model, a, uniaxial(0.7 * u0 / L));
+    for (unsigned int i = 0; i < 70; ++i)
+      step(model, b, uniaxial(0.01 * u0 / L));
+    check("  |w_one - w_many| / u0",
+          (a.state[w_offset] - b.state[w_offset]) / u0,
+          1e-12);
+    check("  |sigma_one - sigma_many| / tau_nf",
+          (a.stress - b.stress).norm() / tau,
+          1e-12);
+  }
+
+  deallog << "Principal directions at 30 degrees" << std::endl;
+  {
+    const double angle = numbers::PI / 6, c = std::cos(angle),
+                 s = std::sin(angle);
+    Tensor<1, 2> e1, e2;
+    e1[0] = c;
+    e1[1] = s;
+    e2[0] = -s;
+    e2[1] = c;
+    // sigma = 1.2 tau e1(x)e1 - 0.3 tau e2(x)e2, reached by a strain
+    // increment C^{-1}:sigma from the stress-free state.
+    SymmetricTensor<2, 2> sigma =
+      1.2 * tau * symmetrize(outer_product(e1, e1)) -
+      0.3 * tau * symmetrize(outer_product(e2, e2));
+    const SymmetricTensor<2, 2> d_eps = invert(model.stiffness()) * sigma;
+    Decohesion<2> principal(E, nu, true, tau, G_f, Tensor<1, 2>(), h);
+    MaterialPoint q = make_point(principal, dealii::Point<2>());
+    step(principal, q, d_eps);
+    Tensor<1, 2> n;
+    n[0] = q.state[n_offset];
+    n[1] = q.state[n_offset + 1];
+    check("  principal normal: 1 - |n . e1|", 1. - std::abs(n * e1), 1e-12);
+    check("  principal normal: |L_c - h cos 30| / h",
+          (principal.smearing_length(n) - h * c) / h,
+          1e-12);
+    const double w     = q.state[w_offset];
+    const double tau_n = n * q.stress * n;
+    check("  principal normal: |tau_n - tau_nf (1 - w/u0)| / tau_nf",
+          (tau_n - tau * (1. - w / u0)) / tau,
+          1e-12);
+    check_that("  principal normal: cracked (w > 0)", w > 0.);
+    MaterialPoint r = make_point(model, dealii::Point<2>());
+    step(model, r, d_eps);
+    check_that("  normal fixed to x: sigma_xx = 0.9 tau_nf does not crack",
+               r.state[w_offset] == 0. && r.state[n_offset] == 0.);
+  }
+
+  deallog << "Cracking region" << std::endl;
+  {
+    Decohesion<2> band(E, nu, true, tau, G_f, x_normal, h);
+    band.set_crack_region(
+      [](const dealii::Point<2> &x) { return std::abs(x[0]) < 0.05; });
+    MaterialPoint inside  = make_point(band, dealii::Point<2>(0.01, 0.));
+    MaterialPoint outside = make_point(band, dealii::Point<2>(0.2, 0.));
+    step(band, inside, uniaxial(3. * eps_i));
+    step(band, outside, uniaxial(3. * eps_i));
+    check_that("  inside cracks, outside stays elastic",
+               inside.state[w_offset] > 0. && outside.state[w_offset] == 0. &&
+                 std::abs(outside.stress[0][0] - 3. * tau) < 1e-12);
+  }
+
+  deallog << "Local stability limit" << std::endl;
+  {
+    const double limit  = M * u0 / tau;
+    bool         thrown = false;
+    try
+      {
+        Decohesion<2> unstable(E, nu, true, tau, G_f, x_normal, 1.01 * limit);
+      }
+    catch (const std::exception &e)
+      {
+        thrown =
+          std::string(e.what()).find("locally unstable") != std::string::npos;
+      }
+    check_that("  L_c > M u0 / tau_nf is rejected with a message", thrown);
+    check("  stability_limit() = M u0 / tau_nf, relative error",
+          (model.stability_limit() - limit) / limit,
+          1e-12);
+  }
+}
