@@ -109,7 +109,12 @@ namespace qsmpm
   double
   Rotation::angle(const Tensor<2, 3> &g)
   {
-    return std::acos(std::clamp(0.5 * (trace(g) - 1.), -1., 1.));
+    // atan2 of sine and cosine: accurate also near 0, where the acos of the
+    // trace loses half the digits. g_32 - g_23 = 2 sin(angle) n_x etc.
+    const double a = g[2][1] - g[1][2], b = g[0][2] - g[2][0],
+                 c = g[1][0] - g[0][1];
+    return std::atan2(0.5 * std::sqrt(a * a + b * b + c * c),
+                      0.5 * (trace(g) - 1.));
   }
 
 
@@ -142,13 +147,21 @@ namespace qsmpm
       return t;
     }();
     const Tensor<2, 3> dg        = g_b * transpose(g_a);
-    double             max_trace = -1.;
-    for (const auto &sp : table)
-      max_trace =
-        std::max(max_trace,
-                 sp.sign[0] * dg[sp.p[0]][0] + sp.sign[1] * dg[sp.p[1]][1] +
-                   sp.sign[2] * dg[sp.p[2]][2]);
-    return std::acos(std::clamp(0.5 * (max_trace - 1.), -1., 1.));
+    double             max_trace = -2.;
+    unsigned int       best      = 0;
+    for (unsigned int s = 0; s < table.size(); ++s)
+      {
+        const auto  &sp = table[s];
+        const double t  = sp.sign[0] * dg[sp.p[0]][0] +
+                         sp.sign[1] * dg[sp.p[1]][1] +
+                         sp.sign[2] * dg[sp.p[2]][2];
+        if (t > max_trace)
+          {
+            max_trace = t;
+            best      = s;
+          }
+      }
+    return angle(cubic_symmetry()[best] * dg);
   }
 
 

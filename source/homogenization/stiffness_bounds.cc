@@ -14,18 +14,19 @@ namespace qsmpm
     C_voigt     = Matrix6{};
     double wsum = 0;
     for (unsigned int n = 0; n < g.size(); ++n)
-      {
-        const Matrix6 C =
-          Rotation::to_voigt(Rotation::rotate_to_sample(C_crystal, g[n]));
-        const Matrix6 S = inverse(C);
-        for (unsigned int a = 0; a < 6; ++a)
-          for (unsigned int b = 0; b < 6; ++b)
-            {
-              C_voigt[a][b] += w[n] * C[a][b];
-              S_mean[a][b] += w[n] * S[a][b];
-            }
-        wsum += w[n];
-      }
+      if (w[n] != 0.)
+        {
+          const Matrix6 C =
+            Rotation::to_voigt(Rotation::rotate_to_sample(C_crystal, g[n]));
+          const Matrix6 S = inverse(C);
+          for (unsigned int a = 0; a < 6; ++a)
+            for (unsigned int b = 0; b < 6; ++b)
+              {
+                C_voigt[a][b] += w[n] * C[a][b];
+                S_mean[a][b] += w[n] * S[a][b];
+              }
+          wsum += w[n];
+        }
     for (unsigned int a = 0; a < 6; ++a)
       for (unsigned int b = 0; b < 6; ++b)
         {

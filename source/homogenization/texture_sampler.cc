@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <numeric>
 #include <qsmpm/base/rotation.h>
 #include <qsmpm/homogenization/texture_sampler.h>
@@ -82,31 +83,40 @@ namespace qsmpm
       counts_d[c] += 1.;
     result.misfit_sampled = odf.misfit(counts_d);
 
-    // N_G by largest remainders, at least one per grain.
+    // N_G by largest remainders, at least one per grain of positive
+    // volume; grains of zero volume (no material point) get none.
     const double total_volume =
       std::accumulate(grain_volumes.begin(), grain_volumes.end(), 0.);
     AssertThrow(total_volume > 0, ExcMessage("Texture: zero grain volume."));
-    result.n_elementary.assign(n_grains, 1);
+    unsigned int n_occupied = 0;
+    result.n_elementary.assign(n_grains, 0);
+    for (unsigned int g = 0; g < n_grains; ++g)
+      if (grain_volumes[g] > 0)
+        {
+          result.n_elementary[g] = 1;
+          ++n_occupied;
+        }
     {
-      const unsigned int  free = n_u - n_grains;
-      std::vector<double> remainder(n_grains);
+      const unsigned int  free = n_u - n_occupied;
+      std::vector<double> remainder(n_grains, -1.);
       unsigned int        given = 0;
       for (unsigned int g = 0; g < n_grains; ++g)
-        {
-          const double share =
-            std::max(0., n_u * grain_volumes[g] / total_volume - 1.);
-          const unsigned int whole =
-            std::min<unsigned int>(std::floor(share), free - given);
-          result.n_elementary[g] += whole;
-          given += whole;
-          remainder[g] = share - whole;
-        }
+        if (grain_volumes[g] > 0)
+          {
+            const double share =
+              std::max(0., n_u * grain_volumes[g] / total_volume - 1.);
+            const unsigned int whole =
+              std::min<unsigned int>(std::floor(share), free - given);
+            result.n_elementary[g] += whole;
+            given += whole;
+            remainder[g] = share - whole;
+          }
       std::vector<unsigned int> order(n_grains);
       std::iota(order.begin(), order.end(), 0);
       std::stable_sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
         return remainder[a] > remainder[b];
       });
-      for (unsigned int k = 0; given < free; k = (k + 1) % n_grains, ++given)
+      for (unsigned int k = 0; given < free; k = (k + 1) % n_occupied, ++given)
         ++result.n_elementary[order[k]];
     }
 
@@ -155,11 +165,14 @@ namespace qsmpm
       return grain_volumes[a] > grain_volumes[b];
     });
 
-    result.orientations.resize(n_grains);
+    result.orientations.assign(n_grains,
+                               Tensor<2, 3>(unit_symmetric_tensor<3>()));
     for (const unsigned int G : grains)
       {
-        const unsigned int N_G       = result.n_elementary[G];
-        int                seed_cell = -1;
+        const unsigned int N_G = result.n_elementary[G];
+        if (N_G == 0)
+          continue;
+        int seed_cell = -1;
         // Random seeds: a random remaining elementary volume.
         for (unsigned int trial = 0; trial < max_seed_trials && seed_cell < 0;
              ++trial)

@@ -17,7 +17,9 @@ namespace qsmpm
    *    orientation g_i (sample()).
    * 2. Grains from the largest to the smallest: grain G of volume V_G gets
    *    N_G = N_u V_G / V elementary volumes (rounded by largest remainders
-   *    so that the N_G add up to N_u). From the remaining list, N_G
+   *    so that the N_G add up to N_u; at least 1; grains of zero volume,
+   *    which no material point represents, get none and keep the identity
+   *    orientation). From the remaining list, N_G
    *    orientations are chosen whose disorientation (cubic symmetry) to a
    *    seed orientation of the list is below the threshold (default 7
    *    degrees), nearest to the seed first; their mean orientation is the

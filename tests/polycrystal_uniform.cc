@@ -1,0 +1,91 @@
+// A small columnar polycrystal with uniform texture through the whole
+// chain of the polycrystal example (Voronoi grains, texture assignment,
+// cubic crystals, six virtual tests with the paper's mixed boundary
+// conditions):
+//
+// - its in-plane modulus lies between the Reuss and Voigt values of its
+//   own (grain-volume weighted) orientations;
+// - its C (mean stress over mean strain, no symmetry assumed) is symmetric
+//   to 2 % of its norm;
+// - the C computed on all ranks equals the C computed by one rank alone
+//   (MPI_COMM_SELF) to 1e-5 relative (solver tolerances 1e-8);
+// - the orientations are the same on every rank.
+#include "tests.h"
+
+#include <filesystem>
+#include <qsmpm/base/rotation.h>
+#include <qsmpm/homogenization/columnar_voronoi.h>
+#include <qsmpm/homogenization/orientation_distribution.h>
+#include <qsmpm/homogenization/stiffness_bounds.h>
+#include <qsmpm/homogenization/texture_sampler.h>
+#include <qsmpm/homogenization/virtual_tests.h>
+#include <qsmpm/materials/cubic_elastic.h>
+
+using namespace qsmpm;
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+
+  const unsigned int            n_grains = 40, cells = 12, ppd = 2;
+  const ColumnarVoronoi         grains(n_grains, {{0., 0.}}, {{1., 1.}}, 3);
+  const auto                    areas = grains.areas(cells * ppd, cells * ppd);
+  const OrientationDistribution odf(
+    (std::filesystem::path(__FILE__).parent_path() / ".." / "examples" /
+     "polycrystal" / "odf" / "uniform.txt")
+      .string());
+  const auto            texture   = TextureSampler(4000).assign(odf, areas, 3);
+  const auto            C_crystal = Rotation::cubic_stiffness(249., 155., 114.);
+  const StiffnessBounds bounds(C_crystal, texture.orientations, areas);
+
+  // Every rank must hold the same orientations.
+  double sum = 0;
+  for (const auto &g : texture.orientations)
+    sum += g[0][0] + 2 * g[1][2] + 3 * g[2][1];
+  check("orientations: max - min of a checksum over the ranks",
+        Utilities::MPI::max(sum, MPI_COMM_WORLD) -
+          Utilities::MPI::min(sum, MPI_COMM_WORLD),
+        0.);
+
+  auto run = [&](const MPI_Comm comm) {
+    VirtualTests::Parameters p;
+    p.subdivisions            = {{cells, cells, 3}};
+    p.points_per_direction    = ppd;
+    p.solver.tolerance        = 1e-8;
+    p.solver.residual_floor   = 0.;
+    p.solver.linear_tolerance = 1e-8;
+    p.output_directory        = "results";
+    VirtualTests tests(p, comm);
+    tests.run([&]() {
+      auto m = std::make_unique<CubicElastic<3>>(249., 155., 114.);
+      m->set_orientation([&](const Point<3> &x) {
+        return texture.orientations[grains.grain(x)];
+      });
+      return std::unique_ptr<ConstitutiveModel<3>>(std::move(m));
+    });
+    return tests.stiffness_from_mean_strains();
+  };
+  const auto C   = run(MPI_COMM_WORLD);
+  const auto E   = StiffnessBounds::in_plane(C).E_in_plane;
+  const auto E_R = StiffnessBounds::in_plane(bounds.reuss()).E_in_plane;
+  const auto E_V = StiffnessBounds::in_plane(bounds.voigt()).E_in_plane;
+  deallog << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)"
+          << std::endl;
+  check_at_least("E_in-plane - E_Reuss", E - E_R, 0.);
+  check_at_least("E_Voigt - E_in-plane", E_V - E, 0.);
+  check("|C - C^T| / (2 |C|)", VirtualTests::relative_asymmetry(C), 0.02);
+
+  const auto C_self = run(MPI_COMM_SELF);
+  double     diff = 0, norm = 0;
+  for (unsigned int a = 0; a < 6; ++a)
+    for (unsigned int b = 0; b < 6; ++b)
+      {
+        diff += std::pow(C[a][b] - C_self[a][b], 2);
+        norm += C[a][b] * C[a][b];
+      }
+  check("|C(all ranks) - C(one rank)| / |C|, max over ranks",
+        Utilities::MPI::max(std::sqrt(diff / norm), MPI_COMM_WORLD),
+        1e-5);
+}
