@@ -308,6 +308,8 @@ namespace CompactTension
     // of the load with the fracture energy of the ligament and print what
     // the solver needed per step (the paper reports 1 to 6 Newton
     // iterations per step).
+    if (!curve.fallen_below(run_parameters.stop_fraction))
+      write_point_csv(problem, directory + "/points_final.csv", communicator);
     AssertThrow(curve.fallen_below(run_parameters.stop_fraction),
                 ExcMessage("compact_tension: the load did not fall below " +
                            std::to_string(run_parameters.stop_fraction) +

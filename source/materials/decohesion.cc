@@ -60,6 +60,7 @@ namespace qsmpm
                      fixed_normal)
     , band_width(band_width)
     , M(C[0][0][0][0])
+    , mu(C[0][1][0][1])
     , crack_region([](const Point<dim> &) { return true; })
   {
     AssertThrow(tensile_strength > 0,
@@ -258,6 +259,17 @@ namespace qsmpm
             w += dw;
             const SymmetricTensor<2, dim> nn = symmetrize(outer_product(n, n));
             stress -= (dw / L_c) * (C * nn);
+            // A completely failed crack that opens is traction free: also
+            // the shear traction t_s = sigma.n - tau_n n is released, by a
+            // tangential jump du_s = L_c t_s / mu (for isotropic C,
+            // C:sym(du_s (x) n).n = mu du_s when du_s is normal to n, which
+            // leaves tau_n = 0 unchanged).
+            if (w >= u0)
+              {
+                const Tensor<1, dim> t    = stress * n;
+                const Tensor<1, dim> slip = t - (t * n) * n;
+                stress -= (C * symmetrize(outer_product(slip, n))) / mu;
+              }
           }
       }
 

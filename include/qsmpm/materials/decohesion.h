@@ -29,8 +29,16 @@ namespace qsmpm
    * - Unloading and reloading are elastic at the current opening; after
    *   complete failure ([[u_n]] >= u0) the crack carries no tensile normal
    *   traction, ever again. Compression across an open crack is carried
-   *   elastically (there is no separate crack-closure law). Shear tractions
-   *   on the crack are not softened (mode I only).
+   *   elastically (there is no separate crack-closure law).
+   * - Mode I only: shear tractions on the crack plane are not softened,
+   *   but a completely failed crack that opens is traction free, its shear
+   *   traction is released too (by a tangential jump). With one point per
+   *   cell, on the centre line of the band, the shear strain there vanishes
+   *   by symmetry and this changes little; with 2x2 points per cell it
+   *   removes part of the shear locking of the broken band (see the
+   *   example's documentation). Releasing the shear already while the
+   *   crack softens (zero shear retention) makes the stress update jump
+   *   at initiation, and Newton's method then fails to converge.
    *
    * <h3>The smearing length</h3>
    * The paper defines L_c as the point volume divided by the crack area
@@ -162,7 +170,9 @@ namespace qsmpm
     const Tensor<1, dim>          fixed_normal;
     const double                  band_width;
     /// M = n.C:(n(x)n).n, the same for every n (isotropic C).
-    const double                            M;
+    const double M;
+    /// The shear modulus C_xyxy.
+    const double                            mu;
     std::function<bool(const Point<dim> &)> crack_region;
 
     /// Offsets of the fields within the model's state (from state_fields()).
