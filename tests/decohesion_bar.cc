@@ -1,0 +1,166 @@
+// A 1-D bar with one softening cell under displacement control, against the
+// analytical curve (REFERENCE_VALUES section 2): a strip of n cells, length
+// L, section A = h (per unit thickness), nu = 0 and u_y = 0 everywhere, the
+// left end fixed in x and the right end pulled by u = t. Only the middle
+// cell may crack (normal x). Then
+//   before the peak       P = E A u / L,
+//   peak                  P = tau_nf A at u = tau_nf L / E,
+//   after the peak        u = sigma L / E + u0 (1 - sigma / tau_nf),
+//                         i.e. dP/du = A / (L/E - u0/tau_nf),
+//   complete failure      at u = u0 = 2 G_f / tau_nf,
+//   dissipated energy     integral P du = G_f A.
+// Checked for one point per cell at h and h/2 (mesh objectivity: the
+// energies agree within 3 %) and for 2x2 points per cell (the smearing
+// length is the band width h, not the point size h/2). u0 = h/10, so that
+// the points do not leave the grid; L < E u0 / tau_nf (no snap-back).
+#include "tests.h"
+
+#include <deal.II/base/function.h>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/fracture/load_displacement_curve.h>
+#include <qsmpm/materials/decohesion.h>
+
+using namespace qsmpm;
+
+namespace
+{
+  const double E = 1000., tau = 1., G_f = 0.005, L = 1.;
+  const double u0 = 2. * G_f / tau;
+
+  /// u_x = t.
+  class Pull : public Function<2>
+  {
+  public:
+    Pull()
+      : Function<2>(2)
+    {
+    }
+    double
+    value(const Point<2> &, const unsigned int c) const override
+    {
+      return c == 0 ? get_time() : 0.;
+    }
+  };
+
+  LoadDisplacementCurve
+  run_bar(const unsigned int n_cells, const unsigned int points_per_direction)
+  {
+    const double          h = L / n_cells;
+    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    problem.pcout().set_condition(false);
+    problem.grid().make_box(Point<2>(), Point<2>(L, h), {{n_cells, 1}});
+    Tensor<1, 2> x_normal;
+    x_normal[0] = 1.;
+    auto model =
+      std::make_unique<Decohesion<2>>(E, 0., true, tau, G_f, x_normal, h);
+    const double x_band = (n_cells / 2 + 0.5) * h;
+    model->set_crack_region(
+      [=](const Point<2> &x) { return std::abs(x[0] - x_band) < 0.5 * h; });
+    problem.set_model(std::move(model));
+    problem.points().fill([](const Point<2> &) { return true; },
+                          points_per_direction,
+                          MaterialPointSet<2>::Placement::regular);
+
+    auto               &bcs = problem.boundary_conditions();
+    std::array<bool, 2> x_only{{true, false}}, y_only{{false, true}};
+    const auto          zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+    bcs.add_dirichlet_boundary(0, x_only, zero);
+    bcs.add_dirichlet_nodes(
+      "all y", [](const Point<2> &) { return true; }, y_only, zero);
+    const unsigned int right = bcs.dirichlet_conditions().size();
+    bcs.add_dirichlet_boundary(1, x_only, std::make_shared<Pull>());
+
+    auto &prm                                  = problem.parameters();
+    prm.nonlinear_solver.tolerance             = 1e-9;
+    prm.nonlinear_solver.residual_floor        = 0.;
+    prm.nonlinear_solver.linear_tolerance      = 1e-10;
+    prm.nonlinear_solver.max_line_search_steps = 4;
+    prm.load_stepping.n_steps                  = 220;
+    prm.load_stepping.final_load_factor        = 1.1 * u0;
+    prm.material_points.update_volumes         = false;
+    prm.output.directory                       = "results";
+    prm.output.interval                        = 0;
+
+    LoadDisplacementCurve curve;
+    problem.set_step_callback(
+      [&](const QuasiStaticProblem<2>::StepReport &report) {
+        curve.add(report.step,
+                  report.load_factor,
+                  problem.reactions()[right][0]);
+        return true;
+      });
+    problem.run();
+    return curve;
+  }
+
+  /// Check the curve of a bar of section A = L / n against the analytical
+  /// one; returns the dissipated energy.
+  double
+  check_bar(const unsigned int n_cells, const unsigned int points_per_direction)
+  {
+    const double A     = L / n_cells;
+    const auto   curve = run_bar(n_cells, points_per_direction);
+    deallog << n_cells << " cells, " << points_per_direction << "x"
+            << points_per_direction << " points per cell" << std::endl;
+
+    check("  peak load: |P_max / (tau_nf A) - 1|",
+          curve.peak_force() / (tau * A) - 1.,
+          0.01);
+    check("  peak displacement: |u_peak / (tau_nf L / E) - 1|",
+          curve.peak_displacement() / (tau * L / E) - 1.,
+          0.01);
+
+    // Post-peak slope from two points well inside the softening branch.
+    const auto &points = curve.points();
+    const auto  at     = [&](const double u) {
+      for (const auto &p : points)
+        if (p.displacement >= u - 1e-12)
+          return p;
+      return points.back();
+    };
+    const auto   p1 = at(0.25 * u0), p2 = at(0.75 * u0);
+    const double slope =
+      (p2.force - p1.force) / (p2.displacement - p1.displacement);
+    const double slope_exact = A / (L / E - u0 / tau);
+    check("  post-peak slope: |dP/du / (A / (L/E - u0/tau_nf)) - 1|",
+          slope / slope_exact - 1.,
+          0.02);
+
+    // Complete failure: the first step at which the force has vanished.
+    double u_failure = points.back().displacement;
+    for (const auto &p : points)
+      if (p.displacement > curve.peak_displacement() &&
+          p.force < 1e-6 * curve.peak_force())
+        {
+          u_failure = p.displacement;
+          break;
+        }
+    check("  opening at complete failure: |u_f / u0 - 1|",
+          u_failure / u0 - 1.,
+          0.02);
+    check("  traction free after failure: |P_last| / P_max",
+          points.back().force / curve.peak_force(),
+          1e-6);
+    const double energy = curve.work();
+    check("  dissipated energy: |int P du / (G_f A) - 1|",
+          energy / (G_f * A) - 1.,
+          0.02);
+    return energy / A;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+  const double                     g_h  = check_bar(10, 1);
+  const double                     g_h2 = check_bar(20, 1);
+  check("mesh objectivity: |G(h/2) / G(h) - 1| (energy per unit area)",
+        g_h2 / g_h - 1.,
+        0.03);
+  const double g_22 = check_bar(10, 2);
+  check("2x2 points per cell: |G(2x2) / G(1) - 1| (energy per unit area)",
+        g_22 / g_h - 1.,
+        0.02);
+}
