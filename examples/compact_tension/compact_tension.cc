@@ -179,15 +179,13 @@ namespace CompactTension
 
     QuasiStaticProblem<dim> problem(communicator);
     problem.parameters().parse_parameters(prm);
-    geometry.make_grid(problem.grid());
 
     // The material. The smearing length must follow the grid (see the
     // documentation of Decohesion: the crack band is one cell wide whatever
     // the number of points per cell), so we set "Crack band width" to h
     // here instead of asking for it twice in the parameter file. The
     // constructor checks the local stability limit L_c < M u0 / tau_nf and
-    // stops with a message if h is too large. Cracks may only form in the
-    // cells on the centre line, as in the paper.
+    // stops with a message if h is too large.
     prm.enter_subsection("Material");
     AssertThrow(prm.get("Model") == "decohesion",
                 ExcMessage("compact_tension: set Material/Model = "
@@ -200,18 +198,15 @@ namespace CompactTension
     const double u0     = model->critical_opening();
     prm.leave_subsection();
     prm.leave_subsection();
-    model->set_crack_region(
-      [&geometry](const Point<dim> &x) { return geometry.in_crack_band(x); });
-    problem.set_model(std::move(model));
 
-    // The body: points in every cell but those of the notch.
-    const auto &mp = problem.parameters().material_points;
-    problem.points().fill(
-      [&geometry](const Point<dim> &x) { return geometry.in_body(x); },
-      mp.points_per_direction,
-      mp.placement);
-    const unsigned int right_pin =
-      geometry.add_supports(problem.boundary_conditions());
+    // Grid, points in every cell but those of the notch, cracks only in the
+    // cells on the centre line as in the paper, and the two pins: all done
+    // by CompactTensionGeometry::setup(), which the tests use as well.
+    const auto        &mp        = problem.parameters().material_points;
+    const unsigned int right_pin = geometry.setup(problem,
+                                                  std::move(model),
+                                                  mp.points_per_direction,
+                                                  mp.placement);
 
     const std::string directory = problem.parameters().output.directory;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)

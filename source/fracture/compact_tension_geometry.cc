@@ -142,6 +142,32 @@ namespace qsmpm
 
 
   template <int dim>
+  unsigned int
+  CompactTensionGeometry<dim>::setup(
+    QuasiStaticProblem<dim>                        &problem,
+    std::unique_ptr<Decohesion<dim>>                model,
+    const unsigned int                              points_per_direction,
+    const typename MaterialPointSet<dim>::Placement placement) const
+  {
+    Tensor<1, dim> x_normal;
+    x_normal[0] = 1.;
+    AssertThrow(std::abs(model->smearing_length(x_normal) - cell_size()) <=
+                  1e-12 * cell_size(),
+                ExcMessage("Compact tension: the decohesion model's 'Crack "
+                           "band width' must equal the cell size h."));
+    make_grid(problem.grid());
+    model->set_crack_region(
+      [this](const Point<dim> &x) { return in_crack_band(x); });
+    problem.set_model(std::move(model));
+    problem.points().fill([this](const Point<dim> &x) { return in_body(x); },
+                          points_per_direction,
+                          placement);
+    return add_supports(problem.boundary_conditions());
+  }
+
+
+
+  template <int dim>
   bool
   CompactTensionGeometry<dim>::in_body(const Point<dim> &x) const
   {

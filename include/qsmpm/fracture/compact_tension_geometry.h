@@ -3,8 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <memory>
+#include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/materials/decohesion.h>
 #include <vector>
 
 namespace qsmpm
@@ -65,6 +68,19 @@ namespace qsmpm
     };
 
     explicit CompactTensionGeometry(const Parameters &parameters);
+
+    /**
+     * Set up @p problem for this specimen: the grid, the model (cracks only
+     * in the cells on the centre line, smearing length from h; the model's
+     * "Crack band width" must equal h), material points in the body with
+     * @p points_per_direction^dim per cell, and the pins. Returns the index
+     * of the pulled pin among the displacement conditions (see load()).
+     */
+    unsigned int
+    setup(QuasiStaticProblem<dim>                        &problem,
+          std::unique_ptr<Decohesion<dim>>                model,
+          const unsigned int                              points_per_direction,
+          const typename MaterialPointSet<dim>::Placement placement) const;
 
     /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D).
     void
