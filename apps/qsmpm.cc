@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iostream>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 
 namespace
@@ -83,9 +84,7 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "\n----------------------------------------------------\n"
-                << "qsmpm stopped: " << exc.what() << std::endl
-                << "----------------------------------------------------"
+      std::cerr << "qsmpm stopped: " << qsmpm::Utils::error_message(exc)
                 << std::endl;
       return 1;
     }

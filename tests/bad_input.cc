@@ -8,43 +8,21 @@
 #include "tests.h"
 
 #include <deal.II/base/function.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 
-// deal.II's exception text carries file names and line numbers; keep the
-// part meant for the user, on one line.
+// The message a user sees (Utils::error_message), with the list of models
+// in a Selection pattern cut: it grows with every registered model, and the
+// message names the entry and the value, which is what counts.
 std::string
 user_message(const std::exception &exc)
 {
-  std::string text = exc.what();
-  const auto  pos  = text.find("Additional information:");
-  if (pos != std::string::npos)
-    text = text.substr(pos + 23);
-  const auto end = text.find("Stacktrace:");
-  if (end != std::string::npos)
-    text = text.substr(0, end);
-  // The list of models in a Selection pattern grows with every registered
-  // model; the message names the entry and the value, which is what counts.
-  const auto selection = text.find("[Selection");
+  std::string text      = qsmpm::Utils::error_message(exc);
+  const auto  selection = text.find("[Selection");
   if (selection != std::string::npos)
     text = text.substr(0, selection) + "[Selection ...]";
-  // Drop separator lines of dashes, fold white space.
-  for (auto dashes = text.find("---"); dashes != std::string::npos;
-       dashes      = text.find("---"))
-    text.erase(dashes, text.find_first_not_of('-', dashes) - dashes);
-  std::string result;
-  bool        space = false;
-  for (const char c : text)
-    if (std::isspace(static_cast<unsigned char>(c)))
-      space = !result.empty();
-    else
-      {
-        if (space)
-          result += ' ';
-        result += c;
-        space = false;
-      }
-  return result;
+  return text;
 }
 
 void

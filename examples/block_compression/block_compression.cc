@@ -32,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <string>
@@ -428,10 +429,8 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "\n----------------------------------------------------\n"
-                << "block_compression stopped: " << exc.what() << std::endl
-                << "----------------------------------------------------"
-                << std::endl;
+      std::cerr << "block_compression stopped: "
+                << qsmpm::Utils::error_message(exc) << std::endl;
       return 1;
     }
   catch (...)

@@ -1,3 +1,4 @@
+#include <cctype>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <qsmpm/base/utilities.h>
@@ -124,5 +125,35 @@ namespace qsmpm
     QSMPM_INSTANTIATE(2)
     QSMPM_INSTANTIATE(3)
 #undef QSMPM_INSTANTIATE
+
+
+    std::string
+    error_message(const std::exception &exc)
+    {
+      std::string text = exc.what();
+      const auto  pos  = text.find("Additional information:");
+      if (pos != std::string::npos)
+        text = text.substr(pos + 23);
+      const auto end = text.find("Stacktrace:");
+      if (end != std::string::npos)
+        text = text.substr(0, end);
+      // Drop separator lines of dashes, fold white space.
+      for (auto dashes = text.find("---"); dashes != std::string::npos;
+           dashes      = text.find("---"))
+        text.erase(dashes, text.find_first_not_of('-', dashes) - dashes);
+      std::string result;
+      bool        space = false;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          space = !result.empty();
+        else
+          {
+            if (space)
+              result += ' ';
+            result += c;
+            space = false;
+          }
+      return result;
+    }
   } // namespace Utils
 } // namespace qsmpm

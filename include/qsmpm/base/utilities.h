@@ -4,6 +4,7 @@
 #include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,15 @@ namespace qsmpm
     /// Split @p text at @p delimiter, trimming white space, dropping empties.
     std::vector<std::string>
     split(const std::string &text, const char delimiter);
+
+    /**
+     * The part of an exception's text meant for a user, on one line:
+     * deal.II's exceptions carry the source file, line, violated condition
+     * and a stack trace around the "Additional information"; programs print
+     * only that information (or the whole text of other exceptions).
+     */
+    std::string
+    error_message(const std::exception &exc);
   } // namespace Utils
 } // namespace qsmpm
 
