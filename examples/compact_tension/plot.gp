@@ -1,0 +1,49 @@
+# Plots of the compact_tension runs, made with gnuplot (Debian: gnuplot-nox).
+# Run in the directory that holds output-b15, output-b30 and output-b60:
+#
+#   gnuplot /path/to/examples/compact_tension/plot.gp
+#
+# It writes load_deflection.png (the three P-delta curves, like the paper's
+# Fig. 3) and fields_b15.png (the normalized crack opening [[u_n]]/u0 and
+# stresses sigma_xx/tau_nf, sigma_yy/tau_nf at initiation, partial and
+# complete failure of b = 15 cm, like the paper's Fig. 4).
+set datafile separator ','
+
+set terminal pngcairo size 800,560 font ',11'
+set output 'load_deflection.png'
+set xlabel 'load-point displacement {/Symbol d} (mm)'
+set ylabel 'load P (kN)'
+set grid
+set key top right
+plot 'output-b15/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title 'b = 15 cm, h = 1 cm', \
+     'output-b30/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title 'b = 30 cm, h = 2 cm', \
+     'output-b60/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title 'b = 60 cm, h = 4 cm'
+
+# Point fields: one square per material point, coloured by its value.
+set terminal pngcairo size 1050,900 font ',9'
+set output 'fields_b15.png'
+unset grid
+unset key
+set size ratio -1
+unset xlabel
+unset ylabel
+set format x ''
+set format y ''
+set tics scale 0
+set palette rgbformulae 33,13,10
+set multiplot layout 3,3 rowsfirst
+stages = 'initiation partial complete'
+names  = 'initiation partial\ failure complete\ failure'
+do for [i=1:3] {
+  file = sprintf('output-b15/points_%s.csv', word(stages, i))
+  set title sprintf('%s: [[u_n]]/u_0', word(stages, i))
+  set cbrange [0:1]
+  plot file skip 1 using 1:2:3 with points pt 5 ps 0.75 palette
+  set title sprintf('%s: {/Symbol s}_{xx}/{/Symbol t}_{nf}', word(stages, i))
+  set cbrange [-1:1]
+  plot file skip 1 using 1:2:4 with points pt 5 ps 0.75 palette
+  set title sprintf('%s: {/Symbol s}_{yy}/{/Symbol t}_{nf}', word(stages, i))
+  set cbrange [-1:1]
+  plot file skip 1 using 1:2:5 with points pt 5 ps 0.75 palette
+}
+unset multiplot
