@@ -779,7 +779,8 @@ namespace Polycrystal
                                           {par.boundary_conditions[0]},
                                           pcout);
         record(s, r);
-        pcout << "    E_in-plane = " << rows.back()[3] << " GPa" << std::endl;
+        pcout << "    E_in-plane = " << std::setprecision(6) << rows.back()[3]
+              << " GPa" << std::endl;
       }
     double mean = 0, var = 0;
     for (const auto &row : rows)
@@ -806,8 +807,9 @@ namespace Polycrystal
             out << row[c] << (c < 5 ? "," : "\n");
         std::ofstream(par.output_directory + "/summary.txt") << summary.str();
       }
-    pcout << "  realizations: " << rows.size() << ", E_in-plane mean " << mean
-          << " GPa, standard deviation " << stddev << " GPa\n"
+    pcout << std::setprecision(6) << "  realizations: " << rows.size()
+          << ", E_in-plane mean " << mean << " GPa, standard deviation "
+          << stddev << " GPa\n"
           << "  wall time " << total_timer.wall_time() << " s; results in "
           << par.output_directory << "/" << std::endl;
   }
