@@ -30,6 +30,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/compact_tension_geometry.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
@@ -377,10 +378,8 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "\n----------------------------------------------------\n"
-                << "compact_tension stopped: " << exc.what() << std::endl
-                << "----------------------------------------------------"
-                << std::endl;
+      std::cerr << "compact_tension stopped: "
+                << qsmpm::Utils::error_message(exc) << std::endl;
       return 1;
     }
   catch (...)
