@@ -47,3 +47,22 @@ do for [i=1:3] {
   plot file skip 1 using 1:2:5 with points pt 5 ps 0.75 palette
 }
 unset multiplot
+
+# One against 2x2 points per cell for b = 15 cm (if b15-2x2.prm was run;
+# steps.csv is written even if a run ends early).
+if (strlen(system('ls output-b15-2x2/steps.csv 2>/dev/null')) > 0) {
+  set terminal pngcairo size 800,560 font ',11'
+  set output 'b15_points_per_cell.png'
+  set size noratio
+  set size 1,1
+  set format x '%g'
+  set format y '%g'
+  set tics scale 1
+  set grid
+  set key top right
+  set title 'b = 15 cm, h = 1 cm'
+  set xlabel 'load-point displacement {/Symbol d} (mm)'
+  set ylabel 'load P (kN)'
+  plot 'output-b15/steps.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '1 point per cell', \
+       'output-b15-2x2/steps.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '2x2 points per cell'
+}
