@@ -161,6 +161,12 @@ namespace CompactTension
 
 
   // @sect3{Setting up and running the problem}
+  //
+  // The sequence is that of every qsmpm program: read the parameters, make
+  // the grid, choose the model, fill the body with points, add supports,
+  // run. Only the model is made here rather than by the library's factory,
+  // because its crack band width must be the cell size and its cracking
+  // region the centre line of this particular grid.
   template <int dim>
   void
   run(const std::string &parameter_file)
