@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Run every qsmpm benchmark and write doc/benchmarks.md.
+#
+#   benchmarks/run_benchmarks.sh [build directory, default: build]
+#
+# Takes about 15-30 minutes on a 2-core machine. Needs a Release build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+bin=$build/benchmarks
+out=doc/benchmarks.md
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpirun="mpirun --oversubscribe"
+tmp=$(mktemp -d)
+
+echo "solver_scaling (serial) ..." >&2
+$bin/solver_scaling > "$tmp/scaling.csv"
+echo "kernel_ratios ..." >&2
+$bin/kernel_ratios 256 0 > "$tmp/ratios_2d.csv"
+$bin/kernel_ratios 0 32 > "$tmp/ratios_3d_32.csv"
+$bin/kernel_ratios 0 64 > "$tmp/ratios_3d_64.csv"
+echo "MPI: largest 3D case on 1 and 2 ranks ..." >&2
+$mpirun -np 1 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 0 > "$tmp/np1.csv"
+$mpirun -np 2 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 0 > "$tmp/np2.csv"
+
+value() { grep "^$2," "$1" | cut -d, -f2; }
+table() {
+  awk -F, 'NR == 1 { print "| " $1; for (i = 2; i <= NF; ++i) printf " | %s", $i; print " |";
+                     printf "|"; for (i = 1; i <= NF; ++i) printf "---|"; print ""; next }
+           { printf "| %s", $1; for (i = 2; i <= NF; ++i) printf " | %s", $i; print " |" }' "$1"
+}
+# GMRES iterations per Newton step with AMG, finest over coarsest grid.
+growth() {
+  awk -F, -v d="$2" '$1 == d && $5 == "amg" { r = $7 / $6; if (first == "") first = r; last = r }
+                     END { printf "%.2f (%.1f -> %.1f)", last / first, first, last }' "$1"
+}
+speedup=$(awk -F, 'FNR == 2 { t[FILENAME] = $8 } END { for (f in t) if (f ~ /np1/) a = t[f]; else b = t[f]; printf "%.2f", a / b }' "$tmp/np1.csv" "$tmp/np2.csv")
+
+{
+  echo "# Benchmarks"
+  echo
+  echo "Written by \`benchmarks/run_benchmarks.sh\` on $(date -u +%Y-%m-%d)."
+  echo
+  echo "## Machine"
+  echo
+  echo "- CPU: $(lscpu | sed -n 's/^Model name: *//p') ($(nproc) cores)"
+  echo "- Memory: $(free -g | awk '/Mem:/ {print $2}') GiB"
+  echo "- deal.II $(dpkg-query -W -f '${Version}' libdeal.ii-dev 2>/dev/null), Trilinos ML AMG, Open MPI"
+  echo "- Build: Release"
+  echo
+  echo "## Solver scaling"
+  echo
+  echo "Command: \`$bin/solver_scaling\`. One linear-elastic load step on a unit block with"
+  echo "2^dim points per cell (bottom clamped, top moved down and sideways), Newton tolerance 1e-6,"
+  echo "GMRES tolerance 1e-3 (the paper's), restart 200. \`gmres_iterations\` is summed over the"
+  echo "Newton iterations; \`seconds\` is the wall time of the whole load step. Unpreconditioned"
+  echo "cases above 256^2 (2D) and 32^3 (3D) cells are skipped: their cost grows with the grid."
+  echo
+  table "$tmp/scaling.csv"
+  echo
+  echo "GMRES iterations per Newton step with AMG, finest / coarsest grid: 2D $(growth "$tmp/scaling.csv" 2),"
+  echo "3D $(growth "$tmp/scaling.csv" 3) (target < 1.5)."
+  echo
+  echo "## JFNK against assembled matrices"
+  echo
+  echo "Command: \`$bin/kernel_ratios 256 0\`, \`$bin/kernel_ratios 0 32\`, \`$bin/kernel_ratios 0 64\`."
+  echo
+  echo "| case | residual / SpMV | JFNK step / assembled Newton step | bytes per point | peak memory (MB) |"
+  echo "|---|---|---|---|---|"
+  for f in "$tmp/ratios_2d.csv:2d_256" "$tmp/ratios_3d_32.csv:3d_32" "$tmp/ratios_3d_64.csv:3d_64"; do
+    file=${f%%:*}; tag=${f##*:}
+    printf "| %s | %.2f | %.2f | %.0f | %.0f |\n" "$tag" \
+      "$(value "$file" ${tag}_residual_over_vmult)" "$(value "$file" ${tag}_jfnk_over_assembled)" \
+      "$(value "$file" ${tag}_bytes_per_point)" "$(echo "$(value "$file" ${tag}_peak_memory_bytes) / 1e6" | bc -l)"
+  done
+  echo
+  echo "Targets: residual / SpMV <= 3, JFNK step / assembled step <= 1.5, <= 1024 bytes per point in 3D."
+  echo "Bytes per point: growth of the resident memory while the points are created and the"
+  echo "shape data cached, divided by the number of points (3D runs in a fresh process, so that"
+  echo "freed memory of another run is not reused)."
+  echo
+  echo "Raw output:"
+  echo
+  echo '```'
+  cat "$tmp/ratios_2d.csv" "$tmp/ratios_3d_32.csv" "$tmp/ratios_3d_64.csv"
+  echo '```'
+  echo
+  echo "## MPI"
+  echo
+  echo "Largest 3D case (64^3 cells, 2x2x2 points per cell, AMG) on 1 and 2 ranks:"
+  echo
+  table <(cat "$tmp/np1.csv"; tail -n +2 "$tmp/np2.csv")
+  echo
+  echo "Speed-up of the load step with 2 ranks: $speedup (target >= 1.6)."
+  echo
+  echo "## Paper runs"
+  echo
+  echo "The compact-tension (b = 15, 30, 60 cm) and polycrystal runs are not implemented yet;"
+  echo "their wall times will be added here with them."
+} > "$out"
+rm -rf "$tmp"
+echo "wrote $out" >&2
