@@ -14,7 +14,8 @@ namespace Benchmarks
 {
   using namespace dealii;
 
-  /// Top plate: u = t (0.5e-3, -1e-3, 0).
+  /// Top plate: u = t (1e-4, -1e-3, 0); the sideways part is small enough
+  /// that no point leaves the unit box on grids up to 512 cells across.
   template <int dim>
   class TopDisplacement : public Function<dim>
   {
@@ -26,7 +27,7 @@ namespace Benchmarks
     double
     value(const Point<dim> &, const unsigned int c) const override
     {
-      return this->get_time() * (c == 0 ? 0.5e-3 : (c == 1 ? -1e-3 : 0.));
+      return this->get_time() * (c == 0 ? 1e-4 : (c == 1 ? -1e-3 : 0.));
     }
   };
 

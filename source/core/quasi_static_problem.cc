@@ -188,7 +188,7 @@ namespace qsmpm
       TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
       const StepOperator op{*residual, constraints, preconditioner};
       const NewtonKrylov<StepOperator, VectorType> newton(
-        prm_values.nonlinear_solver);
+        prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
     }
     if (!report.converged)

@@ -60,6 +60,23 @@ namespace qsmpm
                         "Backtracking: halve the Newton correction at most "
                         "this many times while ||R|| does not decrease. 0 "
                         "gives the paper's full Newton steps.");
+      prm.declare_entry("Initial guess",
+                        "linear predictor",
+                        Patterns::Selection("boundary values|linear predictor"),
+                        "boundary values: the paper's du_0, the prescribed "
+                        "increments on constrained degrees of freedom and "
+                        "zero elsewhere; linear predictor: the solution of "
+                        "the problem linearized about zero free increments "
+                        "with the prescribed increments as data (one extra "
+                        "linear solve that makes the first Newton iterate "
+                        "independent of the cell size; a linear problem "
+                        "then converges in one iteration).");
+      prm.declare_entry("Verbose",
+                        "false",
+                        Patterns::Bool(),
+                        "Print one line per Newton iteration: ||R||, GMRES "
+                        "iterations and residual reached, line-search "
+                        "step length.");
     }
     prm.leave_subsection();
   }
@@ -81,6 +98,8 @@ namespace qsmpm
       max_line_search_steps = prm.get_integer("Line search steps");
       preconditioner        = prm.get("Preconditioner");
       eisenstat_walker      = prm.get("Forcing term") == "eisenstat-walker";
+      verbose               = prm.get_bool("Verbose");
+      linear_predictor      = prm.get("Initial guess") == "linear predictor";
     }
     prm.leave_subsection();
   }

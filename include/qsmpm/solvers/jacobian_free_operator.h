@@ -23,15 +23,21 @@ namespace qsmpm
   class JacobianFreeOperator
   {
   public:
+    /**
+     * The product at @p du, where R(du) = @p R_du. The norm of du in h may
+     * be replaced by @p scale (> 0), the size of the increments of interest,
+     * for linearizations at du = 0 (see NewtonKrylov's predictor).
+     */
     JacobianFreeOperator(const Operator   &op,
                          const VectorType &du,
                          const VectorType &R_du,
-                         const double      sqrt_eps_prec)
+                         const double      sqrt_eps_prec,
+                         const double      scale = 0.)
       : op(op)
       , du(du)
       , R_du(R_du)
       , sqrt_eps_prec(sqrt_eps_prec)
-      , du_norm(du.l2_norm())
+      , du_norm(scale > 0. ? scale : du.l2_norm())
     {
     }
 

@@ -2,8 +2,10 @@
 #define qsmpm_solvers_newton_krylov_h
 
 #include <cmath>
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <iomanip>
 #include <qsmpm/solvers/jacobian_free_operator.h>
 #include <qsmpm/solvers/newton_parameters.h>
 #include <string>
@@ -51,14 +53,36 @@ namespace qsmpm
   class NewtonKrylov
   {
   public:
-    explicit NewtonKrylov(const NewtonParameters &parameters)
+    /**
+     * With NewtonParameters::verbose, one line per iteration goes to
+     * @p log (a ConditionalOStream that is active on one rank only).
+     */
+    explicit NewtonKrylov(const NewtonParameters   &parameters,
+                          const ConditionalOStream *log = nullptr)
       : parameters(parameters)
+      , log(parameters.verbose ? log : nullptr)
     {
     }
 
     /**
      * Solve R(du) = 0 from the initial guess @p du. On return @p R holds the
      * residual of the returned @p du, including the constrained rows.
+     *
+     * With NewtonParameters::linear_predictor, the first iterate is not the
+     * paper's du_0 (the prescribed increments on constrained components,
+     * zero elsewhere) but the solution of the problem linearized about the
+     * free part of du_0, with the prescribed increments as data:
+     *
+     *   J(b) s = -(R(b) + J(b) g),   du_1 = b + g + s,
+     *
+     * where g is the constrained part of du_0 and b the rest. The paper's
+     * du_0 concentrates the whole prescribed increment in the first layer
+     * of cells at the boundary, with strains of order (increment / cell
+     * size) that grow as the grid is refined; linearizing there makes the
+     * first Newton steps poor. The predictor is the usual first iterate of
+     * finite-element codes and solves a linear problem in one iteration. It
+     * counts as a Newton iteration; the stopping test still uses the
+     * paper's ||R(du_0)||.
      */
     NewtonReport
     solve(const Operator &op, VectorType &du, VectorType &R) const
@@ -77,7 +101,10 @@ namespace qsmpm
         parameters.tolerance * std::max(parameters.residual_floor, norm);
 
       double forcing = parameters.linear_tolerance, previous_norm = norm;
-      for (unsigned int n = 0;; ++n)
+      if (parameters.linear_predictor && norm > target && std::isfinite(norm))
+        norm = predict(op, du, R, report);
+
+      for (unsigned int n = report.newton_iterations;; ++n)
         {
           report.final_residual = norm;
           if (!std::isfinite(norm))
@@ -90,7 +117,7 @@ namespace qsmpm
               report.converged = true;
               return report;
             }
-          if (n == parameters.max_iterations)
+          if (n >= parameters.max_iterations)
             {
               report.failure =
                 "no convergence in " + std::to_string(n) + " Newton iterations";
@@ -104,30 +131,9 @@ namespace qsmpm
           // A.1 step 4: J s = -R with constrained components of s zero.
           rhs = R;
           rhs *= -1.;
-          op.set_constrained_to_zero(rhs);
-          s = 0.;
           const JacobianFreeOperator<Operator, VectorType> J(
             op, du, R, parameters.sqrt_eps_prec);
-          SolverControl control(parameters.max_linear_iterations,
-                                parameters.linear_tolerance * rhs.l2_norm(),
-                                /*log_history=*/false,
-                                /*log_result=*/false);
-          // Right preconditioning: GMRES then measures the true residual.
-          typename SolverGMRES<VectorType>::AdditionalData data(
-            parameters.gmres_restart + 2, /*right_preconditioning=*/true);
-          SolverGMRES<VectorType> gmres(control, data);
-          try
-            {
-              gmres.solve(J, s, rhs, Preconditioner{op});
-            }
-          catch (const SolverControl::NoConvergence &)
-            {
-              // An inexact correction is still a descent direction in
-              // most cases; Newton's test decides.
-              ++report.inexact_linear_solves;
-            }
-          report.linear_iterations += control.last_step();
-          op.set_constrained_to_zero(s);
+          const double reduction = solve_linear(op, J, rhs, forcing, s, report);
 
           // A.1 step 5, with an optional backtracking line search.
           double alpha = 1.;
@@ -149,6 +155,7 @@ namespace qsmpm
             }
           du                       = trial;
           report.newton_iterations = n + 1;
+          print_iteration(report, norm, reduction, alpha);
         }
     }
 
@@ -173,6 +180,93 @@ namespace qsmpm
       return std::max(eta, 0.5 * target / norm);
     }
 
+    /**
+     * The linear predictor (see solve()): replaces @p du by b + g + s and
+     * @p R by its residual; returns the norm of the free part of R.
+     */
+    double
+    predict(const Operator &op,
+            VectorType     &du,
+            VectorType     &R,
+            NewtonReport   &report) const
+    {
+      VectorType base(du), rhs(du), s(du);
+      op.set_constrained_to_zero(base);
+      const double scale = du.l2_norm();
+      // rhs = -(R(b) + J(b) g), with g = du - b.
+      s = du;
+      s -= base;
+      op.residual(base, R);
+      const JacobianFreeOperator<Operator, VectorType> J(
+        op, base, R, parameters.sqrt_eps_prec, scale);
+      J.vmult(rhs, s);
+      rhs += R;
+      rhs *= -1.;
+      const double reduction =
+        solve_linear(op, J, rhs, parameters.linear_tolerance, s, report);
+      du += s;
+      op.residual(du, R);
+      const double norm        = free_norm(op, R, rhs);
+      report.newton_iterations = 1;
+      print_iteration(report, norm, reduction, 1.);
+      return norm;
+    }
+
+    /**
+     * GMRES on J s = rhs (constrained components of rhs and s zero) to the
+     * relative tolerance @p tolerance, with the operator's preconditioner on
+     * the right, so that GMRES measures the true residual. Returns the
+     * reduction of the linear residual that was reached.
+     */
+    double
+    solve_linear(const Operator                                   &op,
+                 const JacobianFreeOperator<Operator, VectorType> &J,
+                 VectorType                                       &rhs,
+                 const double                                      tolerance,
+                 VectorType                                       &s,
+                 NewtonReport                                     &report) const
+    {
+      op.set_constrained_to_zero(rhs);
+      s                      = 0.;
+      const double  rhs_norm = rhs.l2_norm();
+      SolverControl control(parameters.max_linear_iterations,
+                            tolerance * rhs_norm,
+                            /*log_history=*/false,
+                            /*log_result=*/false);
+      typename SolverGMRES<VectorType>::AdditionalData data(
+        parameters.gmres_restart + 2, /*right_preconditioning=*/true);
+      SolverGMRES<VectorType> gmres(control, data);
+      try
+        {
+          gmres.solve(J, s, rhs, Preconditioner{op});
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          // An inexact correction is still a descent direction in most
+          // cases; Newton's test decides.
+          ++report.inexact_linear_solves;
+        }
+      op.set_constrained_to_zero(s);
+      report.linear_iterations += control.last_step();
+      last_linear_iterations = control.last_step();
+      return rhs_norm > 0. ? control.last_value() / rhs_norm : 0.;
+    }
+
+    /// One line per Newton iteration if verbose.
+    void
+    print_iteration(const NewtonReport &report,
+                    const double        norm,
+                    const double        reduction,
+                    const double        alpha) const
+    {
+      if (log != nullptr)
+        *log << "    newton " << std::setw(2) << report.newton_iterations
+             << "  |R| " << std::scientific << std::setprecision(3) << norm
+             << "  gmres " << std::setw(4) << last_linear_iterations
+             << "  reduction " << reduction << "  step " << std::defaultfloat
+             << alpha << std::endl;
+    }
+
     /// The preconditioner as deal.II's solvers want it: a vmult().
     struct Preconditioner
     {
@@ -194,7 +288,9 @@ namespace qsmpm
       return scratch.l2_norm();
     }
 
-    const NewtonParameters parameters;
+    const NewtonParameters    parameters;
+    const ConditionalOStream *log;
+    mutable unsigned int      last_linear_iterations = 0;
   };
 } // namespace qsmpm
 

@@ -31,6 +31,12 @@ namespace qsmpm
     bool eisenstat_walker = false;
     /// Backtracking line search on ||R|| (halving, at most this many times).
     unsigned int max_line_search_steps = 0;
+    /// First iterate from the problem linearized about zero free
+    /// increments (see NewtonKrylov::solve()) instead of the paper's du_0.
+    bool linear_predictor = true;
+    /// Print one line per Newton iteration (on the stream given to the
+    /// solver).
+    bool verbose = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
