@@ -25,9 +25,9 @@ namespace qsmpm
    * F(M) = sum_{i<=M} f_i; and the misfit of a reconstructed ODF (paper,
    * after the algorithm of Section 4.3).
    *
-   * File format (plain text, as exported by MTEX with
-   * `export(odf, 'file.txt', 'Bunge', 'resolution', 5*degree)` restricted to
-   * the 0-90 degree box, or written by any program): one grid node per
+   * File format (plain text, the plain grid export of texture tools such as
+   * MTEX restricted to the 0-90 degree box, or written by any program): one
+   * grid node per
    * line, "phi1 Phi phi2 value", angles in degrees, all 19^3 = 6859 nodes
    * of the 5 degree grid exactly once, in any order. Empty lines and lines
    * starting with '#' or '%' are comments; non-numeric lines before the
