@@ -114,7 +114,7 @@ namespace Polycrystal
                         "Periodic tessellation of the film plane (grains cut "
                         "by one face continue on the opposite face).");
       prm.declare_entry("Cells in plane",
-                        "64",
+                        "96",
                         Patterns::Integer(1),
                         "Background grid cells along x and along y.");
       prm.declare_entry("Cells through thickness",
