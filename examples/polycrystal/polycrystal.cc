@@ -360,10 +360,7 @@ namespace Polycrystal
   run_sample(const Parameters               &par,
              const NewtonParameters         &solver,
              const OrientationDistribution  &odf,
-             const SymmetricTensor<4, 3>    &C_crystal,
-             const double                    C11,
-             const double                    C12,
-             const double                    C44,
+             const CubicElastic<3>          &crystal,
              const unsigned int              realization,
              const std::vector<std::string> &bcs,
              ConditionalOStream             &pcout)
@@ -398,7 +395,7 @@ namespace Polycrystal
     result.texture =
       sampler.assign(odf, result.grain_areas, result.texture_seed);
     result.bounds =
-      std::make_unique<StiffnessBounds>(C_crystal,
+      std::make_unique<StiffnessBounds>(crystal.crystal_stiffness(),
                                         result.texture.orientations,
                                         result.grain_areas);
 
@@ -424,7 +421,7 @@ namespace Polycrystal
         Timer        timer(MPI_COMM_WORLD, true);
         tests.run(
           [&]() {
-            auto model = std::make_unique<CubicElastic<3>>(C11, C12, C44);
+            auto model = std::make_unique<CubicElastic<3>>(crystal);
             model->set_orientation(
               [&](const Point<3> &x) { return orientations[grains.grain(x)]; });
             return std::unique_ptr<ConstitutiveModel<3>>(std::move(model));
@@ -535,20 +532,18 @@ namespace Polycrystal
     NewtonParameters solver;
     solver.parse_parameters(prm);
 
+    // The crystal model of "Material/cubic elastic" (its constructor checks
+    // the constants); every test copies it and gives the copy the grains'
+    // orientations.
     prm.enter_subsection("Material");
     AssertThrow(prm.get("Model") == "cubic elastic",
                 ExcMessage("The polycrystal needs the cubic crystal model: "
                            "set Material/Model = cubic elastic."));
     prm.enter_subsection("cubic elastic");
-    const double C11 = prm.get_double("C11");
-    const double C12 = prm.get_double("C12");
-    const double C44 = prm.get_double("C44");
+    const CubicElastic<3> crystal(prm);
     prm.leave_subsection();
     prm.leave_subsection();
-    const SymmetricTensor<4, 3> C_crystal =
-      Rotation::cubic_stiffness(C11, C12, C44);
-    // Constructing the model once checks the constants.
-    CubicElastic<3>(C11, C12, C44);
+    const SymmetricTensor<4, 3> &C_crystal = crystal.crystal_stiffness();
 
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     ConditionalOStream            pcout(std::cout, root);
@@ -568,16 +563,8 @@ namespace Polycrystal
     // The first realization, with every kind of boundary condition.
     pcout << "  realization 0 (grain seed " << par.grain_seed
           << ", texture seed " << par.texture_seed << ")" << std::endl;
-    const SampleResult first = run_sample(par,
-                                          solver,
-                                          odf,
-                                          C_crystal,
-                                          C11,
-                                          C12,
-                                          C44,
-                                          0,
-                                          par.boundary_conditions,
-                                          pcout);
+    const SampleResult first =
+      run_sample(par, solver, odf, crystal, 0, par.boundary_conditions, pcout);
 
     const auto E_V = StiffnessBounds::in_plane(first.bounds->voigt());
     const auto E_R = StiffnessBounds::in_plane(first.bounds->reuss());
@@ -768,16 +755,8 @@ namespace Polycrystal
     for (unsigned int r = 1; r < par.n_realizations; ++r)
       {
         pcout << "  realization " << r << std::endl;
-        const SampleResult s = run_sample(par,
-                                          solver,
-                                          odf,
-                                          C_crystal,
-                                          C11,
-                                          C12,
-                                          C44,
-                                          r,
-                                          {par.boundary_conditions[0]},
-                                          pcout);
+        const SampleResult s = run_sample(
+          par, solver, odf, crystal, r, {par.boundary_conditions[0]}, pcout);
         record(s, r);
         pcout << "    E_in-plane = " << std::setprecision(6) << rows.back()[3]
               << " GPa" << std::endl;
