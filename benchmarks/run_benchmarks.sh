@@ -24,19 +24,25 @@ $mpirun -np 1 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 
 $mpirun -np 2 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 0 > "$tmp/np2.csv"
 
 echo "paper runs: compact tension b = 15, 30, 60 cm; polycrystal on 1 and 2 ranks ..." >&2
-seconds() { local t0; t0=$(date +%s.%N); "$@"; echo "$(date +%s.%N) - $t0" | bc -l; }
+# timed <directory> <log> <command...>: run the command in the directory with
+# its output in <log>, and write its wall time in seconds to <log>.seconds.
+timed() {
+  local dir=$1 log=$2 t0
+  shift 2
+  t0=$(date +%s.%N)
+  (cd "$dir" && "$@") > "$log" 2>&1
+  echo "$(date +%s.%N) - $t0" | bc -l > "$log.seconds"
+}
 for b in 15 30 60; do
-  (cd "$build/examples/compact_tension" &&
-    seconds ./compact_tension b$b.prm > "$tmp/cts_b$b.log" 2>&1 | tail -1 > "$tmp/cts_b$b.seconds")
+  timed "$build/examples/compact_tension" "$tmp/cts_b$b.log" ./compact_tension b$b.prm
 done
 for np in 1 2; do
-  (cd "$build/examples/polycrystal" &&
-    seconds $mpirun -np $np ./polycrystal polycrystal.prm > "$tmp/poly_np$np.log" 2>&1 | tail -1 > "$tmp/poly_np$np.seconds")
+  timed "$build/examples/polycrystal" "$tmp/poly_np$np.log" $mpirun -np $np ./polycrystal polycrystal.prm
 done
 
 value() { grep "^$2," "$1" | cut -d, -f2; }
 table() {
-  awk -F, 'NR == 1 { print "| " $1; for (i = 2; i <= NF; ++i) printf " | %s", $i; print " |";
+  awk -F, 'NR == 1 { printf "| %s", $1; for (i = 2; i <= NF; ++i) printf " | %s", $i; print " |";
                      printf "|"; for (i = 1; i <= NF; ++i) printf "---|"; print ""; next }
            { printf "| %s", $1; for (i = 2; i <= NF; ++i) printf " | %s", $i; print " |" }' "$1"
 }
@@ -113,7 +119,7 @@ speedup=$(awk -F, 'FNR == 2 { t[FILENAME] = $8 } END { for (f in t) if (f ~ /np1
   for b in 15 30 60; do
     log="$tmp/cts_b$b.log"
     printf "| compact tension b = %s cm | \`compact_tension b%s.prm\` | %.1f | %s; %s; %s |\n" "$b" "$b" \
-      "$(cat "$tmp/cts_b$b.seconds")" \
+      "$(cat "$tmp/cts_b$b.log.seconds")" \
       "$(grep -m1 'peak load' "$log" | sed 's/^ *//; s/  */ /g')" \
       "$(grep -m1 'energy ratio' "$log" | sed 's/^ *//; s/  */ /g')" \
       "$(grep -m1 'Newton iterations per step' "$log" | sed 's/^ *//; s/  */ /g')"
@@ -121,7 +127,7 @@ speedup=$(awk -F, 'FNR == 2 { t[FILENAME] = $8 } END { for (f in t) if (f ~ /np1
   for np in 1 2; do
     summary="$build/examples/polycrystal/polycrystal-output/summary.txt"
     printf "| polycrystal, %s rank(s) | \`mpirun -np %s polycrystal polycrystal.prm\` | %.1f | %s |\n" "$np" "$np" \
-      "$(cat "$tmp/poly_np$np.seconds")" \
+      "$(cat "$tmp/poly_np$np.log.seconds")" \
       "$(grep -E '^(n_grains|n_points|E_in_plane_GPa) ' "$summary" | tr '\n' ';' | sed 's/;$//; s/;/; /g')"
   done
   echo
