@@ -3,7 +3,6 @@
 //   qsmpm problem.prm          run it
 //   qsmpm --print-parameters   every parameter, its default and documentation
 #include <deal.II/base/mpi.h>
-#include <fstream>
 #include <iostream>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
@@ -11,27 +10,6 @@
 namespace
 {
   using namespace dealii;
-
-  unsigned int
-  read_dimension(const std::string &filename)
-  {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension of the problem: 2 or 3.");
-    // Only "Dimension" is looked at here; the full file is checked later.
-    std::ifstream in(filename);
-    AssertThrow(in,
-                ExcMessage("Cannot open the parameter file <" + filename +
-                           ">."));
-    std::string line;
-    while (std::getline(in, line))
-      if (line.find("Dimension") != std::string::npos &&
-          line.find("set") != std::string::npos)
-        prm.parse_input_from_string(line);
-    return prm.get_integer("Dimension");
-  }
 
   template <int dim>
   void
@@ -77,7 +55,7 @@ main(int argc, char *argv[])
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
-      if (read_dimension(argument) == 2)
+      if (qsmpm::Utils::read_dimension(argument) == 2)
         run<2>(argument);
       else
         run<3>(argument);

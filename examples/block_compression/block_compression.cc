@@ -375,22 +375,6 @@ namespace BlockCompression
 
 
 
-  // @sect3{Reading the dimension}
-  //
-  // The dimension is a template argument, so it has to be known before the
-  // parameters of the problem can be declared. We read the file once,
-  // declaring only "Dimension" and skipping everything else.
-  unsigned int
-  read_dimension(const std::string &parameter_file)
-  {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension",
-                      "2",
-                      Patterns::Integer(2, 3),
-                      "Space dimension of the problem: 2 or 3.");
-    prm.parse_input(parameter_file, "", /*skip_undefined=*/true);
-    return prm.get_integer("Dimension");
-  }
 } // namespace BlockCompression
 
 
@@ -420,10 +404,11 @@ main(int argc, char *argv[])
                   dealii::ExcMessage("Cannot find the parameter file <" +
                                      parameter_file + ">."));
 
-      const bool passed =
-        BlockCompression::read_dimension(parameter_file) == 2 ?
-          BlockCompression::run<2>(parameter_file) :
-          BlockCompression::run<3>(parameter_file);
+      // The dimension is a template argument, so it is read from the file
+      // before anything else can be declared.
+      const bool passed = qsmpm::Utils::read_dimension(parameter_file) == 2 ?
+                            BlockCompression::run<2>(parameter_file) :
+                            BlockCompression::run<3>(parameter_file);
       if (!passed)
         return 1;
     }

@@ -1,5 +1,6 @@
 #include <cctype>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <qsmpm/base/utilities.h>
 
@@ -154,6 +155,19 @@ namespace qsmpm
             space = false;
           }
       return result;
+    }
+
+
+    unsigned int
+    read_dimension(const std::string &filename)
+    {
+      ParameterHandler prm;
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension of the problem: 2 or 3.");
+      prm.parse_input(filename, "", /*skip_undefined=*/true);
+      return prm.get_integer("Dimension");
     }
   } // namespace Utils
 } // namespace qsmpm

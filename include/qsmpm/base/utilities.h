@@ -87,6 +87,15 @@ namespace qsmpm
      */
     std::string
     error_message(const std::exception &exc);
+
+    /**
+     * The entry "Dimension" (2 or 3, default 2) of the parameter file
+     * @p filename, read before anything else can be declared: the dimension
+     * is a template argument of everything else. All other entries and
+     * subsections are skipped here and checked when the whole file is read.
+     */
+    unsigned int
+    read_dimension(const std::string &filename);
   } // namespace Utils
 } // namespace qsmpm
 
