@@ -133,7 +133,8 @@ namespace qsmpm
           rhs *= -1.;
           const JacobianFreeOperator<Operator, VectorType> J(
             op, du, R, parameters.sqrt_eps_prec);
-          const double reduction = solve_linear(op, J, rhs, forcing, s, report);
+          const LinearSolve linear =
+            solve_linear(op, J, rhs, forcing, s, report);
 
           // A.1 step 5, with an optional backtracking line search.
           double alpha = 1.;
@@ -155,7 +156,7 @@ namespace qsmpm
             }
           du                       = trial;
           report.newton_iterations = n + 1;
-          print_iteration(report, norm, reduction, alpha);
+          print_iteration(report, norm, linear, alpha);
         }
     }
 
@@ -202,23 +203,30 @@ namespace qsmpm
       J.vmult(rhs, s);
       rhs += R;
       rhs *= -1.;
-      const double reduction =
+      const LinearSolve linear =
         solve_linear(op, J, rhs, parameters.linear_tolerance, s, report);
       du += s;
       op.residual(du, R);
       const double norm        = free_norm(op, R, rhs);
       report.newton_iterations = 1;
-      print_iteration(report, norm, reduction, 1.);
+      print_iteration(report, norm, linear, 1.);
       return norm;
     }
+
+    /// What one GMRES solve did.
+    struct LinearSolve
+    {
+      unsigned int iterations;
+      /// Reduction of the linear residual that was reached.
+      double reduction;
+    };
 
     /**
      * GMRES on J s = rhs (constrained components of rhs and s zero) to the
      * relative tolerance @p tolerance, with the operator's preconditioner on
-     * the right, so that GMRES measures the true residual. Returns the
-     * reduction of the linear residual that was reached.
+     * the right, so that GMRES measures the true residual.
      */
-    double
+    LinearSolve
     solve_linear(const Operator                                   &op,
                  const JacobianFreeOperator<Operator, VectorType> &J,
                  VectorType                                       &rhs,
@@ -248,23 +256,23 @@ namespace qsmpm
         }
       op.set_constrained_to_zero(s);
       report.linear_iterations += control.last_step();
-      last_linear_iterations = control.last_step();
-      return rhs_norm > 0. ? control.last_value() / rhs_norm : 0.;
+      return {control.last_step(),
+              rhs_norm > 0. ? control.last_value() / rhs_norm : 0.};
     }
 
     /// One line per Newton iteration if verbose.
     void
     print_iteration(const NewtonReport &report,
                     const double        norm,
-                    const double        reduction,
+                    const LinearSolve  &linear,
                     const double        alpha) const
     {
       if (log != nullptr)
         *log << "    newton " << std::setw(2) << report.newton_iterations
              << "  |R| " << std::scientific << std::setprecision(3) << norm
-             << "  gmres " << std::setw(4) << last_linear_iterations
-             << "  reduction " << reduction << "  step " << std::defaultfloat
-             << alpha << std::endl;
+             << "  gmres " << std::setw(4) << linear.iterations
+             << "  reduction " << linear.reduction << "  step "
+             << std::defaultfloat << alpha << std::endl;
     }
 
     /// The preconditioner as deal.II's solvers want it: a vmult().
@@ -290,7 +298,6 @@ namespace qsmpm
 
     const NewtonParameters    parameters;
     const ConditionalOStream *log;
-    mutable unsigned int      last_linear_iterations = 0;
   };
 } // namespace qsmpm
 
