@@ -23,6 +23,7 @@
 #include <iostream>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
+#include <qsmpm/core/step_operator.h>
 #include <qsmpm/loading/boundary_conditions.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/solvers/newton_krylov.h>
@@ -32,29 +33,6 @@ namespace
 {
   using namespace dealii;
   using VectorType = TrilinosWrappers::MPI::Vector;
-
-  template <int dim>
-  struct StepOperator
-  {
-    const qsmpm::QuasiStaticResidual<dim> &residual_evaluator;
-    const AffineConstraints<double>       &constraints;
-    const qsmpm::Preconditioner<dim>      &preconditioner;
-    void
-    residual(const VectorType &du, VectorType &R) const
-    {
-      residual_evaluator.evaluate(du, R);
-    }
-    void
-    set_constrained_to_zero(VectorType &v) const
-    {
-      constraints.set_zero(v);
-    }
-    void
-    precondition(VectorType &dst, const VectorType &src) const
-    {
-      preconditioner.vmult(dst, src);
-    }
-  };
 
   void
   print(const std::string &key, const double value)
@@ -142,9 +120,14 @@ namespace
     amg.setup(tangent.matrix(), grid);
     du = 0.;
     constraints.distribute(du);
-    const StepOperator<dim> op{residual, constraints, amg};
-    const auto              report =
-      qsmpm::NewtonKrylov<StepOperator<dim>, VectorType>(parameters)
+    qsmpm::StepConstraints step_constraints;
+    step_constraints.reinit(constraints,
+                            grid.locally_owned_dofs(),
+                            grid.locally_relevant_dofs(),
+                            comm);
+    const qsmpm::StepOperator<dim> op(residual, step_constraints, amg);
+    const auto                     report =
+      qsmpm::NewtonKrylov<qsmpm::StepOperator<dim>, VectorType>(parameters)
         .solve(op, du, R);
     const double t_jfnk = timer.wall_time();
     AssertThrow(report.converged, ExcMessage("JFNK step did not converge"));

@@ -1,7 +1,7 @@
 // Bad input must stop with a message that names the cause:
 //  - an out-of-range value in a .prm file,
 //  - an unknown entry,
-//  - a malformed or impossible boundary condition,
+//  - a malformed or impossible boundary condition (also periodic ones),
 //  - a missing parameter file,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points.
@@ -75,6 +75,20 @@ main(int argc, char *argv[])
   try_input("wrong number of coordinates",
             "subsection Geometry\n"
             "  set Upper corner = 1,1,1\n"
+            "end\n");
+
+  try_input("periodic direction that is not a letter x, y",
+            "subsection Geometry\n"
+            "  set Periodic directions = xq\n"
+            "end\n");
+  try_input("periodic direction with one cell across",
+            "subsection Geometry\n"
+            "  set Subdivisions = 1, 4\n"
+            "  set Periodic directions = x\n"
+            "end\n");
+  try_input("macroscopic gradient with the wrong number of entries",
+            "subsection Boundary conditions\n"
+            "  set Macroscopic displacement gradient = 1e-3, 0, 0\n"
             "end\n");
 
   // A missing file.

@@ -10,15 +10,25 @@ namespace qsmpm
   void
   TangentAssembler<dim>::reinit(const BackgroundGrid<dim> &grid)
   {
-    // Constraints never couple two degrees of freedom here (only fixed
-    // values), so the pattern of the grid serves every load step.
+    // Displacement conditions only fix values, but periodicity constraints
+    // couple the nodes of opposite faces: condensing them adds the slave's
+    // couplings to its master's row. Those are the only couplings that do
+    // not change from step to step, so this pattern serves every step.
+    AffineConstraints<double> periodicity(grid.locally_relevant_dofs());
+    grid.make_periodicity_constraints(periodicity);
+    periodicity.close();
+    IndexSet writable_rows = grid.locally_relevant_dofs();
+    for (const auto &line : periodicity.get_lines())
+      for (const auto &entry : line.entries)
+        writable_rows.add_index(entry.first);
+    writable_rows.compress();
     TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
-                                              grid.locally_relevant_dofs(),
+                                              writable_rows,
                                               grid.get_communicator());
     DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
                                     pattern,
-                                    AffineConstraints<double>(),
+                                    periodicity,
                                     /*keep_constrained_dofs=*/true,
                                     dealii::Utilities::MPI::this_mpi_process(
                                       grid.get_communicator()));

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/core/step_operator.h>
 #include <sstream>
 
 namespace qsmpm
@@ -169,6 +170,10 @@ namespace qsmpm
                            t_old,
                            t_new,
                            constraints);
+      step_constraints.reinit(constraints,
+                              background_grid.locally_owned_dofs(),
+                              background_grid.locally_relevant_dofs(),
+                              communicator);
       bcs.assemble_external_force(
         background_grid, cache, points().get_offsets().volume, t_new, f_ext);
       residual->set_external_force(f_ext);
@@ -182,12 +187,12 @@ namespace qsmpm
 
     // A.1 step 1: zero initial guess but for the prescribed increments.
     du = 0.;
-    constraints.distribute(du);
+    step_constraints.distribute(du);
 
     {
-      TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
-      const StepOperator op{*residual, constraints, preconditioner};
-      const NewtonKrylov<StepOperator, VectorType> newton(
+      TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
+      const StepOperator<dim> op(*residual, step_constraints, preconditioner);
+      const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
     }
@@ -350,37 +355,6 @@ namespace qsmpm
   QuasiStaticProblem<dim>::timer()
   {
     return timer_output;
-  }
-
-
-
-  template <int dim>
-  void
-  QuasiStaticProblem<dim>::StepOperator::residual(const VectorType &du,
-                                                  VectorType       &R) const
-  {
-    residual_evaluator.evaluate(du, R);
-  }
-
-
-
-  template <int dim>
-  void
-  QuasiStaticProblem<dim>::StepOperator::set_constrained_to_zero(
-    VectorType &v) const
-  {
-    constraints.set_zero(v);
-  }
-
-
-
-  template <int dim>
-  void
-  QuasiStaticProblem<dim>::StepOperator::precondition(
-    VectorType       &dst,
-    const VectorType &src) const
-  {
-    preconditioner.vmult(dst, src);
   }
 
 

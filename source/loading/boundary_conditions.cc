@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/boundary_conditions.h>
+#include <unordered_map>
 
 namespace qsmpm
 {
@@ -28,6 +29,14 @@ namespace qsmpm
                         Patterns::List(Patterns::Integer(0)),
                         "Boundary ids loaded by the function of subsection "
                         "<Traction> (force per area, t = load factor).");
+      prm.declare_entry(
+        "Macroscopic displacement gradient",
+        "",
+        Patterns::Anything(),
+        "For a grid with <Periodic directions>: the displacement gradient H "
+        "(dim x dim numbers, row by row, multiplied by the load factor t), "
+        "so that u = t H x + a periodic fluctuation; across a periodic "
+        "direction d the displacement jumps by t H L_d e_d. Empty: H = 0.");
       const std::string zero = dim == 2 ? "0; 0" : "0; 0; 0";
       for (const std::string name : {"Displacement", "Traction", "Body force"})
         {
@@ -48,8 +57,9 @@ namespace qsmpm
   BoundaryConditions<dim>::Parameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
-    dirichlet = prm.get("Dirichlet boundaries");
-    traction  = prm.get("Traction boundaries");
+    dirichlet            = prm.get("Dirichlet boundaries");
+    traction             = prm.get("Traction boundaries");
+    macroscopic_gradient = prm.get("Macroscopic displacement gradient");
     prm.leave_subsection();
   }
 
@@ -102,6 +112,21 @@ namespace qsmpm
                                components,
                                parsed_displacement,
                                normal_only);
+      }
+    if (!parameters.macroscopic_gradient.empty())
+      {
+        const auto entries = Utils::split(parameters.macroscopic_gradient, ',');
+        AssertThrow(entries.size() == dim * dim,
+                    ExcMessage("Boundary conditions: <Macroscopic displacement "
+                               "gradient> needs " +
+                               std::to_string(dim * dim) + " numbers, got " +
+                               std::to_string(entries.size()) + "."));
+        Tensor<2, dim> H;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            H[i][j] = dealii::Utilities::string_to_double(entries[i * dim + j]);
+        set_macroscopic_displacement_gradient(
+          [H](const double t) { return t * H; });
       }
     for (const auto &entry : Utils::split(parameters.traction, ','))
       add_traction(dealii::Utilities::string_to_int(entry), parsed_traction);
@@ -178,6 +203,18 @@ namespace qsmpm
 
   template <int dim>
   void
+  BoundaryConditions<dim>::set_macroscopic_displacement_gradient(
+    const std::function<Tensor<2, dim>(const double)> &H,
+    const Point<dim>                                  &reference)
+  {
+    macroscopic_gradient  = H;
+    macroscopic_reference = reference;
+  }
+
+
+
+  template <int dim>
+  void
   BoundaryConditions<dim>::add_point_load(const Point<dim>     &location,
                                           const Tensor<1, dim> &force)
   {
@@ -224,6 +261,12 @@ namespace qsmpm
     constraints.clear();
     constraints.reinit(grid.locally_relevant_dofs());
     constrained_dofs.assign(dirichlet.size(), {});
+    AssertThrow(!macroscopic_gradient || !grid.periodic_directions().empty(),
+                ExcMessage("A macroscopic displacement gradient needs a grid "
+                           "with periodic directions (Geometry: <Periodic "
+                           "directions>)."));
+    if (!grid.periodic_directions().empty())
+      add_periodicity_constraints(grid, t_old, t_new, constraints);
 
     const IndexSet &owned = grid.locally_owned_dofs();
     Vector<double>  g_old(dim), g_new(dim);
@@ -311,6 +354,79 @@ namespace qsmpm
         constraints.add_line(dof);
 
     constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_periodicity_constraints(
+    const BackgroundGrid<dim> &grid,
+    const double               t_old,
+    const double               t_new,
+    AffineConstraints<double> &constraints) const
+  {
+    grid.make_periodicity_constraints(constraints);
+    const Tensor<2, dim> dH = macroscopic_gradient ?
+                                Tensor<2, dim>(macroscopic_gradient(t_new) -
+                                               macroscopic_gradient(t_old)) :
+                                Tensor<2, dim>();
+
+    // Node and component of every locally relevant degree of freedom.
+    std::unordered_map<types::global_dof_index,
+                       std::pair<Point<dim>, unsigned int>>
+      nodes;
+    nodes.reserve(grid.locally_relevant_dofs().n_elements());
+    for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            nodes.emplace(cell->vertex_dof_index(v, c),
+                          std::make_pair(cell->vertex(v), c));
+    auto node = [&](const types::global_dof_index dof) {
+      const auto it = nodes.find(dof);
+      AssertThrow(it != nodes.end(),
+                  ExcMessage("Periodicity constraints: a node tied across "
+                             "the period is not in the ghost layer."));
+      return it->second;
+    };
+
+    // Every line is u_s = u_m between two nodes one period (or, at edges
+    // and corners, several) apart: u_s - u_m = H (x_s - x_m).
+    std::vector<std::pair<types::global_dof_index, double>> jumps;
+    for (const auto &line : constraints.get_lines())
+      {
+        AssertThrow(line.entries.size() == 1 &&
+                      std::abs(line.entries[0].second - 1.) < 1e-12,
+                    ExcMessage("Periodicity constraints: expected one node "
+                               "tied to one node."));
+        const auto [x_s, c]   = node(line.index);
+        const auto [x_m, c_m] = node(line.entries[0].first);
+        AssertThrow(c == c_m,
+                    ExcMessage("Periodicity constraints: components differ."));
+        jumps.emplace_back(line.index, (dH * (x_s - x_m))[c]);
+      }
+    for (const auto &[dof, jump] : jumps)
+      constraints.set_inhomogeneity(dof, jump);
+
+    // Fully periodic: hold the free corner node (all corners are tied to it).
+    if (grid.periodic_directions().size() < dim)
+      return;
+    const Point<dim> &lower = grid.lower_corner(), &upper = grid.upper_corner();
+    const double      tolerance = 1e-10 * lower.distance(upper);
+    for (const auto &[dof, x_c] : nodes)
+      {
+        bool corner = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          corner = corner && (std::abs(x_c.first[d] - lower[d]) < tolerance ||
+                              std::abs(x_c.first[d] - upper[d]) < tolerance);
+        if (corner && !constraints.is_constrained(dof))
+          {
+            constraints.add_line(dof);
+            constraints.set_inhomogeneity(
+              dof, (dH * (x_c.first - macroscopic_reference))[x_c.second]);
+          }
+      }
   }
 
 

@@ -14,6 +14,7 @@
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/loading/boundary_conditions.h>
 #include <qsmpm/loading/load_stepper.h>
+#include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -150,21 +151,6 @@ namespace qsmpm
     timer();
 
   private:
-    /// The nonlinear problem of one load step, as NewtonKrylov sees it.
-    struct StepOperator
-    {
-      const QuasiStaticResidual<dim>  &residual_evaluator;
-      const AffineConstraints<double> &constraints;
-      const Preconditioner<dim>       &preconditioner;
-
-      void
-      residual(const VectorType &du, VectorType &R) const;
-      void
-      set_constrained_to_zero(VectorType &v) const;
-      void
-      precondition(VectorType &dst, const VectorType &src) const;
-    };
-
     void
     setup_step_data();
 
@@ -181,6 +167,7 @@ namespace qsmpm
     TangentAssembler<dim>                     tangent;
     Preconditioner<dim>                       preconditioner;
     AffineConstraints<double>                 constraints;
+    StepConstraints                           step_constraints;
     VectorType                                du;
     VectorType                                R;
     VectorType                                f_ext;

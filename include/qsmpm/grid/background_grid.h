@@ -9,6 +9,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <vector>
 
 namespace qsmpm
 {
@@ -28,6 +30,13 @@ namespace qsmpm
    * Boundary ids are those of GridGenerator::subdivided_hyper_rectangle with
    * colorize = true: 2d for the face x_d = lower corner, 2d+1 for x_d = upper
    * corner (0 = left, 1 = right, 2 = bottom, 3 = top, 4 = back, 5 = front).
+   *
+   * The box can be made periodic in some directions (make_periodic()): the
+   * faces 2d and 2d+1 are then identified in the p4est forest, so that
+   * ghost layers and locally relevant degrees of freedom reach across them,
+   * and make_periodicity_constraints() ties the nodes of face 2d to those
+   * of face 2d+1. BoundaryConditions adds the macroscopic jump of the
+   * displacement across the period.
    */
   template <int dim>
   class BackgroundGrid
@@ -41,6 +50,8 @@ namespace qsmpm
       Point<dim>                    lower_corner;
       Point<dim>                    upper_corner;
       std::array<unsigned int, dim> subdivisions;
+      /// Directions in which the box is periodic (empty: none).
+      std::vector<unsigned int> periodic_directions;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -58,8 +69,29 @@ namespace qsmpm
              const Point<dim>                    &upper_corner,
              const std::array<unsigned int, dim> &subdivisions);
 
+    /// Create the box of the parameters, periodic where they say so.
     void
     make_box(const Parameters &parameters);
+
+    /**
+     * Identify the faces 2d and 2d+1 for every direction d in
+     * @p directions (after make_box(), before adding points), and
+     * redistribute the degrees of freedom.
+     */
+    void
+    make_periodic(const std::vector<unsigned int> &directions);
+
+    /// The directions given to make_periodic() (sorted).
+    const std::vector<unsigned int> &
+    periodic_directions() const;
+
+    /**
+     * Add the homogeneous periodicity constraints u(face 2d) = u(face 2d+1)
+     * of all periodic directions to @p constraints (not closed; lines for
+     * locally relevant degrees of freedom).
+     */
+    void
+    make_periodicity_constraints(AffineConstraints<double> &constraints) const;
 
     /**
      * Renumber and redistribute degrees of freedom, e.g. after the
@@ -106,6 +138,7 @@ namespace qsmpm
     Point<dim>                                box_lower;
     Point<dim>                                box_upper;
     std::array<unsigned int, dim>             box_subdivisions;
+    std::vector<unsigned int>                 periodic;
   };
 } // namespace qsmpm
 

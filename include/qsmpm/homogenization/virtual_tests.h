@@ -32,6 +32,10 @@ namespace qsmpm
    *   are added first, so at shared edges they win.
    * - affine (kinematic uniform): u = E (x - x_centre) on all six faces,
    *   E the macroscopic strain tensor of the test.
+   * - periodic: the grid is periodic in x, y and z and u = E (x - x_centre)
+   *   + w with a periodic fluctuation w (BoundaryConditions::
+   *   set_macroscopic_displacement_gradient()); the mean strain is then
+   *   exactly E. There are no loaded faces, so no reaction stress.
    *
    * Results: the effective stress of every test twice, from the reaction
    * forces (paper: the force on each face, averaged over the pair of
@@ -50,7 +54,8 @@ namespace qsmpm
     enum class BoundaryType
     {
       mixed,
-      affine
+      affine,
+      periodic
     };
 
     struct Parameters
@@ -61,7 +66,9 @@ namespace qsmpm
       unsigned int                points_per_direction = 2;
       double                      strain               = 0.004;
       unsigned int                n_load_steps         = 2;
-      NewtonParameters            solver;
+      /// Update the point volumes with det F (geometrically nonlinear).
+      bool             update_volumes = true;
+      NewtonParameters solver;
       /// Where each test writes its reactions.csv (subdirectory test_k).
       std::string output_directory = "output";
       /// Tests to run (Voigt indices); default all six.
@@ -125,7 +132,7 @@ namespace qsmpm
     unsigned long
     n_cells() const;
 
-    /// "mixed" or "affine" -> BoundaryType; throws otherwise.
+    /// "mixed", "affine" or "periodic" -> BoundaryType; throws otherwise.
     static BoundaryType
     parse_boundary_type(const std::string &name);
     static std::string

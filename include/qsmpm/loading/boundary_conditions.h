@@ -46,6 +46,8 @@ namespace qsmpm
       std::string dirichlet;
       /// Boundary ids that carry the traction function.
       std::string traction;
+      /// H (dim x dim numbers, row by row) of a periodic grid, or empty.
+      std::string macroscopic_gradient;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -93,6 +95,21 @@ namespace qsmpm
     void
     set_body_force(const std::shared_ptr<Function<dim>> &body_force);
 
+    /**
+     * The macroscopic displacement gradient H(t) of a grid with periodic
+     * directions (BackgroundGrid::make_periodic()): the displacement is
+     * u(x) = H(t) x + w(x) with w periodic, i.e. across each periodic
+     * direction d it jumps by H(t) L_d e_d, L_d the box length. Without
+     * this call H = 0. If every direction is periodic, the one node that all
+     * box corners are tied to is held at u = H(t) (x - @p reference), which
+     * removes the rigid translation; otherwise displacement conditions on
+     * the other faces must do so.
+     */
+    void
+    set_macroscopic_displacement_gradient(
+      const std::function<Tensor<2, dim>(const double)> &H,
+      const Point<dim> &reference = Point<dim>());
+
     /// A force at the grid node at @p location, scaled by the load factor.
     void
     add_point_load(const Point<dim> &location, const Tensor<1, dim> &force);
@@ -106,9 +123,11 @@ namespace qsmpm
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * The constraints of the step t_old -> t_new: the displacement
-     * increments on constrained nodes and zero increments on the
-     * degrees of freedom in @p inactive_dofs (nodes without points).
+     * The constraints of the step t_old -> t_new: the periodicity
+     * constraints with the increment of the macroscopic jump (if the grid
+     * is periodic), the displacement increments on constrained nodes and
+     * zero increments on the degrees of freedom in @p inactive_dofs (nodes
+     * without points).
      */
     void
     make_constraints(const BackgroundGrid<dim> &grid,
@@ -145,7 +164,16 @@ namespace qsmpm
     has_loads() const;
 
   private:
-    std::vector<DirichletCondition> dirichlet;
+    /// The periodicity lines of make_constraints(), not closed.
+    void
+    add_periodicity_constraints(const BackgroundGrid<dim> &grid,
+                                const double               t_old,
+                                const double               t_new,
+                                AffineConstraints<double> &constraints) const;
+
+    std::vector<DirichletCondition>             dirichlet;
+    std::function<Tensor<2, dim>(const double)> macroscopic_gradient;
+    Point<dim>                                  macroscopic_reference;
     /// Per condition: its locally owned (dof, component) pairs.
     std::vector<std::vector<std::pair<types::global_dof_index, unsigned int>>>
       constrained_dofs;

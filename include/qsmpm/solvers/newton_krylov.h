@@ -42,12 +42,19 @@ namespace qsmpm
    * Operator is the nonlinear problem of one load step and must provide
    *   - void residual(const VectorType &du, VectorType &R) const;
    *   - void set_constrained_to_zero(VectorType &v) const;
+   *     (residual space: zero the rows without an equation);
+   *   - void make_admissible(VectorType &v) const;
+   *     (correction space: constrained components from the homogeneous
+   *     constraints, i.e. zero where prescribed and equal to the master's
+   *     where periodic);
    *   - void precondition(VectorType &dst, const VectorType &src) const;
    *     (an approximation of J^{-1}, or a copy for none).
    *
    * The initial guess du_0 handed to solve() must satisfy the displacement
-   * boundary conditions (paper A.1 step 1); every correction vanishes on
-   * constrained components, so every iterate does too.
+   * boundary conditions (paper A.1 step 1); every correction satisfies the
+   * homogeneous constraints, so every iterate satisfies the constraints
+   * too. GMRES works with right preconditioning: its Krylov vectors are
+   * residuals, the preconditioner maps them to admissible corrections.
    */
   template <typename Operator, typename VectorType>
   class NewtonKrylov
@@ -254,7 +261,7 @@ namespace qsmpm
           // cases; Newton's test decides.
           ++report.inexact_linear_solves;
         }
-      op.set_constrained_to_zero(s);
+      op.make_admissible(s);
       report.linear_iterations += control.last_step();
       return {control.last_step(),
               rhs_norm > 0. ? control.last_value() / rhs_norm : 0.};
@@ -283,7 +290,7 @@ namespace qsmpm
       vmult(VectorType &dst, const VectorType &src) const
       {
         op.precondition(dst, src);
-        op.set_constrained_to_zero(dst);
+        op.make_admissible(dst);
       }
     };
 

@@ -1,0 +1,67 @@
+#ifndef qsmpm_core_step_operator_h
+#define qsmpm_core_step_operator_h
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/loading/step_constraints.h>
+#include <qsmpm/solvers/preconditioner.h>
+
+namespace qsmpm
+{
+  /**
+   * The nonlinear problem of one load step as NewtonKrylov sees it: the
+   * residual of the points, condensed with the step's constraints, the
+   * projections of residuals and corrections onto their spaces, and the
+   * preconditioner.
+   */
+  template <int dim>
+  class StepOperator
+  {
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    StepOperator(const QuasiStaticResidual<dim> &residual,
+                 const StepConstraints          &constraints,
+                 const Preconditioner<dim>      &preconditioner)
+      : residual_evaluator(residual)
+      , constraints(constraints)
+      , preconditioner(preconditioner)
+    {
+    }
+
+    /// R(du) = f_int - f_ext, with coupled rows added to their masters.
+    void
+    residual(const VectorType &du, VectorType &R) const
+    {
+      residual_evaluator.evaluate(du, R);
+      constraints.condense(R);
+    }
+
+    /// Zero the rows without an equation of a residual-like vector.
+    void
+    set_constrained_to_zero(VectorType &v) const
+    {
+      constraints.set_constrained_to_zero(v);
+    }
+
+    /// Make a correction satisfy the homogeneous constraints.
+    void
+    make_admissible(VectorType &v) const
+    {
+      constraints.make_admissible(v);
+    }
+
+    void
+    precondition(VectorType &dst, const VectorType &src) const
+    {
+      preconditioner.vmult(dst, src);
+    }
+
+  private:
+    const QuasiStaticResidual<dim> &residual_evaluator;
+    const StepConstraints          &constraints;
+    const Preconditioner<dim>      &preconditioner;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,102 @@
+#include <deal.II/base/mpi.h>
+#include <qsmpm/loading/step_constraints.h>
+
+namespace qsmpm
+{
+  void
+  StepConstraints::reinit(const AffineConstraints<double> &new_constraints,
+                          const IndexSet                  &owned,
+                          const IndexSet                  &relevant,
+                          const MPI_Comm                   communicator)
+  {
+    constraints.clear();
+    constraints.reinit(relevant);
+    constraints.copy_from(new_constraints);
+
+    coupled.clear();
+    IndexSet masters(owned.size());
+    for (const auto &line : constraints.get_lines())
+      if (!line.entries.empty() && owned.is_element(line.index))
+        {
+          coupled.emplace_back(line.index, line.entries);
+          for (const auto &entry : line.entries)
+            masters.add_index(entry.first);
+        }
+    any_coupling =
+      dealii::Utilities::MPI::max(coupled.empty() ? 0 : 1, communicator) > 0;
+    if (!any_coupling)
+      return;
+
+    homogeneous.clear();
+    homogeneous.reinit(relevant);
+    homogeneous.copy_from(constraints);
+    for (const auto &line : constraints.get_lines())
+      homogeneous.set_inhomogeneity(line.index, 0.);
+
+    masters.add_indices(owned);
+    masters.compress();
+    master_forces.reinit(owned, masters, communicator, /*writable=*/true);
+  }
+
+
+
+  const AffineConstraints<double> &
+  StepConstraints::get() const
+  {
+    return constraints;
+  }
+
+
+
+  bool
+  StepConstraints::has_couplings() const
+  {
+    return any_coupling;
+  }
+
+
+
+  void
+  StepConstraints::distribute(VectorType &du) const
+  {
+    constraints.distribute(du);
+  }
+
+
+
+  void
+  StepConstraints::make_admissible(VectorType &v) const
+  {
+    if (any_coupling)
+      homogeneous.distribute(v);
+    else
+      constraints.set_zero(v);
+  }
+
+
+
+  void
+  StepConstraints::condense(VectorType &R) const
+  {
+    if (!any_coupling)
+      return;
+    master_forces = 0.;
+    for (const auto &[slave, entries] : coupled)
+      {
+        const double force = R[slave];
+        for (const auto &[master, weight] : entries)
+          master_forces[master] += weight * force;
+        R[slave] = 0.;
+      }
+    master_forces.compress(VectorOperation::add);
+    R += master_forces;
+  }
+
+
+
+  void
+  StepConstraints::set_constrained_to_zero(VectorType &v) const
+  {
+    constraints.set_zero(v);
+  }
+} // namespace qsmpm
