@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <deal.II/base/function.h>
 #include <qsmpm/fracture/compact_tension_geometry.h>
@@ -62,6 +63,17 @@ namespace qsmpm
                         "from the load point are displaced together. At least "
                         "1 (two nodes) with one point per cell, see "
                         "CompactTensionGeometry::add_supports().");
+      prm.declare_entry(
+        "Back-face point refinement",
+        "1",
+        Patterns::Integer(1, 64),
+        "k: the crack-band cell at the back face (the end of the ligament) "
+        "gets k times as many material points along the ligament (y) as "
+        "the other cells, e.g. 1 x k with one point per cell. Its lowest "
+        "point is the hinge about which the broken specimen rotates and "
+        "which never breaks (a zero-strain mode at that point), so the "
+        "crack area that is never dissipated shrinks from h d to h d / k "
+        "(with one point per cell). 1: the paper's one point per cell.");
       prm.declare_entry("Notch depth over ligament",
                         "1.0",
                         Patterns::Double(0.),
@@ -80,12 +92,13 @@ namespace qsmpm
   {
     prm.enter_subsection("Compact tension");
     {
-      ligament    = prm.get_double("Ligament length");
-      depth       = prm.get_double("Depth");
-      cell_size   = prm.get_double("Cell size");
-      width_ratio = prm.get_double("Width over ligament");
-      notch_ratio = prm.get_double("Notch depth over ligament");
-      plate_cells = prm.get_integer("Load plate width");
+      ligament             = prm.get_double("Ligament length");
+      depth                = prm.get_double("Depth");
+      cell_size            = prm.get_double("Cell size");
+      width_ratio          = prm.get_double("Width over ligament");
+      notch_ratio          = prm.get_double("Notch depth over ligament");
+      plate_cells          = prm.get_integer("Load plate width");
+      back_face_refinement = prm.get_integer("Back-face point refinement");
     }
     prm.leave_subsection();
   }
@@ -159,9 +172,21 @@ namespace qsmpm
     model->set_crack_region(
       [this](const Point<dim> &x) { return in_crack_band(x); });
     problem.set_model(std::move(model));
-    problem.points().fill([this](const Point<dim> &x) { return in_body(x); },
-                          points_per_direction,
-                          placement);
+    // The body, and the back-face band cell with k times as many points
+    // along y (see the class documentation on the hinge); with k = 1 the
+    // second call fills that cell like the others.
+    problem.points().fill(
+      [this](const Point<dim> &x) {
+        return in_body(x) && !in_back_face_cell(x);
+      },
+      points_per_direction,
+      placement);
+    std::array<unsigned int, dim> n_back_face;
+    n_back_face.fill(points_per_direction);
+    n_back_face[1] *= parameters.back_face_refinement;
+    problem.points().fill(
+      [this](const Point<dim> &x) { return in_back_face_cell(x); },
+      MaterialPointSet<dim>::reference_rule(placement, n_back_face));
     return add_supports(problem.boundary_conditions());
   }
 
@@ -181,6 +206,15 @@ namespace qsmpm
   CompactTensionGeometry<dim>::in_crack_band(const Point<dim> &x) const
   {
     return std::abs(x[0]) < 0.5 * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  bool
+  CompactTensionGeometry<dim>::in_back_face_cell(const Point<dim> &x) const
+  {
+    return in_crack_band(x) && x[1] < parameters.cell_size;
   }
 
 
