@@ -74,6 +74,14 @@ namespace qsmpm
         "which never breaks (a zero-strain mode at that point), so the "
         "crack area that is never dissipated shrinks from h d to h d / k "
         "(with one point per cell). 1: the paper's one point per cell.");
+      prm.declare_entry(
+        "Grid margin",
+        "0",
+        Patterns::Integer(0, 100),
+        "Number of empty grid cells added around the specimen on all four "
+        "sides, so that points may leave the specimen's rectangle: needed "
+        "when the broken halves rotate apart by degrees (Run to complete "
+        "failure). 0: the grid is the specimen.");
       prm.declare_entry("Notch depth over ligament",
                         "1.0",
                         Patterns::Double(0.),
@@ -99,6 +107,7 @@ namespace qsmpm
       notch_ratio          = prm.get_double("Notch depth over ligament");
       plate_cells          = prm.get_integer("Load plate width");
       back_face_refinement = prm.get_integer("Back-face point refinement");
+      grid_margin          = prm.get_integer("Grid margin");
     }
     prm.leave_subsection();
   }
@@ -135,13 +144,15 @@ namespace qsmpm
   CompactTensionGeometry<dim>::make_grid(BackgroundGrid<dim> &grid) const
   {
     const double                  h = parameters.cell_size;
+    const unsigned int            m = parameters.grid_margin;
     Point<dim>                    lower, upper;
     std::array<unsigned int, dim> subdivisions;
-    lower[0]        = -0.5 * width();
-    upper[0]        = 0.5 * width();
-    subdivisions[0] = n_x;
-    upper[1]        = height();
-    subdivisions[1] = n_ligament + n_notch;
+    lower[0]        = -0.5 * width() - m * h;
+    upper[0]        = 0.5 * width() + m * h;
+    subdivisions[0] = n_x + 2 * m;
+    lower[1]        = -(m * h);
+    upper[1]        = height() + m * h;
+    subdivisions[1] = n_ligament + n_notch + 2 * m;
     if (dim == 3)
       {
         subdivisions[dim - 1] =
@@ -196,7 +207,9 @@ namespace qsmpm
   bool
   CompactTensionGeometry<dim>::in_body(const Point<dim> &x) const
   {
-    return !(in_crack_band(x) && x[1] > ligament());
+    const bool in_rectangle =
+      std::abs(x[0]) < 0.5 * width() && x[1] > 0. && x[1] < height();
+    return in_rectangle && !(in_crack_band(x) && x[1] > ligament());
   }
 
 
@@ -214,7 +227,7 @@ namespace qsmpm
   bool
   CompactTensionGeometry<dim>::in_back_face_cell(const Point<dim> &x) const
   {
-    return in_crack_band(x) && x[1] < parameters.cell_size;
+    return in_crack_band(x) && x[1] > 0. && x[1] < parameters.cell_size;
   }
 
 

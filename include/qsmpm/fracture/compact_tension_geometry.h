@@ -18,7 +18,8 @@ namespace qsmpm
    * and height H = a + b (in y) with a notch of width h and depth a from the
    * top edge along the centre line x = 0, which leaves the ligament b below
    * the notch. The two halves beside the notch are the appendages. The grid
-   * is the rectangle itself, with one column of cells centred on x = 0: the
+   * is the rectangle itself (optionally with a margin of empty cells, see
+   * Parameters::grid_margin), with one column of cells centred on x = 0: the
    * notch is the upper part of that column (cells without points), the
    * ligament its lower part, which is where cracks may form (the cells that
    * contain the centre line).
@@ -66,6 +67,13 @@ namespace qsmpm
        * other cells; 1 fills it like every other cell. See setup().
        */
       unsigned int back_face_refinement = 1;
+      /**
+       * Empty grid cells around the specimen on all sides, so that points
+       * may move out of the specimen's rectangle: the broken halves rotate
+       * apart by several degrees when a run goes on to complete failure.
+       * 0: the grid is the specimen.
+       */
+      unsigned int grid_margin = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -108,11 +116,13 @@ namespace qsmpm
           const unsigned int                              points_per_direction,
           const typename MaterialPointSet<dim>::Placement placement) const;
 
-    /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D).
+    /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D), enlarged by
+    /// grid_margin cells on the four sides in x and y.
     void
     make_grid(BackgroundGrid<dim> &grid) const;
 
-    /// Whether @p x lies in the specimen (not in the notch).
+    /// Whether @p x lies in the specimen (in the rectangle, not in the
+    /// notch).
     bool
     in_body(const Point<dim> &x) const;
 
@@ -122,7 +132,7 @@ namespace qsmpm
     in_crack_band(const Point<dim> &x) const;
 
     /// Whether @p x lies in the crack-band cell(s) at the back face (the
-    /// bottom row of the band, 0 <= y < h), see setup().
+    /// bottom row of the band, 0 < y < h), see setup().
     bool
     in_back_face_cell(const Point<dim> &x) const;
 
