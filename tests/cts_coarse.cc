@@ -52,26 +52,37 @@ namespace
   };
 
   // Whether every point of the crack band except the lowest one has failed
-  // completely, w / u0 >= 1.
+  // completely, w / u0 >= 1. The points have moved by millimetres by then,
+  // so the band points are those the model allows to crack, and the lowest
+  // is the one with the smallest initial height y - u_y.
   bool
   band_failed(QuasiStaticProblem<2>           &problem,
               const CompactTensionGeometry<2> &geometry,
               const MPI_Comm                   communicator)
   {
-    const auto &layout = problem.points().get_layout();
-    const auto  w      = layout.offset(Decohesion<2>::opening_ratio_name);
-    // The lowest band point first, then the smallest opening above it.
+    const auto &layout  = problem.points().get_layout();
+    const auto  w       = layout.offset(Decohesion<2>::opening_ratio_name);
+    const auto  allowed = layout.offset(Decohesion<2>::crack_allowed_name);
+    const auto  u_y     = problem.points().get_offsets().displacement + 1;
+    const auto  initial_height = [&](const auto &particle) {
+      return particle.get_location()[1] - particle.get_properties()[u_y];
+    };
     double lowest = 1e10;
     for (const auto &particle : problem.points().get_particle_handler())
-      if (geometry.in_crack_band(particle.get_location()))
-        lowest = std::min(lowest, particle.get_location()[1]);
-    lowest          = Utilities::MPI::min(lowest, communicator);
-    double smallest = 1e10;
+      if (particle.get_properties()[allowed] > 0.5)
+        lowest = std::min(lowest, initial_height(particle));
+    lowest                = Utilities::MPI::min(lowest, communicator);
+    double       smallest = 1e10;
+    unsigned int n_band   = 0;
     for (const auto &particle : problem.points().get_particle_handler())
-      if (geometry.in_crack_band(particle.get_location()) &&
-          particle.get_location()[1] > lowest + 1e-6 * geometry.cell_size())
-        smallest = std::min(smallest, particle.get_properties()[w]);
-    return Utilities::MPI::min(smallest, communicator) >= 1.;
+      if (particle.get_properties()[allowed] > 0.5 &&
+          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
+        {
+          ++n_band;
+          smallest = std::min(smallest, particle.get_properties()[w]);
+        }
+    return Utilities::MPI::sum(n_band, communicator) > 0 &&
+           Utilities::MPI::min(smallest, communicator) >= 1.;
   }
 
   Result

@@ -188,7 +188,10 @@ namespace CompactTension
   // then has no strain and never breaks (see
   // CompactTensionGeometry::setup(), "The hinge at the back face"). The
   // function returns the number of band points and of those that have
-  // failed completely, the hinge not counted.
+  // failed completely, the hinge not counted. By then the points have moved
+  // by millimetres (the centre line by half the load-point displacement),
+  // so the band points are those the model allows to crack, and the hinge
+  // is the one that was lowest at the start, y - u_y.
   template <int dim>
   std::pair<unsigned int, unsigned int>
   count_failed_band_points(QuasiStaticProblem<dim>           &problem,
@@ -196,16 +199,22 @@ namespace CompactTension
                            const MPI_Comm                     communicator)
   {
     const auto        &layout = problem.points().get_layout();
-    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name);
-    double             lowest = std::numeric_limits<double>::max();
+    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
+                       allowed =
+                         layout.offset(Decohesion<dim>::crack_allowed_name),
+                       u_y    = problem.points().get_offsets().displacement + 1;
+    const auto initial_height = [&](const auto &particle) {
+      return particle.get_location()[1] - particle.get_properties()[u_y];
+    };
+    double lowest = std::numeric_limits<double>::max();
     for (const auto &particle : problem.points().get_particle_handler())
-      if (geometry.in_crack_band(particle.get_location()))
-        lowest = std::min(lowest, particle.get_location()[1]);
+      if (particle.get_properties()[allowed] > 0.5)
+        lowest = std::min(lowest, initial_height(particle));
     lowest              = Utilities::MPI::min(lowest, communicator);
     unsigned int n_band = 0, n_failed = 0;
     for (const auto &particle : problem.points().get_particle_handler())
-      if (geometry.in_crack_band(particle.get_location()) &&
-          particle.get_location()[1] > lowest + 1e-6 * geometry.cell_size())
+      if (particle.get_properties()[allowed] > 0.5 &&
+          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
         {
           ++n_band;
           if (particle.get_properties()[w] >= 1.)
@@ -359,7 +368,7 @@ namespace CompactTension
               {
                 const auto band =
                   count_failed_band_points(problem, geometry, communicator);
-                done = band.second == band.first;
+                done = band.first > 0 && band.second == band.first;
               }
           }
         else
