@@ -22,7 +22,8 @@ namespace qsmpm
    * response that hardly changes any more, e.g. the last stage of a
    * fracture test, where the nominal increment would need thousands of
    * steps. A cut-back in that stage lowers the increment, which then grows
-   * again from the lowered value.
+   * again from the lowered value (but restarts at no less than the nominal
+   * increment).
    */
   class LoadStepper
   {
