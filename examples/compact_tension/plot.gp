@@ -92,7 +92,7 @@ if (strlen(system('ls output-b15-complete/load_displacement.csv 2>/dev/null')) >
   have_k1 = strlen(system('ls output-b15-complete-k1/load_displacement.csv 2>/dev/null')) > 0
   set multiplot layout 1,2
   set logscale x
-  set xrange [0.01:*]
+  set xrange [0.01:20]
   set xlabel 'load-point displacement {/Symbol d} (mm)'
   set ylabel 'load P (kN)'
   set title 'b = 15 cm, h = 1 cm, to complete failure'
@@ -110,7 +110,7 @@ if (strlen(system('ls output-b15-complete/load_displacement.csv 2>/dev/null')) >
     plot 'output-b15-complete/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 title '1 x 8 points in the back-face cell', \
          'output-b15-complete-k1/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 dt 2 title 'one point per cell', \
          1 with lines lc 'black' dt 3 title 'G_f b d', \
-         14. / 15. with lines lc 'gray' dt 3 title '1 - h/b'
+         14. / 15. with lines lc 'black' dt 2 title '1 - h/b'
   } else {
     plot 'output-b15-complete/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 title '1 x 8 points in the back-face cell', \
          1 with lines lc 'black' dt 3 title 'G_f b d'
