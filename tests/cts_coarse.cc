@@ -15,7 +15,8 @@
 //   never breaks. With one point per cell its share is h of b, and the
 //   work would be G_f (b - h) d = 5/6 G_f b d here: the check below would
 //   fail. The back-face band cell therefore holds 1 x 8 points (Back-face
-//   point refinement = 8), and the unbroken share is h / 8 = b / 48, 2.1 %;
+//   point refinement = 8), and the unbroken share is at most h / 8 = b / 48,
+//   2.1 %;
 // - the tail: the point next to the hinge, h / 8 above it, fails only when
 //   the rotation has opened it by u0 = 2 G_f / tau_nf = 0.089 mm, i.e. at a
 //   load-point displacement of several millimetres, against 0.07 mm at the
