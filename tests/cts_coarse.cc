@@ -1,18 +1,33 @@
 // A coarse compact-tension specimen (b = 15 cm with h = 2.5 cm, i.e. six
 // cells across the ligament, one point per cell; the paper's concrete) run
-// until the load has fallen below 0.2 % of its peak, on all ranks of
-// MPI_COMM_WORLD and, for comparison, serially on MPI_COMM_SELF:
+// to complete failure, on all ranks of MPI_COMM_WORLD and, for comparison,
+// serially on MPI_COMM_SELF. This is a work-of-fracture test: at complete
+// failure the load is zero, nothing elastic is left, and the work of the
+// load, integral P d(delta), is the energy dissipated in the crack band,
+// which must be G_f b d (b the ligament, d the depth).
 //
-// - energy balance of a work-of-fracture test: the work of the load,
-//   integral P d(delta), is the energy dissipated in the crack band. With
-//   one point per cell the last cell of the ligament never breaks: the two
-//   halves rotate about its point, which is an hourglass (zero-energy) mode
-//   of one-point quadrature, so the broken ligament is b - h and the work
-//   must be G_f (b - h) d (within 5 %), and never more than G_f b d;
-// - every band point but the last one has (nearly) failed, w >= 0.95 u0
-//   (the one next to the last cell is still opening when P is 0.2 % of
-//   the peak);
-// - the curve on 1 and 2 ranks is the same within the solver tolerance.
+// Two effects make "complete failure" delicate, see
+// CompactTensionGeometry::setup() and the example's documentation:
+//
+// - the hinge: once the crack has run through, the two halves rotate about
+//   the lowest point of the band, whose strain vanishes (with one point per
+//   cell this is the hourglass mode of one-point quadrature); that point
+//   never breaks. With one point per cell its share is h of b, and the
+//   work would be G_f (b - h) d = 5/6 G_f b d here: the check below would
+//   fail. The back-face band cell therefore holds 1 x 8 points (Back-face
+//   point refinement = 8), and the unbroken share is at most h / 8 = b / 48,
+//   2.1 %;
+// - the tail: the point next to the hinge, h / 8 above it, fails only when
+//   the rotation has opened it by u0 = 2 G_f / tau_nf = 0.089 mm, i.e. at a
+//   load-point displacement of several millimetres, against 0.07 mm at the
+//   peak. The load steps (5e-3 mm, fine enough for the peak and the steep
+//   softening branch) therefore grow by 5 % per step from delta = 0.5 mm on
+//   (LoadStepper's increment growth), and the run stops once every band
+//   point but the hinge has failed completely, w >= u0.
+//
+// Checks: complete failure reached, the load then below 1e-3 of the peak,
+// |W / (G_f b d) - 1| <= 5 % (W <= G_f b d as well), and the curve on 1
+// and 2 ranks the same within the solver tolerance.
 //
 // The Newton tolerance is 1e-5 with GMRES at 1e-3: asking GMRES for 1e-6
 // with finite-difference Jacobian products (sqrt(eps) = 1e-7) breaks down.
@@ -32,10 +47,44 @@ namespace
   struct Result
   {
     LoadDisplacementCurve curve;
-    /// Smallest w / u0 of the band points above the lowest cell.
-    double       smallest_opening;
+    /// Whether every band point but the lowest (the hinge) has failed.
+    bool         complete_failure;
     unsigned int max_newton;
   };
+
+  // Whether every point of the crack band except the lowest one has failed
+  // completely, w / u0 >= 1. The points have moved by millimetres by then,
+  // so the band points are those the model allows to crack, and the lowest
+  // is the one with the smallest initial height y - u_y.
+  bool
+  band_failed(QuasiStaticProblem<2>           &problem,
+              const CompactTensionGeometry<2> &geometry,
+              const MPI_Comm                   communicator)
+  {
+    const auto &layout  = problem.points().get_layout();
+    const auto  w       = layout.offset(Decohesion<2>::opening_ratio_name);
+    const auto  allowed = layout.offset(Decohesion<2>::crack_allowed_name);
+    const auto  u_y     = problem.points().get_offsets().displacement + 1;
+    const auto  initial_height = [&](const auto &particle) {
+      return particle.get_location()[1] - particle.get_properties()[u_y];
+    };
+    double lowest = 1e10;
+    for (const auto &particle : problem.points().get_particle_handler())
+      if (particle.get_properties()[allowed] > 0.5)
+        lowest = std::min(lowest, initial_height(particle));
+    lowest                = Utilities::MPI::min(lowest, communicator);
+    double       smallest = 1e10;
+    unsigned int n_band   = 0;
+    for (const auto &particle : problem.points().get_particle_handler())
+      if (particle.get_properties()[allowed] > 0.5 &&
+          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
+        {
+          ++n_band;
+          smallest = std::min(smallest, particle.get_properties()[w]);
+        }
+    return Utilities::MPI::sum(n_band, communicator) > 0 &&
+           Utilities::MPI::min(smallest, communicator) >= 1.;
+  }
 
   Result
   run(const MPI_Comm communicator, const CompactTensionGeometry<2> &geometry)
@@ -55,14 +104,17 @@ namespace
     prm.nonlinear_solver.tolerance             = 1e-5;
     prm.nonlinear_solver.linear_tolerance      = 1e-3;
     prm.nonlinear_solver.max_line_search_steps = 4;
-    prm.load_stepping.n_steps                  = 400;
-    prm.load_stepping.final_load_factor        = 2e-3;
+    prm.load_stepping.n_steps                  = 4000;
+    prm.load_stepping.final_load_factor        = 2e-2;
     prm.load_stepping.max_cut_backs            = 6;
+    prm.load_stepping.growth_factor            = 1.05;
+    prm.load_stepping.growth_start             = 5e-4;
     prm.output.directory                       = "results";
     prm.output.interval                        = 0;
 
     Result result;
-    result.max_newton = 0;
+    result.max_newton       = 0;
+    result.complete_failure = false;
     problem.set_step_callback(
       [&](const QuasiStaticProblem<2>::StepReport &report) {
         result.curve.add(report.step,
@@ -70,18 +122,11 @@ namespace
                          geometry.load(problem.reactions(), right));
         result.max_newton =
           std::max(result.max_newton, report.newton.newton_iterations);
-        return !result.curve.fallen_below(0.002);
+        result.complete_failure = result.curve.fallen_below(0.5) &&
+                                  band_failed(problem, geometry, communicator);
+        return !result.complete_failure;
       });
     problem.run();
-
-    const auto &layout   = problem.points().get_layout();
-    const auto  w        = layout.offset(Decohesion<2>::opening_ratio_name);
-    double      smallest = 1e10;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (geometry.in_crack_band(particle.get_location()) &&
-          particle.get_location()[1] > geometry.cell_size())
-        smallest = std::min(smallest, particle.get_properties()[w]);
-    result.smallest_opening = Utilities::MPI::min(smallest, communicator);
     return result;
   }
 } // namespace
@@ -93,26 +138,28 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
 
   CompactTensionGeometry<2>::Parameters parameters;
-  parameters.ligament  = 0.15;
-  parameters.cell_size = 0.025;
+  parameters.ligament             = 0.15;
+  parameters.cell_size            = 0.025;
+  parameters.back_face_refinement = 8;
   const CompactTensionGeometry<2> geometry(parameters);
 
   const Result parallel = run(MPI_COMM_WORLD, geometry);
   const auto  &curve    = parallel.curve;
-  const double b = geometry.ligament(), d = geometry.depth(),
-               h = geometry.cell_size();
-  deallog << "Coarse CTS: b = " << b << " m, h = " << h << " m, "
-          << "one point per cell" << std::endl;
-  check_that("load fell below 0.2 % of the peak", curve.fallen_below(0.002));
+  const double b = geometry.ligament(), d = geometry.depth();
+  deallog << "Coarse CTS: b = " << b << " m, h = " << geometry.cell_size()
+          << " m, one point per cell, 1 x 8 in the back-face band cell"
+          << std::endl;
+  check_that("complete failure: every band point but the hinge has w >= u0",
+             parallel.complete_failure);
+  check("load at complete failure / peak load",
+        curve.points().back().force / curve.peak_force(),
+        1e-3);
   check_that("Newton iterations per step within 1 to 20",
              parallel.max_newton >= 1 && parallel.max_newton <= 20);
-  check("|integral P d(delta) / (G_f (b - h) d) - 1|",
-        curve.work() / (G_f * (b - h) * d) - 1.,
+  check("|integral P d(delta) / (G_f b d) - 1|",
+        curve.work() / (G_f * b * d) - 1.,
         0.05);
   check_that("integral P d(delta) <= G_f b d", curve.work() <= G_f * b * d);
-  check_at_least("band points above the last cell: min w / u0",
-                 parallel.smallest_opening,
-                 0.95);
 
   // The same on one rank.
   const Result serial             = run(MPI_COMM_SELF, geometry);
@@ -126,9 +173,9 @@ main(int argc, char *argv[])
   // The partitioned AMG gives other (equally converged) iterates on 2
   // ranks; each step's solution differs within the Newton tolerance (1e-5
   // of the step's initial residual) and a softening, path-dependent
-  // material carries these differences over some 300 steps and through the
-  // discrete events of crack initiation. 1e-3 of the peak (the paper's
-  // tolerance) is 50 times below the energy check above.
+  // material carries these differences over hundreds of steps and through
+  // the discrete events of crack initiation and failure. 1e-3 of the peak
+  // (the paper's tolerance) is 50 times below the energy check above.
   check("max |P - P_serial| / P_max",
         largest_difference / curve.peak_force(),
         1e-3);

@@ -29,6 +29,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
@@ -36,6 +37,7 @@
 #include <qsmpm/fracture/load_displacement_curve.h>
 #include <qsmpm/materials/decohesion.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CompactTension
@@ -65,8 +67,14 @@ namespace CompactTension
   // The load factor $t$ of the library is the load-point displacement in
   // metres; the parameter files advance it by $10^{-3}$ mm per step as in
   // the paper. Rather than run to a fixed end, the program stops once the
-  // load has fallen below a fraction (2 %) of its peak: what is left of the
-  // curve then holds a negligible part of the energy.
+  // load has fallen below a fraction (2 %) of its peak, as in the paper's
+  // plots. What is left of the curve then is a long tail: the last cells
+  // of the ligament fail only at several millimetres, and it holds some
+  // 3 % of the energy. To measure the whole work of fracture, `set Run to
+  // complete failure = true` runs on until the band has failed (every
+  // point but the hinge, see below), with load steps that grow in the tail
+  // (`Load stepping/Increment growth factor`); `b15-complete.prm` does
+  // this.
   //
   // @sect3{Parameters}
   //
@@ -77,6 +85,7 @@ namespace CompactTension
   struct RunParameters
   {
     double      stop_fraction;
+    bool        to_complete_failure;
     double      partial_failure_fraction;
     std::string plot_label;
 
@@ -90,6 +99,16 @@ namespace CompactTension
                         "The run ends after the first step past the peak at "
                         "which the load is below this fraction of the peak "
                         "load.");
+      prm.declare_entry("Run to complete failure",
+                        "false",
+                        Patterns::Bool(),
+                        "true: ignore <Stop below fraction of peak> and end "
+                        "the run once every crack-band point but the lowest "
+                        "one (the hinge, which never breaks) has failed "
+                        "completely, [[u_n]] >= u0. The work of the load is "
+                        "then the whole work of fracture. The tail takes "
+                        "load-point displacements of several mm: use "
+                        "<Load stepping/Increment growth factor>.");
       prm.declare_entry("Partial failure at fraction of peak",
                         "0.5",
                         Patterns::Double(0., 1.),
@@ -107,7 +126,8 @@ namespace CompactTension
     parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Run");
-      stop_fraction = prm.get_double("Stop below fraction of peak");
+      stop_fraction       = prm.get_double("Stop below fraction of peak");
+      to_complete_failure = prm.get_bool("Run to complete failure");
       partial_failure_fraction =
         prm.get_double("Partial failure at fraction of peak");
       plot_label = prm.get("Label");
@@ -160,6 +180,52 @@ namespace CompactTension
 
 
 
+  // @sect3{Complete failure}
+  //
+  // The crack band is broken once every band point has failed completely,
+  // $[[u_n]] \geq u_0$ -- all but the lowest one: after the crack has run
+  // through the ligament, the two halves rotate about that point, which
+  // then has no strain and never breaks (see
+  // CompactTensionGeometry::setup(), "The hinge at the back face"). The
+  // function returns the number of band points and of those that have
+  // failed completely, the hinge not counted. By then the points have moved
+  // by millimetres (the centre line by half the load-point displacement),
+  // so the band points are those the model allows to crack, and the hinge
+  // is the one that was lowest at the start, y - u_y.
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  count_failed_band_points(QuasiStaticProblem<dim>           &problem,
+                           const CompactTensionGeometry<dim> &geometry,
+                           const MPI_Comm                     communicator)
+  {
+    const auto        &layout = problem.points().get_layout();
+    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
+                       allowed =
+                         layout.offset(Decohesion<dim>::crack_allowed_name),
+                       u_y    = problem.points().get_offsets().displacement + 1;
+    const auto initial_height = [&](const auto &particle) {
+      return particle.get_location()[1] - particle.get_properties()[u_y];
+    };
+    double lowest = std::numeric_limits<double>::max();
+    for (const auto &particle : problem.points().get_particle_handler())
+      if (particle.get_properties()[allowed] > 0.5)
+        lowest = std::min(lowest, initial_height(particle));
+    lowest              = Utilities::MPI::min(lowest, communicator);
+    unsigned int n_band = 0, n_failed = 0;
+    for (const auto &particle : problem.points().get_particle_handler())
+      if (particle.get_properties()[allowed] > 0.5 &&
+          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
+        {
+          ++n_band;
+          if (particle.get_properties()[w] >= 1.)
+            ++n_failed;
+        }
+    return {Utilities::MPI::sum(n_band, communicator),
+            Utilities::MPI::sum(n_failed, communicator)};
+  }
+
+
+
   // @sect3{Setting up and running the problem}
   //
   // The sequence is that of every qsmpm program: read the parameters, make
@@ -208,7 +274,11 @@ namespace CompactTension
 
     // Grid, points in every cell but those of the notch, cracks only in the
     // cells on the centre line as in the paper, and the two pins: all done
-    // by CompactTensionGeometry::setup(), which the tests use as well.
+    // by CompactTensionGeometry::setup(), which the tests use as well. With
+    // `Compact tension/Back-face point refinement` = k > 1 the band cell at
+    // the back face gets k times as many points along the ligament: the
+    // point about which the broken specimen finally rotates (the hinge,
+    // which never breaks) then stands for h/k of the ligament instead of h.
     const auto        &mp        = problem.parameters().material_points;
     const unsigned int right_pin = geometry.setup(problem,
                                                   std::move(model),
@@ -245,8 +315,8 @@ namespace CompactTension
                      "gmres_iterations,line_search_steps,cut_backs,"
                      "wall_time_s\n";
       }
-    bool               initiated = false, partially_failed = false;
-    const auto        &layout = problem.points().get_layout();
+    bool        initiated = false, partially_failed = false, complete = false;
+    const auto &layout = problem.points().get_layout();
     const unsigned int opening_offset =
       layout.offset(Decohesion<dim>::crack_opening_name);
     problem.set_step_callback(
@@ -288,8 +358,24 @@ namespace CompactTension
                             directory + "/points_partial.csv",
                             communicator);
           }
-        if (curve.fallen_below(run_parameters.stop_fraction))
+        // The end: below the stop fraction of the peak, or, if asked for,
+        // complete failure of the band (checked only once the load has
+        // fallen below half the peak, to save the loop over the points).
+        bool done = false;
+        if (run_parameters.to_complete_failure)
           {
+            if (curve.fallen_below(0.5))
+              {
+                const auto band =
+                  count_failed_band_points(problem, geometry, communicator);
+                done = band.first > 0 && band.second == band.first;
+              }
+          }
+        else
+          done = curve.fallen_below(run_parameters.stop_fraction);
+        if (done)
+          {
+            complete = true;
             write_point_csv(problem,
                             directory + "/points_complete.csv",
                             communicator);
@@ -310,14 +396,19 @@ namespace CompactTension
     // of the load with the fracture energy of the ligament and print what
     // the solver needed per step (the paper reports 1 to 6 Newton
     // iterations per step).
-    if (!curve.fallen_below(run_parameters.stop_fraction))
+    if (!complete)
       write_point_csv(problem, directory + "/points_final.csv", communicator);
-    AssertThrow(curve.fallen_below(run_parameters.stop_fraction),
-                ExcMessage("compact_tension: the load did not fall below " +
-                           std::to_string(run_parameters.stop_fraction) +
-                           " of its peak before the final load factor; "
-                           "raise 'Load stepping/Final load factor' and the "
-                           "number of steps."));
+    AssertThrow(complete,
+                ExcMessage(
+                  "compact_tension: " +
+                  (run_parameters.to_complete_failure ?
+                     std::string("the crack band did not fail completely") :
+                     "the load did not fall below " +
+                       std::to_string(run_parameters.stop_fraction) +
+                       " of its peak") +
+                  " before the final load factor; raise 'Load "
+                  "stepping/Final load factor' and the number of steps (or "
+                  "let the increment grow)."));
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       curve.write_csv(directory + "/load_displacement.csv");
 
@@ -335,6 +426,7 @@ namespace CompactTension
       }
     const unsigned int n_steps = problem.step_reports().size();
     const double       energy  = G_f * geometry.ligament() * geometry.depth();
+    const auto band = count_failed_band_points(problem, geometry, communicator);
     out << std::setprecision(5) << '\n'
         << "Compact tension " << run_parameters.plot_label << " finished\n"
         << "  peak load P_max                = " << curve.peak_force()
@@ -346,6 +438,8 @@ namespace CompactTension
         << "  G_f b d                        = " << energy << " J\n"
         << "  energy ratio                   = " << curve.work() / energy
         << '\n'
+        << "  band points failed completely  = " << band.second << " of "
+        << band.first << " (the hinge not counted)\n"
         << "  Newton iterations per step     = " << newton_min << " to "
         << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
         << '\n'

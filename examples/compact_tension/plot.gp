@@ -7,6 +7,8 @@
 # Fig. 3) and fields_b15.png (the normalized crack opening [[u_n]]/u0 and
 # stresses sigma_xx/tau_nf, sigma_yy/tau_nf at initiation, partial and
 # complete failure of b = 15 cm, like the paper's Fig. 4).
+# With output-b15-2x2 and output-b15-complete(-k1) present, it also writes
+# b15_points_per_cell.png and b15_complete_failure.png.
 set datafile separator ','
 
 set terminal pngcairo size 800,560 font ',11'
@@ -65,4 +67,56 @@ if (strlen(system('ls output-b15-2x2/steps.csv 2>/dev/null')) > 0) {
   set ylabel 'load P (kN)'
   plot 'output-b15/steps.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '1 point per cell', \
        'output-b15-2x2/steps.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '2x2 points per cell'
+}
+
+# The run to complete failure (b15-complete.prm, 1 x 8 points in the
+# back-face band cell) and, if present, the same run with one point in that
+# cell (Back-face point refinement = 1, output in output-b15-complete-k1):
+# the load on a logarithmic displacement axis, and the running work of the
+# load over G_f b d.
+if (strlen(system('ls output-b15-complete/load_displacement.csv 2>/dev/null')) > 0) {
+  set terminal pngcairo size 1100,460 font ',11'
+  set output 'b15_complete_failure.png'
+  set size noratio
+  set size 1,1
+  set format x '%g'
+  set format y '%g'
+  set tics scale 1
+  set grid
+  set key top right
+  unset title
+  Gbd = 122.7 * 0.15 * 0.12
+  # Running trapezoidal integral of P d(delta); reset on the first row.
+  work(x, P) = (W = W + 0.5 * (x - x_prev) * (P + P_prev), x_prev = x, P_prev = P, W)
+  reset_work(row) = (row == 0 ? (W = 0, x_prev = 0, P_prev = 0, 0) : 0)
+  have_k1 = strlen(system('ls output-b15-complete-k1/load_displacement.csv 2>/dev/null')) > 0
+  set multiplot layout 1,2
+  set logscale x
+  set xrange [0.01:20]
+  set xlabel 'load-point displacement {/Symbol d} (mm)'
+  set ylabel 'load P (kN)'
+  set title 'b = 15 cm, h = 1 cm, to complete failure'
+  if (have_k1) {
+    plot 'output-b15-complete/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '1 x 8 points in the back-face cell', \
+         'output-b15-complete-k1/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 dt 2 title 'one point per cell'
+  } else {
+    plot 'output-b15-complete/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '1 x 8 points in the back-face cell'
+  }
+  set ylabel 'work of the load / (G_f b d)'
+  set key bottom right
+  set yrange [0:1.05]
+  set title 'energy balance'
+  if (have_k1) {
+    plot 'output-b15-complete/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 title '1 x 8 points in the back-face cell', \
+         'output-b15-complete-k1/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 dt 2 title 'one point per cell', \
+         1 with lines lc 'black' dt 3 title 'G_f b d', \
+         14. / 15. with lines lc 'black' dt 2 title '1 - h/b'
+  } else {
+    plot 'output-b15-complete/load_displacement.csv' skip 1 using (reset_work($0), $2*1e3):(work($2, $3) / Gbd) with lines lw 2 title '1 x 8 points in the back-face cell', \
+         1 with lines lc 'black' dt 3 title 'G_f b d'
+  }
+  unset multiplot
+  unset logscale x
+  set xrange [*:*]
+  set yrange [*:*]
 }

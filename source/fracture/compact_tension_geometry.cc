@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <deal.II/base/function.h>
 #include <qsmpm/fracture/compact_tension_geometry.h>
@@ -62,6 +63,25 @@ namespace qsmpm
                         "from the load point are displaced together. At least "
                         "1 (two nodes) with one point per cell, see "
                         "CompactTensionGeometry::add_supports().");
+      prm.declare_entry(
+        "Back-face point refinement",
+        "1",
+        Patterns::Integer(1, 64),
+        "k: the crack-band cell at the back face (the end of the ligament) "
+        "gets k times as many material points along the ligament (y) as "
+        "the other cells, e.g. 1 x k with one point per cell. Its lowest "
+        "point is the hinge about which the broken specimen rotates and "
+        "which never breaks (a zero-strain mode at that point), so the "
+        "crack area that is never dissipated shrinks from h d to h d / k "
+        "(with one point per cell). 1: the paper's one point per cell.");
+      prm.declare_entry(
+        "Grid margin",
+        "0",
+        Patterns::Integer(0, 100),
+        "Number of empty grid cells added around the specimen on all four "
+        "sides, so that points may leave the specimen's rectangle: needed "
+        "when the broken halves rotate apart by degrees (Run to complete "
+        "failure). 0: the grid is the specimen.");
       prm.declare_entry("Notch depth over ligament",
                         "1.0",
                         Patterns::Double(0.),
@@ -80,12 +100,14 @@ namespace qsmpm
   {
     prm.enter_subsection("Compact tension");
     {
-      ligament    = prm.get_double("Ligament length");
-      depth       = prm.get_double("Depth");
-      cell_size   = prm.get_double("Cell size");
-      width_ratio = prm.get_double("Width over ligament");
-      notch_ratio = prm.get_double("Notch depth over ligament");
-      plate_cells = prm.get_integer("Load plate width");
+      ligament             = prm.get_double("Ligament length");
+      depth                = prm.get_double("Depth");
+      cell_size            = prm.get_double("Cell size");
+      width_ratio          = prm.get_double("Width over ligament");
+      notch_ratio          = prm.get_double("Notch depth over ligament");
+      plate_cells          = prm.get_integer("Load plate width");
+      back_face_refinement = prm.get_integer("Back-face point refinement");
+      grid_margin          = prm.get_integer("Grid margin");
     }
     prm.leave_subsection();
   }
@@ -122,13 +144,15 @@ namespace qsmpm
   CompactTensionGeometry<dim>::make_grid(BackgroundGrid<dim> &grid) const
   {
     const double                  h = parameters.cell_size;
+    const unsigned int            m = parameters.grid_margin;
     Point<dim>                    lower, upper;
     std::array<unsigned int, dim> subdivisions;
-    lower[0]        = -0.5 * width();
-    upper[0]        = 0.5 * width();
-    subdivisions[0] = n_x;
-    upper[1]        = height();
-    subdivisions[1] = n_ligament + n_notch;
+    lower[0]        = -0.5 * width() - m * h;
+    upper[0]        = 0.5 * width() + m * h;
+    subdivisions[0] = n_x + 2 * m;
+    lower[1]        = -(m * h);
+    upper[1]        = height() + m * h;
+    subdivisions[1] = n_ligament + n_notch + 2 * m;
     if (dim == 3)
       {
         subdivisions[dim - 1] =
@@ -159,9 +183,21 @@ namespace qsmpm
     model->set_crack_region(
       [this](const Point<dim> &x) { return in_crack_band(x); });
     problem.set_model(std::move(model));
-    problem.points().fill([this](const Point<dim> &x) { return in_body(x); },
-                          points_per_direction,
-                          placement);
+    // The body, and the back-face band cell with k times as many points
+    // along y (see the class documentation on the hinge); with k = 1 the
+    // second call fills that cell like the others.
+    problem.points().fill(
+      [this](const Point<dim> &x) {
+        return in_body(x) && !in_back_face_cell(x);
+      },
+      points_per_direction,
+      placement);
+    std::array<unsigned int, dim> n_back_face;
+    n_back_face.fill(points_per_direction);
+    n_back_face[1] *= parameters.back_face_refinement;
+    problem.points().fill(
+      [this](const Point<dim> &x) { return in_back_face_cell(x); },
+      MaterialPointSet<dim>::reference_rule(placement, n_back_face));
     return add_supports(problem.boundary_conditions());
   }
 
@@ -171,7 +207,9 @@ namespace qsmpm
   bool
   CompactTensionGeometry<dim>::in_body(const Point<dim> &x) const
   {
-    return !(in_crack_band(x) && x[1] > ligament());
+    const bool in_rectangle =
+      std::abs(x[0]) < 0.5 * width() && x[1] > 0. && x[1] < height();
+    return in_rectangle && !(in_crack_band(x) && x[1] > ligament());
   }
 
 
@@ -181,6 +219,15 @@ namespace qsmpm
   CompactTensionGeometry<dim>::in_crack_band(const Point<dim> &x) const
   {
     return std::abs(x[0]) < 0.5 * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  bool
+  CompactTensionGeometry<dim>::in_back_face_cell(const Point<dim> &x) const
+  {
+    return in_crack_band(x) && x[1] > 0. && x[1] < parameters.cell_size;
   }
 
 

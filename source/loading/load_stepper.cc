@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <qsmpm/loading/load_stepper.h>
 #include <sstream>
@@ -31,6 +32,24 @@ namespace qsmpm
                         Patterns::Double(0.01, 0.99),
                         "The increment is multiplied by this after a failed "
                         "attempt.");
+      prm.declare_entry("Increment growth factor",
+                        "1.0",
+                        Patterns::Double(1., 10.),
+                        "g: once |t| has reached <Growth from load factor>, "
+                        "each accepted step multiplies the increment by g "
+                        "(at least the nominal increment, at most <Maximum "
+                        "increment>). 1: off, every step takes the nominal "
+                        "increment final / K.");
+      prm.declare_entry("Growth from load factor",
+                        "0.0",
+                        Patterns::Double(0.),
+                        "|t| from which the increment grows by <Increment "
+                        "growth factor>.");
+      prm.declare_entry("Maximum increment",
+                        "0.0",
+                        Patterns::Double(0.),
+                        "Largest |increment| reached by growth; 0: no "
+                        "limit but the final load factor.");
     }
     prm.leave_subsection();
   }
@@ -46,6 +65,9 @@ namespace qsmpm
       final_load_factor = prm.get_double("Final load factor");
       max_cut_backs     = prm.get_integer("Maximum cut-backs");
       cut_back_factor   = prm.get_double("Cut-back factor");
+      growth_factor     = prm.get_double("Increment growth factor");
+      growth_start      = prm.get_double("Growth from load factor");
+      max_increment     = prm.get_double("Maximum increment");
     }
     prm.leave_subsection();
   }
@@ -59,6 +81,9 @@ namespace qsmpm
   {
     AssertThrow(parameters.n_steps > 0,
                 ExcMessage("Load stepping: <Number of steps> must be > 0."));
+    AssertThrow(parameters.growth_factor >= 1.,
+                ExcMessage("Load stepping: <Increment growth factor> must be "
+                           ">= 1."));
   }
 
 
@@ -106,7 +131,19 @@ namespace qsmpm
     t = target();
     ++n_steps;
     cut_backs = 0;
-    increment = nominal_increment;
+    if (parameters.growth_factor > 1. && std::abs(t) >= parameters.growth_start)
+      {
+        // Grow from the increment just taken (which a cut-back may have
+        // lowered), not below the nominal one and not above the limit.
+        double magnitude =
+          std::max(std::abs(nominal_increment),
+                   parameters.growth_factor * std::abs(increment));
+        if (parameters.max_increment > 0.)
+          magnitude = std::min(magnitude, parameters.max_increment);
+        increment = std::copysign(magnitude, nominal_increment);
+      }
+    else
+      increment = nominal_increment;
   }
 
 

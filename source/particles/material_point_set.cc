@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <numeric>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -98,6 +99,37 @@ namespace qsmpm
 
 
   template <int dim>
+  Quadrature<dim>
+  MaterialPointSet<dim>::reference_rule(const Placement placement,
+                                        const std::array<unsigned int, dim> &n)
+  {
+    // One 1D rule per direction on [0,1], then their tensor product.
+    std::array<Quadrature<1>, dim> rules;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        AssertThrow(n[d] >= 1,
+                    ExcMessage("At least one point per cell and direction "
+                               "is needed."));
+        if (placement == Placement::gauss)
+          rules[d] = QGauss<1>(n[d]);
+        else
+          {
+            std::vector<Point<1>> points_1d(n[d]);
+            for (unsigned int i = 0; i < n[d]; ++i)
+              points_1d[i][0] = (i + 0.5) / n[d];
+            rules[d] =
+              Quadrature<1>(points_1d, std::vector<double>(n[d], 1. / n[d]));
+          }
+      }
+    if constexpr (dim == 2)
+      return QAnisotropic<2>(rules[0], rules[1]);
+    else
+      return QAnisotropic<3>(rules[0], rules[1], rules[2]);
+  }
+
+
+
+  template <int dim>
   void
   MaterialPointSet<dim>::fill(
     const std::function<bool(const Point<dim> &)> &inside,
@@ -106,26 +138,28 @@ namespace qsmpm
     const unsigned int                             material_id)
   {
     AssertThrow(n >= 1, ExcMessage("At least one point per cell is needed."));
+    std::array<unsigned int, dim> n_per_direction;
+    n_per_direction.fill(n);
+    fill(inside, reference_rule(placement, n_per_direction), material_id);
+  }
 
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::fill(
+    const std::function<bool(const Point<dim> &)> &inside,
+    const Quadrature<dim>                         &rule,
+    const unsigned int                             material_id)
+  {
     // Reference positions and volume fractions of the points in a cell.
-    std::vector<Point<dim>> reference_points;
-    std::vector<double>     fractions;
-    if (placement == Placement::gauss)
-      {
-        const QGauss<dim> gauss(n);
-        reference_points = gauss.get_points();
-        fractions        = gauss.get_weights();
-      }
-    else
-      {
-        std::vector<Point<1>> points_1d(n);
-        for (unsigned int i = 0; i < n; ++i)
-          points_1d[i][0] = (i + 0.5) / n;
-        const Quadrature<dim> regular(
-          Quadrature<1>(points_1d, std::vector<double>(n, 1. / n)));
-        reference_points = regular.get_points();
-        fractions        = regular.get_weights();
-      }
+    const std::vector<Point<dim>> &reference_points = rule.get_points();
+    const std::vector<double>     &fractions        = rule.get_weights();
+    AssertThrow(std::abs(
+                  std::accumulate(fractions.begin(), fractions.end(), 0.) -
+                  1.) < 1e-12,
+                ExcMessage("The volume fractions of the points of a cell "
+                           "(the weights of the rule) must sum to one."));
 
     // First collect the new points, so that globally unique ids can be
     // handed out with one prefix sum over the ranks.

@@ -18,7 +18,8 @@ namespace qsmpm
    * and height H = a + b (in y) with a notch of width h and depth a from the
    * top edge along the centre line x = 0, which leaves the ligament b below
    * the notch. The two halves beside the notch are the appendages. The grid
-   * is the rectangle itself, with one column of cells centred on x = 0: the
+   * is the rectangle itself (optionally with a margin of empty cells, see
+   * Parameters::grid_margin), with one column of cells centred on x = 0: the
    * notch is the upper part of that column (cells without points), the
    * ligament its lower part, which is where cracks may form (the cells that
    * contain the centre line).
@@ -60,6 +61,19 @@ namespace qsmpm
       double notch_ratio = 1.0;
       /// Width of the load pins in cells (plate_cells + 1 nodes each).
       unsigned int plate_cells = 2;
+      /**
+       * k: the crack-band cell at the back face (the bottom end of the
+       * ligament) gets k times as many points along the ligament (y) as the
+       * other cells; 1 fills it like every other cell. See setup().
+       */
+      unsigned int back_face_refinement = 1;
+      /**
+       * Empty grid cells around the specimen on all sides, so that points
+       * may move out of the specimen's rectangle: the broken halves rotate
+       * apart by several degrees when a run goes on to complete failure.
+       * 0: the grid is the specimen.
+       */
+      unsigned int grid_margin = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -75,6 +89,29 @@ namespace qsmpm
      * "Crack band width" must equal h), material points in the body with
      * @p points_per_direction^dim per cell, and the pins. Returns the index
      * of the pulled pin among the displacement conditions (see load()).
+     *
+     * <h4>The hinge at the back face</h4>
+     * Once the crack has run through the ligament, the two halves rotate
+     * apart about the lowest point of the crack band: with no load left, a
+     * single point carries no stress, so it has zero strain. A relative
+     * (opening) rotation theta about height y0 gives eps_xx = theta (y -
+     * y0) / h at a band point at height y, zero only at y = y0; with one
+     * point per cell the hinge is the point of the last (back-face) cell,
+     * and the rotation is the hourglass mode of one-point quadrature in
+     * that cell: the point never breaks, and its share of the
+     * crack area, h d, is never dissipated (the work of the load at
+     * complete failure is G_f (b - h) d instead of G_f b d). Only one point
+     * can act as the hinge, so the missing share is that of the lowest
+     * point. With back_face_refinement = k, the back-face band cell holds
+     * n x (k n) points (n = @p points_per_direction; n x k n x n in 3D),
+     * each of volume V_cell / (k n^dim): the missing share becomes at
+     * most h / (k n) of b (with k > 1 the lowest point may fail as well in
+     * the end; see the example compact_tension's documentation). The smearing
+     * length of Decohesion is the band width h for every point, so each point
+     * still dissipates G_f times its crack area (V_p / h) and the band as a
+     * whole G_f b d less the hinge's share. There are only k - 1
+     * extra points, but the small ones make the AMG-preconditioned GMRES
+     * work harder (about 1.7 times the wall time for b = 15 cm, k = 8).
      */
     unsigned int
     setup(QuasiStaticProblem<dim>                        &problem,
@@ -82,11 +119,13 @@ namespace qsmpm
           const unsigned int                              points_per_direction,
           const typename MaterialPointSet<dim>::Placement placement) const;
 
-    /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D).
+    /// The box grid: [-W/2, W/2] x [0, H] (x [0, d] in 3D), enlarged by
+    /// grid_margin cells on the four sides in x and y.
     void
     make_grid(BackgroundGrid<dim> &grid) const;
 
-    /// Whether @p x lies in the specimen (not in the notch).
+    /// Whether @p x lies in the specimen (in the rectangle, not in the
+    /// notch).
     bool
     in_body(const Point<dim> &x) const;
 
@@ -94,6 +133,11 @@ namespace qsmpm
     /// cracks are allowed.
     bool
     in_crack_band(const Point<dim> &x) const;
+
+    /// Whether @p x lies in the crack-band cell(s) at the back face (the
+    /// bottom row of the band, 0 < y < h), see setup().
+    bool
+    in_back_face_cell(const Point<dim> &x) const;
 
     /**
      * Add the two load pins to @p bcs, in this order: "left load point"

@@ -13,6 +13,17 @@ namespace qsmpm
    * solve fails is retried with a smaller increment, a bounded number of
    * times in a row; after that the run stops with an error. Once a step
    * converges, the next step tries the nominal increment again.
+   *
+   * Optionally (growth factor g > 1; off by default) the increment grows
+   * geometrically once the load factor has passed a given value: after
+   * each accepted step that ends at |t| >= "Growth from load factor", the
+   * next increment is g times the one just taken (at least the nominal
+   * one, at most "Maximum increment"). This is meant for long tails of a
+   * response that hardly changes any more, e.g. the last stage of a
+   * fracture test, where the nominal increment would need thousands of
+   * steps. A cut-back in that stage lowers the increment, which then grows
+   * again from the lowered value (but restarts at no less than the nominal
+   * increment).
    */
   class LoadStepper
   {
@@ -26,6 +37,12 @@ namespace qsmpm
       double       final_load_factor = 1.;
       unsigned int max_cut_backs     = 4;
       double       cut_back_factor   = 0.5;
+      /// g: increment growth per accepted step; 1 = off.
+      double growth_factor = 1.;
+      /// |t| from which the increment grows.
+      double growth_start = 0.;
+      /// Largest |increment| when growing; 0 = no limit.
+      double max_increment = 0.;
 
       static void
       declare_parameters(ParameterHandler &prm);

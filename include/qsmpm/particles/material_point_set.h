@@ -1,7 +1,9 @@
 #ifndef qsmpm_particles_material_point_set_h
 #define qsmpm_particles_material_point_set_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
@@ -85,6 +87,28 @@ namespace qsmpm
          const unsigned int                             points_per_direction,
          const Placement                                placement,
          const unsigned int                             material_id = 0);
+
+    /**
+     * As above, with the points of every cell at the points of @p rule on
+     * the reference cell [0,1]^dim and volumes equal to its weights (which
+     * must sum to one) times the cell volume. Use reference_rule() for
+     * rules with a different number of points per direction, e.g. a cell
+     * with 1 x N points.
+     */
+    void
+    fill(const std::function<bool(const Point<dim> &)> &inside,
+         const Quadrature<dim>                         &rule,
+         const unsigned int                             material_id = 0);
+
+    /**
+     * The reference positions and volume fractions of @p placement with
+     * @p n[d] points in direction d: the centres of a uniform
+     * n[0] x n[1] (x n[2]) subdivision with equal weights (regular), or the
+     * tensor product of n[d]-point Gauss rules (gauss).
+     */
+    static Quadrature<dim>
+    reference_rule(const Placement                      placement,
+                   const std::array<unsigned int, dim> &n);
 
     /// Fill as described by the parameters.
     void
