@@ -27,15 +27,10 @@ namespace qsmpm
     if (!any_coupling)
       return;
 
-    homogeneous.clear();
-    homogeneous.reinit(relevant);
-    homogeneous.copy_from(constraints);
-    for (const auto &line : constraints.get_lines())
-      homogeneous.set_inhomogeneity(line.index, 0.);
-
     masters.add_indices(owned);
     masters.compress();
     master_forces.reinit(owned, masters, communicator, /*writable=*/true);
+    master_values.reinit(owned, masters, communicator);
   }
 
 
@@ -67,10 +62,23 @@ namespace qsmpm
   void
   StepConstraints::make_admissible(VectorType &v) const
   {
-    if (any_coupling)
-      homogeneous.distribute(v);
-    else
-      constraints.set_zero(v);
+    if (!any_coupling)
+      {
+        constraints.set_zero(v);
+        return;
+      }
+    // Masters are never constrained (the constraints are closed), so their
+    // values can be imported before the constrained entries are set.
+    master_values = v;
+    constraints.set_zero(v);
+    for (const auto &[slave, entries] : coupled)
+      {
+        double value = 0.;
+        for (const auto &[master, weight] : entries)
+          value += weight * master_values[master];
+        v[slave] = value;
+      }
+    v.compress(VectorOperation::insert);
   }
 
 
@@ -88,6 +96,7 @@ namespace qsmpm
           master_forces[master] += weight * force;
         R[slave] = 0.;
       }
+    R.compress(VectorOperation::insert);
     master_forces.compress(VectorOperation::add);
     R += master_forces;
   }

@@ -70,8 +70,6 @@ namespace qsmpm
 
   private:
     AffineConstraints<double> constraints;
-    /// The same lines without inhomogeneities (only with couplings).
-    AffineConstraints<double> homogeneous;
     /// Locally owned coupled dofs with their entries (j, c_ij).
     std::vector<
       std::pair<types::global_dof_index,
@@ -79,6 +77,8 @@ namespace qsmpm
       coupled;
     /// Scratch vector that may be written at every master dof.
     mutable VectorType master_forces;
+    /// Scratch vector with the values of every master dof (ghosted).
+    mutable VectorType master_values;
     bool               any_coupling = false;
   };
 } // namespace qsmpm
