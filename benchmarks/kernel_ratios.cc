@@ -81,10 +81,15 @@ namespace
       2, all, std::make_shared<Functions::ZeroFunction<dim>>(dim));
     bcs.add_dirichlet_boundary(
       3, all, std::make_shared<Benchmarks::TopDisplacement<dim>>());
-    AffineConstraints<double> constraints;
+    AffineConstraints<double> step_lines;
     bcs.make_constraints(
-      grid, cache.dofs_without_points(grid), 0., 1., constraints);
-    VectorType f_ext(grid.locally_owned_dofs(), comm);
+      grid, cache.dofs_without_points(grid), 0., 1., step_lines);
+    qsmpm::StepConstraints step_constraints;
+    step_constraints.reinit(std::move(step_lines),
+                            grid.locally_owned_dofs(),
+                            comm);
+    const AffineConstraints<double> &constraints = step_constraints.get();
+    VectorType                       f_ext(grid.locally_owned_dofs(), comm);
     residual.set_external_force(f_ext);
 
     // Kernels: residual evaluation against sparse matrix-vector product.
@@ -120,11 +125,6 @@ namespace
     amg.setup(tangent.matrix(), grid);
     du = 0.;
     constraints.distribute(du);
-    qsmpm::StepConstraints step_constraints;
-    step_constraints.reinit(constraints,
-                            grid.locally_owned_dofs(),
-                            grid.locally_relevant_dofs(),
-                            comm);
     const qsmpm::StepOperator<dim> op(residual, step_constraints, amg);
     const auto                     report =
       qsmpm::NewtonKrylov<qsmpm::StepOperator<dim>, VectorType>(parameters)

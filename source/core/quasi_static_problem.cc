@@ -164,15 +164,15 @@ namespace qsmpm
       cache.reinit(background_grid, points(), residual->ghosted_layout());
     }
     {
-      TimerOutput::Scope scope(timer_output, "constraints and loads");
+      TimerOutput::Scope        scope(timer_output, "constraints and loads");
+      AffineConstraints<double> constraints;
       bcs.make_constraints(background_grid,
                            cache.dofs_without_points(background_grid),
                            t_old,
                            t_new,
                            constraints);
-      step_constraints.reinit(constraints,
+      step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
-                              background_grid.locally_relevant_dofs(),
                               communicator);
       bcs.assemble_external_force(
         background_grid, cache, points().get_offsets().volume, t_new, f_ext);
@@ -181,7 +181,10 @@ namespace qsmpm
     if (preconditioner.needs_matrix())
       {
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
-        tangent.assemble(background_grid, points(), cache, constraints);
+        tangent.assemble(background_grid,
+                         points(),
+                         cache,
+                         step_constraints.get());
         preconditioner.setup(tangent.matrix(), background_grid);
       }
 

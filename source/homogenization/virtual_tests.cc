@@ -158,17 +158,17 @@ namespace qsmpm
                     faces.emplace_back(f, false);
                   }
           }
-        else if (prm.boundary_type == BoundaryType::periodic)
-          {
-            H[i][j] = (i == j ? prm.strain : 0.5 * prm.strain);
-            H[j][i] = H[i][j];
-            bcs.set_macroscopic_displacement_gradient(
-              [H](const double t) { return t * H; }, centre);
-          }
         else
           {
-            H[i][j]      = (i == j ? prm.strain : 0.5 * prm.strain);
-            H[j][i]      = H[i][j];
+            // The symmetric macroscopic strain tensor of the test.
+            H[i][j] = (i == j ? prm.strain : 0.5 * prm.strain);
+            H[j][i] = H[i][j];
+          }
+        if (prm.boundary_type == BoundaryType::periodic)
+          bcs.set_macroscopic_displacement_gradient(
+            [H](const double t) { return t * H; }, centre);
+        else if (prm.boundary_type == BoundaryType::affine)
+          {
             const auto g = std::make_shared<LinearDisplacement>(H, centre);
             for (unsigned int f = 0; f < 6; ++f)
               {

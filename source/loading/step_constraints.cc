@@ -4,14 +4,11 @@
 namespace qsmpm
 {
   void
-  StepConstraints::reinit(const AffineConstraints<double> &new_constraints,
-                          const IndexSet                  &owned,
-                          const IndexSet                  &relevant,
-                          const MPI_Comm                   communicator)
+  StepConstraints::reinit(AffineConstraints<double> &&new_constraints,
+                          const IndexSet             &owned,
+                          const MPI_Comm              communicator)
   {
-    constraints.clear();
-    constraints.reinit(relevant);
-    constraints.copy_from(new_constraints);
+    constraints = std::move(new_constraints);
 
     coupled.clear();
     IndexSet masters(owned.size());

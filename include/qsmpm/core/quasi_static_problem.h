@@ -166,7 +166,6 @@ namespace qsmpm
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
     Preconditioner<dim>                       preconditioner;
-    AffineConstraints<double>                 constraints;
     StepConstraints                           step_constraints;
     VectorType                                du;
     VectorType                                R;

@@ -35,14 +35,13 @@ namespace qsmpm
     using VectorType = TrilinosWrappers::MPI::Vector;
 
     /**
-     * Take the closed constraints of a step; @p owned and @p relevant are
-     * the locally owned and relevant degrees of freedom of the grid.
+     * Take over the closed constraints of a step; @p owned are the locally
+     * owned degrees of freedom of the grid.
      */
     void
-    reinit(const AffineConstraints<double> &constraints,
-           const IndexSet                  &owned,
-           const IndexSet                  &relevant,
-           const MPI_Comm                   communicator);
+    reinit(AffineConstraints<double> &&constraints,
+           const IndexSet             &owned,
+           const MPI_Comm              communicator);
 
     /// The constraints themselves (with their inhomogeneities b).
     const AffineConstraints<double> &
