@@ -30,6 +30,11 @@ struct Operator
   {
     constraints.set_zero(v);
   }
+  double
+  typical_increment_norm() const
+  {
+    return residual_evaluator.typical_increment_norm();
+  }
 };
 
 template <int dim>

@@ -59,6 +59,20 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  QuasiStaticResidual<dim>::typical_increment_norm() const
+  {
+    const Tensor<1, dim> h = grid.cell_size();
+    double               h_min = h[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      h_min = std::min(h_min, h[d]);
+    return h_min *
+           std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
+  }
+
+
+
+  template <int dim>
   unsigned long
   QuasiStaticResidual<dim>::n_evaluations() const
   {

@@ -25,6 +25,57 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  ConstitutiveModel<dim>::supports_finite_strain() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::update_kirchhoff_stress(
+    const PointState<dim> &,
+    const FiniteStrainKinematics<dim> &,
+    SymmetricTensor<2, dim> &,
+    ArrayView<double>) const
+  {
+    AssertThrow(false,
+                ExcMessage("The constitutive model <" + name() +
+                           "> is small-strain only; choose a finite-strain "
+                           "model (e.g. hencky or neo-Hookean) or Kinematics "
+                           "= small strain."));
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  ConstitutiveModel<dim>::kirchhoff_tangent(
+    const PointState<dim> &,
+    const FiniteStrainKinematics<dim> &) const
+  {
+    AssertThrow(false,
+                ExcMessage("The constitutive model <" + name() +
+                           "> is small-strain only; choose a finite-strain "
+                           "model (e.g. hencky or neo-Hookean) or Kinematics "
+                           "= small strain."));
+    return {};
+  }
+
+
+
+  template <int dim>
+  std::string
+  ConstitutiveModel<dim>::name() const
+  {
+    return "unnamed";
+  }
+
+
+
+  template <int dim>
   unsigned int
   ConstitutiveModel<dim>::n_state_components() const
   {

@@ -67,6 +67,14 @@ namespace qsmpm
     const TrilinosWrappers::MPI::Vector &
     ghosted_layout() const;
 
+    /**
+     * The l2 norm of a displacement of one (smallest) cell size at every
+     * degree of freedom: the scale of finite-difference steps taken at
+     * du = 0 (see JacobianFreeOperator).
+     */
+    double
+    typical_increment_norm() const;
+
     /// The number of residual evaluations since construction.
     unsigned long
     n_evaluations() const;

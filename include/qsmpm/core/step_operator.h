@@ -51,6 +51,18 @@ namespace qsmpm
       constraints.make_admissible(v);
     }
 
+    /**
+     * The size of a typical increment where none is known (the
+     * finite-difference step at du = 0): a displacement of one cell size
+     * at every degree of freedom, so that a perturbation of relative size
+     * sqrt(eps) strains the points by about sqrt(eps).
+     */
+    double
+    typical_increment_norm() const
+    {
+      return residual_evaluator.typical_increment_norm();
+    }
+
     void
     precondition(VectorType &dst, const VectorType &src) const
     {

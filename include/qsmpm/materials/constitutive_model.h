@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 #include <functional>
 #include <memory>
 #include <string>
@@ -40,6 +41,22 @@ namespace qsmpm
     ArrayView<const double> state;
     /// Volume of the point at the start of the step.
     double volume;
+  };
+
+  /**
+   * The kinematics of one finite-strain load step at a point (updated
+   * Lagrangian on the reset grid): the deformation gradient committed at
+   * the start of the step, the increment Delta F = I + grad_n(Delta u)
+   * (gradient on the grid, i.e. in the configuration at the start of the
+   * step), and F = Delta F F_old. In 2D (plane strain) the out-of-plane
+   * stretch is one and all tensors are 2x2.
+   */
+  template <int dim>
+  struct FiniteStrainKinematics
+  {
+    Tensor<2, dim> F_old;
+    Tensor<2, dim> delta_F;
+    Tensor<2, dim> F;
   };
 
   /**
@@ -89,6 +106,44 @@ namespace qsmpm
      */
     virtual SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const = 0;
+
+    /**
+     * Whether the model implements the finite-strain interface below
+     * (update_kirchhoff_stress() and kirchhoff_tangent()).
+     */
+    virtual bool
+    supports_finite_strain() const;
+
+    /**
+     * Finite strain: the Kirchhoff stress tau = J sigma and the trial history
+     * at F = Delta F F_old, from the committed point state @p old (whose
+     * stress is the committed Cauchy stress). Pure, like update_stress().
+     * The default throws: the model is small-strain only.
+     */
+    virtual void
+    update_kirchhoff_stress(const PointState<dim>              &old,
+                            const FiniteStrainKinematics<dim>  &kinematics,
+                            SymmetricTensor<2, dim>            &tau,
+                            ArrayView<double>                   new_state) const;
+
+    /**
+     * Finite strain: the consistent tangent of the Kirchhoff stress returned
+     * by update_kirchhoff_stress() for the same arguments, as the
+     * fourth-order tensor c with
+     *
+     *   d tau_ij = c_ijkl d l_kl,   d l = d(Delta F) Delta F^{-1},
+     *
+     * i.e. the derivative with respect to the spatial gradient of a
+     * variation of the increment (c is in general not minor-symmetric in
+     * kl). The default throws.
+     */
+    virtual Tensor<4, dim>
+    kirchhoff_tangent(const PointState<dim>             &old,
+                      const FiniteStrainKinematics<dim> &kinematics) const;
+
+    /// The model's name in messages.
+    virtual std::string
+    name() const;
 
     /// Total number of doubles in state_fields().
     unsigned int

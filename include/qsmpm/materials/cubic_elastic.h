@@ -36,6 +36,12 @@ namespace qsmpm
   class CubicElastic : public ConstitutiveModel<dim>
   {
   public:
+    std::string
+    name() const override
+    {
+      return "cubic elastic";
+    }
+
     /// Orientation g (Bunge, sample -> crystal) of a point at x.
     using OrientationFunction = std::function<Tensor<2, 3>(const Point<dim> &)>;
 

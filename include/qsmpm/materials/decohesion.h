@@ -72,6 +72,12 @@ namespace qsmpm
   class Decohesion : public ConstitutiveModel<dim>
   {
   public:
+    std::string
+    name() const override
+    {
+      return "decohesion";
+    }
+
     /**
      * @p fixed_normal: the crack normal, or the zero tensor for the direction
      * of the largest principal stress at initiation.

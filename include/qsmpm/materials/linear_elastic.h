@@ -17,6 +17,12 @@ namespace qsmpm
   class LinearElastic : public ConstitutiveModel<dim>
   {
   public:
+    std::string
+    name() const override
+    {
+      return "linear elastic";
+    }
+
     LinearElastic(const double young_modulus,
                   const double poisson_ratio,
                   const bool   plane_stress = false);

@@ -9,15 +9,27 @@ namespace qsmpm
    * The Jacobian-vector product of paper eqs. (A.3)-(A.4) as a matrix-free
    * operator for deal.II's Krylov solvers:
    *
-   *   J(du) s ~ (R(du + h s) - R(du)) / h,
-   *   h = sqrt(eps_prec) ||du|| / ||s||   if du != 0,
-   *   h = sqrt(eps_prec) ||s||            if du  = 0,   (h = 0, Js = 0, if s =
-   * 0).
+   *   J(du) s ~ (R(du + h s) - R(du)) / h,   h = sqrt(eps_prec) d / ||s||,
+   *
+   * so that the perturbation h s has the norm sqrt(eps_prec) d, where d is
+   * the size of the increments of interest: ||du||, or, where du = 0 (a
+   * linearization at the start of a step without prescribed increments),
+   * the operator's typical_increment_norm(). (h = 0, Js = 0, if s = 0.)
+   *
+   * The perturbation must be relative to a displacement scale, not to
+   * ||s||: with a preconditioner, the Krylov directions s are corrections
+   * of the size of residual / stiffness, which in physical units can be
+   * 1e-6 and less. The earlier choice h = sqrt(eps_prec) ||s|| for du = 0
+   * then perturbed the strains by less than the round-off of the stresses
+   * already on the points; the difference quotient was exactly zero and
+   * GMRES divided by zero (issue 10: the self-weight column with AMG
+   * stopped with a NaN residual at its second load step).
    *
    * Constrained components of the product are zero, so the Krylov vectors
    * never leave the space of admissible corrections.
    *
-   * Operator must provide residual(du, R) and set_constrained_to_zero(v).
+   * Operator must provide residual(du, R), set_constrained_to_zero(v) and
+   * typical_increment_norm().
    */
   template <typename Operator, typename VectorType>
   class JacobianFreeOperator
@@ -26,7 +38,8 @@ namespace qsmpm
     /**
      * The product at @p du, where R(du) = @p R_du. The norm of du in h may
      * be replaced by @p scale (> 0), the size of the increments of interest,
-     * for linearizations at du = 0 (see NewtonKrylov's predictor).
+     * for linearizations at du = 0 (see NewtonKrylov's predictor); if both
+     * are zero, the operator's typical_increment_norm() is used.
      */
     JacobianFreeOperator(const Operator   &op,
                          const VectorType &du,
@@ -38,7 +51,9 @@ namespace qsmpm
       , R_du(R_du)
       , sqrt_eps_prec(sqrt_eps_prec)
       , du_norm(scale > 0. ? scale : du.l2_norm())
+      , increment_scale(du_norm > 0. ? du_norm : op.typical_increment_norm())
     {
+      Assert(increment_scale > 0., ExcInternalError());
     }
 
     void
@@ -50,8 +65,7 @@ namespace qsmpm
           dst = 0.;
           return;
         }
-      const double h = du_norm > 0. ? sqrt_eps_prec * du_norm / s_norm :
-                                      sqrt_eps_prec * s_norm;
+      const double h = sqrt_eps_prec * increment_scale / s_norm;
       perturbed.reinit(du, /*omit_zeroing_entries=*/true);
       perturbed = du;
       perturbed.add(h, s);
@@ -75,6 +89,7 @@ namespace qsmpm
     const VectorType    &R_du;
     const double         sqrt_eps_prec;
     const double         du_norm;
+    const double         increment_scale;
     mutable VectorType   perturbed;
     mutable unsigned int n_products = 0;
   };

@@ -48,7 +48,10 @@ namespace qsmpm
    *     constraints, i.e. zero where prescribed and equal to the master's
    *     where periodic);
    *   - void precondition(VectorType &dst, const VectorType &src) const;
-   *     (an approximation of J^{-1}, or a copy for none).
+   *     (an approximation of J^{-1}, or a copy for none);
+   *   - double typical_increment_norm() const;
+   *     (the size of increments where du = 0 gives none, for the
+   *     finite-difference step of JacobianFreeOperator).
    *
    * The initial guess du_0 handed to solve() must satisfy the displacement
    * boundary conditions (paper A.1 step 1); every correction satisfies the
@@ -142,6 +145,12 @@ namespace qsmpm
             op, du, R, parameters.sqrt_eps_prec);
           const LinearSolve linear =
             solve_linear(op, J, rhs, forcing, s, report);
+          if (!std::isfinite(s.l2_norm()))
+            {
+              report.failure = "GMRES returned a correction that is not a "
+                               "finite number";
+              return report;
+            }
 
           // A.1 step 5, with an optional backtracking line search.
           double alpha = 1.;
