@@ -1,6 +1,8 @@
 #include <Epetra_BlockMap.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/base/utilities.h>
+#include <cmath>
+#include <limits>
 
 namespace qsmpm
 {
@@ -101,16 +103,47 @@ namespace qsmpm
 
 
 
+  namespace
+  {
+    template <int dim>
+    Tensor<2, dim>
+    read_tensor(const double *data)
+    {
+      Tensor<2, dim> T;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          T[i][j] = data[i * dim + j];
+      return T;
+    }
+
+    /// The logarithmic strain 1/2 ln(F F^T), for output.
+    template <int dim>
+    SymmetricTensor<2, dim>
+    logarithmic_strain(const Tensor<2, dim> &F)
+    {
+      const auto eigen =
+        eigenvectors(symmetrize(Tensor<2, dim>(F * transpose(F))));
+      SymmetricTensor<2, dim> eps;
+      for (unsigned int a = 0; a < dim; ++a)
+        eps += (0.5 * std::log(eigen[a].first)) *
+               symmetrize(outer_product(eigen[a].second, eigen[a].second));
+      return eps;
+    }
+  } // namespace
+
+
+
   template <int dim>
   template <bool write_back>
   void
   QuasiStaticResidual<dim>::loop(const TrilinosWrappers::MPI::Vector &du,
                                  TrilinosWrappers::MPI::Vector       *R) const
   {
-    constexpr unsigned int n_vertices    = ShapeCache<dim>::n_vertices;
-    constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
-    const auto            &offsets       = points.get_offsets();
-    const unsigned int     n_state       = state_scratch.size();
+    constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
+    const unsigned int     stencil  = cache.stencil_size();
+    const auto            &offsets  = points.get_offsets();
+    const unsigned int     n_state  = state_scratch.size();
+    const bool finite_strain = points.get_formulation().finite_strain();
 
     du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
                                         *importer,
@@ -120,12 +153,13 @@ namespace qsmpm
     if (!write_back)
       local_force->PutScalar(0.);
 
-    double du_cell[dofs_per_cell];
-    double f_cell[dofs_per_cell];
+    double du_cell[max_dofs];
+    double f_cell[max_dofs];
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        const int *dofs = cache.local_dofs(c);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        const int         *dofs   = cache.local_dofs(c);
+        const unsigned int n_dofs = cache.n_dofs(c);
+        for (unsigned int i = 0; i < n_dofs; ++i)
           {
             du_cell[i] = du_values[dofs[i]];
             f_cell[i]  = 0.;
@@ -135,57 +169,111 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const unsigned short *nodes  = cache.nodes(p);
             double               *data   = cache.properties(p);
 
-            // (2.18): d_eps = sym(sum_i du_i (x) grad N_i).
+            // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e.
+            // in the configuration at the start of the step.
             Tensor<2, dim> grad_du;
-            for (unsigned int v = 0; v < n_vertices; ++v)
+            for (unsigned int k = 0; k < stencil; ++k)
               for (unsigned int a = 0; a < dim; ++a)
-                grad_du[a] += du_cell[v * dim + a] * grad_N[v];
-            const SymmetricTensor<2, dim> d_eps = symmetrize(grad_du);
+                grad_du[a] += du_cell[nodes[k] * dim + a] * grad_N[k];
 
-            // (2.20)-(2.21): trial stress from the committed state.
             const PointState<dim> old{
               Utils::read_symmetric<dim>(data + offsets.strain),
               Utils::read_symmetric<dim>(data + offsets.stress),
               ArrayView<const double>(data + offsets.state, n_state),
               data[offsets.volume]};
+            ArrayView<double> new_state(state_scratch.data(), n_state);
+
+            // Small strain: f_i = -volume sigma grad N_i. Finite strain:
+            // f_i = -Omega_0 P grad_n N_i with P = tau Delta F^{-T}.
             SymmetricTensor<2, dim> stress;
-            model.update_stress(old,
-                                d_eps,
-                                stress,
-                                ArrayView<double>(state_scratch.data(),
-                                                  n_state));
-
-            // (2.23)-(2.24): J and the volume at the end of the step.
-            const double J      = (1. + trace(d_eps)) * data[offsets.J];
-            const double volume = update_volumes ?
-                                    J * data[offsets.initial_volume] :
-                                    data[offsets.initial_volume];
-
-            if (write_back)
+            Tensor<2, dim>          P;
+            double                  volume = 0.;
+            if (finite_strain)
               {
-                Utils::write_symmetric<dim>(old.strain + d_eps,
-                                            data + offsets.strain);
-                Utils::write_symmetric<dim>(stress, data + offsets.stress);
-                std::copy(state_scratch.begin(),
-                          state_scratch.end(),
-                          data + offsets.state);
-                data[offsets.J]      = J;
-                data[offsets.volume] = volume;
+                FiniteStrainKinematics<dim> kinematics;
+                kinematics.F_old =
+                  read_tensor<dim>(data + offsets.deformation_gradient);
+                kinematics.delta_F = unit_symmetric_tensor<dim>() + grad_du;
+                kinematics.F       = kinematics.delta_F * kinematics.F_old;
+                const double det_delta_F = determinant(kinematics.delta_F);
+                if (!(det_delta_F > 0.))
+                  {
+                    // An inverted point: no admissible residual. Newton's
+                    // line search backs off from non-finite norms.
+                    volume = std::numeric_limits<double>::quiet_NaN();
+                  }
+                else
+                  {
+                    SymmetricTensor<2, dim> tau;
+                    model.update_kirchhoff_stress(old, kinematics, tau, new_state);
+                    // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T}
+                    // grad_n N.
+                    volume = data[offsets.initial_volume];
+                    P      = Tensor<2, dim>(tau) *
+                        transpose(invert(kinematics.delta_F));
+                    if (write_back)
+                      {
+                        const double J = determinant(kinematics.F);
+                        Utils::write_symmetric<dim>(
+                          logarithmic_strain(kinematics.F), data + offsets.strain);
+                        Utils::write_symmetric<dim>(tau / J,
+                                                    data + offsets.stress);
+                        for (unsigned int i = 0; i < dim; ++i)
+                          for (unsigned int j = 0; j < dim; ++j)
+                            data[offsets.deformation_gradient + i * dim + j] =
+                              kinematics.F[i][j];
+                        data[offsets.J]      = J;
+                        data[offsets.volume] = J * data[offsets.initial_volume];
+                      }
+                  }
               }
             else
-              // (2.25): f_int_i = -Omega_p sigma_p . grad N_i.
-              for (unsigned int v = 0; v < n_vertices; ++v)
+              {
+                const SymmetricTensor<2, dim> d_eps = symmetrize(grad_du);
+
+                // (2.20)-(2.21): trial stress from the committed state.
+                model.update_stress(old, d_eps, stress, new_state);
+
+                // (2.23)-(2.24): J and the volume at the end of the step.
+                const double J      = (1. + trace(d_eps)) * data[offsets.J];
+                volume = update_volumes ? J * data[offsets.initial_volume] :
+                                          data[offsets.initial_volume];
+                if (write_back)
+                  {
+                    Utils::write_symmetric<dim>(old.strain + d_eps,
+                                                data + offsets.strain);
+                    Utils::write_symmetric<dim>(stress, data + offsets.stress);
+                    data[offsets.J]      = J;
+                    data[offsets.volume] = volume;
+                  }
+              }
+
+            if (write_back)
+              std::copy(state_scratch.begin(),
+                        state_scratch.end(),
+                        data + offsets.state);
+            else if (finite_strain)
+              for (unsigned int k = 0; k < stencil; ++k)
                 {
-                  const Tensor<1, dim> force = stress * grad_N[v];
+                  const Tensor<1, dim> f = P * grad_N[k];
                   for (unsigned int a = 0; a < dim; ++a)
-                    f_cell[v * dim + a] -= volume * force[a];
+                    f_cell[nodes[k] * dim + a] -= volume * f[a];
+                }
+            else
+              // (2.25): f_int_i = -Omega_p sigma_p . grad N_i.
+              for (unsigned int k = 0; k < stencil; ++k)
+                {
+                  const Tensor<1, dim> f = stress * grad_N[k];
+                  for (unsigned int a = 0; a < dim; ++a)
+                    f_cell[nodes[k] * dim + a] -= volume * f[a];
                 }
           }
 
         if (!write_back)
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int i = 0; i < n_dofs; ++i)
             force[dofs[i]] += f_cell[i];
       }
 

@@ -8,7 +8,8 @@ namespace qsmpm
 {
   template <int dim>
   void
-  TangentAssembler<dim>::reinit(const BackgroundGrid<dim> &grid)
+  TangentAssembler<dim>::reinit(const BackgroundGrid<dim> &grid,
+                                const bool                 gimp)
   {
     // Displacement conditions only fix values, but periodicity constraints
     // couple the nodes of opposite faces: condensing them adds the slave's
@@ -26,12 +27,30 @@ namespace qsmpm
                                               grid.locally_owned_dofs(),
                                               writable_rows,
                                               grid.get_communicator());
-    DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
-                                    pattern,
-                                    periodicity,
-                                    /*keep_constrained_dofs=*/true,
-                                    dealii::Utilities::MPI::this_mpi_process(
-                                      grid.get_communicator()));
+    if (gimp)
+      {
+        // The block's nodes outside the grid do not exist; the rest couple.
+        std::vector<types::global_dof_index> block, dofs;
+        for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              grid.node_block_dofs(cell, block);
+              dofs.clear();
+              for (const auto dof : block)
+                if (dof != numbers::invalid_dof_index)
+                  dofs.push_back(dof);
+              periodicity.add_entries_local_to_global(dofs,
+                                                      pattern,
+                                                      /*keep_constrained=*/true);
+            }
+      }
+    else
+      DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
+                                      pattern,
+                                      periodicity,
+                                      /*keep_constrained_dofs=*/true,
+                                      dealii::Utilities::MPI::this_mpi_process(
+                                        grid.get_communicator()));
     pattern.compress();
     K.reinit(pattern);
   }
@@ -45,33 +64,60 @@ namespace qsmpm
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints)
   {
-    constexpr unsigned int n_vertices    = ShapeCache<dim>::n_vertices;
-    constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
-    const auto            &offsets       = points.get_offsets();
-    const auto            &model         = points.get_model();
-    const unsigned int     n_state       = model.n_state_components();
+    const unsigned int stencil       = cache.stencil_size();
+    const auto        &offsets       = points.get_offsets();
+    const auto        &model         = points.get_model();
+    const unsigned int n_state       = model.n_state_components();
+    const bool finite_strain = points.get_formulation().finite_strain();
 
     K = 0;
-    FullMatrix<double>                   K_cell(dofs_per_cell, dofs_per_cell);
-    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    FullMatrix<double>                   K_cell;
+    std::vector<types::global_dof_index> dofs;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        K_cell            = 0;
+        const unsigned int n_dofs = cache.n_dofs(c);
+        K_cell.reinit(n_dofs, n_dofs);
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *data   = cache.properties(p);
             const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const unsigned short *nodes  = cache.nodes(p);
             const PointState<dim> state{
               Utils::read_symmetric<dim>(data + offsets.strain),
               Utils::read_symmetric<dim>(data + offsets.stress),
               ArrayView<const double>(data + offsets.state, n_state),
               data[offsets.volume]};
-            const Tensor<4, dim> C      = Tensor<4, dim>(model.tangent(state));
-            const double         volume = data[offsets.volume];
+            Tensor<4, dim> C;
+            double         volume;
+            if (finite_strain)
+              {
+                // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
+                // G = grad_n d(du), on the initial volume (see
+                // QuasiStaticResidual).
+                FiniteStrainKinematics<dim> kinematics;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    kinematics.F_old[i][j] =
+                      data[offsets.deformation_gradient + i * dim + j];
+                kinematics.delta_F = unit_symmetric_tensor<dim>();
+                kinematics.F       = kinematics.F_old;
+                C = model.kirchhoff_tangent(state, kinematics);
+                const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int k = 0; k < dim; ++k)
+                    for (unsigned int l = 0; l < dim; ++l)
+                      C[a][k][k][l] -= tau[a][l];
+                volume = data[offsets.initial_volume];
+              }
+            else
+              {
+                C      = Tensor<4, dim>(model.tangent(state));
+                volume = data[offsets.volume];
+              }
             // K_(v,a),(w,b) = Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l
-            for (unsigned int v = 0; v < n_vertices; ++v)
-              for (unsigned int w = 0; w < n_vertices; ++w)
+            for (unsigned int v = 0; v < stencil; ++v)
+              for (unsigned int w = 0; w < stencil; ++w)
                 for (unsigned int a = 0; a < dim; ++a)
                   for (unsigned int b = 0; b < dim; ++b)
                     {
@@ -79,10 +125,11 @@ namespace qsmpm
                       for (unsigned int k = 0; k < dim; ++k)
                         for (unsigned int l = 0; l < dim; ++l)
                           sum += grad_N[v][k] * C[a][k][b][l] * grad_N[w][l];
-                      K_cell(v * dim + a, w * dim + b) += volume * sum;
+                      K_cell(nodes[v] * dim + a, nodes[w] * dim + b) +=
+                        volume * sum;
                     }
           }
-        dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + dofs_per_cell);
+        dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + n_dofs);
         constraints.distribute_local_to_global(K_cell, dofs, K);
       }
     K.compress(VectorOperation::add);

@@ -91,8 +91,8 @@ namespace qsmpm
     residual.reset();
     material_points.reset();
     model = std::move(new_model);
-    material_points =
-      std::make_unique<MaterialPointSet<dim>>(background_grid, *model);
+    material_points = std::make_unique<MaterialPointSet<dim>>(
+      background_grid, *model, prm_values.material_points.formulation);
   }
 
 
@@ -141,7 +141,7 @@ namespace qsmpm
         preconditioner = Preconditioner<dim>(Preconditioner<dim>::parse_type(
           prm_values.nonlinear_solver.preconditioner));
         if (preconditioner.needs_matrix())
-          tangent.reinit(background_grid);
+          tangent.reinit(background_grid, points().get_formulation().gimp());
       }
     du.reinit(background_grid.locally_owned_dofs(), communicator);
     R.reinit(du);
@@ -174,8 +174,16 @@ namespace qsmpm
       step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
                               communicator);
-      bcs.assemble_external_force(
-        background_grid, cache, points().get_offsets().volume, t_new, f_ext);
+      // At finite strain a body force is per unit initial volume (rho_0 b),
+      // so that the load of a point does not change with its volume.
+      const auto &offsets = points().get_offsets();
+      bcs.assemble_external_force(background_grid,
+                                  cache,
+                                  points().get_formulation().finite_strain() ?
+                                    offsets.initial_volume :
+                                    offsets.volume,
+                                  t_new,
+                                  f_ext);
       residual->set_external_force(f_ext);
     }
     if (preconditioner.needs_matrix())

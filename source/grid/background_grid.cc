@@ -288,6 +288,78 @@ namespace qsmpm
 
 
 
+  template <int dim>
+  void
+  BackgroundGrid<dim>::node_block_dofs(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                 &dofs) const
+  {
+    using Iterator = typename DoFHandler<dim>::cell_iterator;
+    // One step from c in direction d (-1 or +1), across periodic faces
+    // too; an invalid iterator where the grid ends.
+    const auto step = [](const Iterator &c, const unsigned int d, const int s) {
+      const unsigned int face = 2 * d + (s > 0 ? 1 : 0);
+      if (!c->at_boundary(face))
+        return Iterator(c->neighbor(face));
+      if (c->has_periodic_neighbor(face))
+        return Iterator(c->periodic_neighbor(face));
+      return Iterator();
+    };
+
+    constexpr unsigned int n_block_cells = dim == 2 ? 9 : 27;
+    std::array<Iterator, n_block_cells> block;
+    // Block cell (o_0, o_1[, o_2]), o_d = 0..2 for offsets -1..1: first
+    // along the last direction, then the rows along the earlier ones.
+    for (unsigned int b = 0; b < n_block_cells; ++b)
+      {
+        Iterator     c = cell;
+        unsigned int rest = b;
+        std::array<int, dim> offset;
+        for (unsigned int d = 0; d < dim; ++d, rest /= 3)
+          offset[d] = static_cast<int>(rest % 3) - 1;
+        for (int d = dim - 1; d >= 0 && c.state() == IteratorState::valid; --d)
+          if (offset[d] != 0)
+            c = step(c, d, offset[d]);
+        if (c.state() == IteratorState::valid)
+          {
+            Assert(c->is_active() && !c->is_artificial(),
+                   ExcMessage("GIMP needs a uniform grid whose ghost layer "
+                              "holds every vertex neighbour."));
+          }
+        block[b] = c;
+      }
+
+    // Fill the nodes, nearest cells first (fewest non-zero offsets).
+    dofs.assign(n_block_nodes * dim, numbers::invalid_dof_index);
+    for (unsigned int distance = 0; distance <= dim; ++distance)
+      for (unsigned int b = 0; b < n_block_cells; ++b)
+        {
+          unsigned int         rest = b, n_offsets = 0;
+          std::array<int, dim> o;
+          for (unsigned int d = 0; d < dim; ++d, rest /= 3)
+            {
+              o[d] = rest % 3;
+              n_offsets += (o[d] != 1);
+            }
+          if (n_offsets != distance || block[b].state() != IteratorState::valid)
+            continue;
+          const typename DoFHandler<dim>::active_cell_iterator c(block[b]);
+          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
+               ++v)
+            {
+              unsigned int node = 0, stride = 1;
+              for (unsigned int d = 0; d < dim; ++d, stride *= 4)
+                node += (o[d] + ((v >> d) & 1)) * stride;
+              if (dofs[node * dim] != numbers::invalid_dof_index)
+                continue;
+              for (unsigned int comp = 0; comp < dim; ++comp)
+                dofs[node * dim + comp] = c->vertex_dof_index(v, comp);
+            }
+        }
+  }
+
+
+
   template class BackgroundGrid<2>;
   template class BackgroundGrid<3>;
 } // namespace qsmpm

@@ -440,10 +440,9 @@ namespace qsmpm
     const double                   t,
     TrilinosWrappers::MPI::Vector &f_ext) const
   {
-    f_ext                                = 0;
-    constexpr unsigned int dofs_per_cell = ShapeCache<dim>::dofs_per_cell;
-    std::vector<types::global_dof_index> dofs(dofs_per_cell);
-    std::vector<double>                  cell_force(dofs_per_cell);
+    f_ext = 0;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  cell_force;
 
     // Body force, paper eq. (2.11): b_i = sum_p Omega_p b(x_p) N_i(x_p).
     if (body_force)
@@ -452,19 +451,20 @@ namespace qsmpm
         Vector<double> b(dim);
         for (unsigned int c = 0; c < cache.n_cells(); ++c)
           {
-            std::fill(cell_force.begin(), cell_force.end(), 0.);
+            cell_force.assign(cache.n_dofs(c), 0.);
             const auto &range = cache.cell(c);
             for (unsigned int p = range.first_point; p < range.end_point; ++p)
               {
                 body_force->vector_value(cache.position(p), b);
-                const double  volume = cache.properties(p)[volume_offset];
-                const double *N      = cache.values(p);
-                for (unsigned int v = 0; v < ShapeCache<dim>::n_vertices; ++v)
+                const double          volume = cache.properties(p)[volume_offset];
+                const double         *N      = cache.values(p);
+                const unsigned short *nodes  = cache.nodes(p);
+                for (unsigned int k = 0; k < cache.stencil_size(); ++k)
                   for (unsigned int d = 0; d < dim; ++d)
-                    cell_force[v * dim + d] += volume * b[d] * N[v];
+                    cell_force[nodes[k] * dim + d] += volume * b[d] * N[k];
               }
             dofs.assign(cache.global_dofs(c),
-                        cache.global_dofs(c) + dofs_per_cell);
+                        cache.global_dofs(c) + cache.n_dofs(c));
             f_ext.add(dofs, cell_force);
           }
       }
@@ -479,6 +479,9 @@ namespace qsmpm
                                   update_values | update_quadrature_points |
                                     update_JxW_values);
         Vector<double>        traction(dim);
+        const unsigned int    dofs_per_cell = grid.get_fe().n_dofs_per_cell();
+        dofs.resize(dofs_per_cell);
+        cell_force.resize(dofs_per_cell);
         for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             for (const unsigned int f : cell->face_indices())

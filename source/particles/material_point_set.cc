@@ -39,6 +39,32 @@ namespace qsmpm
                         "false keeps the initial volumes: a geometrically "
                         "linear model, identical to linear finite elements "
                         "when the points sit at Gauss points.");
+      prm.declare_entry("Kinematics",
+                        "small strain",
+                        Patterns::Selection("small strain|finite strain"),
+                        "small strain: the paper's formulation (strain "
+                        "increments sym grad du, Cauchy stress updated "
+                        "incrementally). finite strain: updated Lagrangian "
+                        "on the reset grid, Delta F = I + grad du at the "
+                        "points, F = Delta F F, Kirchhoff stress from a "
+                        "hyperelastic (or finite-strain) model, internal "
+                        "force on the current volume det(F) Omega_0. Needs "
+                        "a model that supports finite strain (hencky, "
+                        "neo-Hookean).");
+      prm.declare_entry("Shape functions",
+                        "linear",
+                        Patterns::Selection("linear|uGIMP|cpGIMP"),
+                        "linear: the FE_Q(1) functions of the point's cell "
+                        "(the paper). uGIMP: generalized interpolation "
+                        "material point weights (averages of the linear "
+                        "functions over the point's box-shaped domain, "
+                        "Bardenhagen & Kober 2004), which reach the nodes of "
+                        "neighbouring cells and remove the cell-crossing "
+                        "error; the domain keeps its initial size. cpGIMP: "
+                        "the domain's half-lengths follow the stretch of "
+                        "the point (l_d = l_d^0 U_dd, F = R U). GIMP needs "
+                        "a uniform grid; a domain is at most half a cell "
+                        "wide in each direction.");
     }
     prm.leave_subsection();
   }
@@ -55,6 +81,13 @@ namespace qsmpm
       placement =
         prm.get("Placement") == "gauss" ? Placement::gauss : Placement::regular;
       update_volumes          = prm.get_bool("Update volumes");
+      formulation.kinematics  = parse_kinematics(prm.get("Kinematics"));
+      formulation.shape_functions =
+        parse_shape_functions(prm.get("Shape functions"));
+      AssertThrow(update_volumes || !formulation.finite_strain(),
+                  ExcMessage("Material points: <Update volumes = false> "
+                             "(a geometrically linear model) contradicts "
+                             "<Kinematics = finite strain>."));
       const std::string lower = prm.get("Region lower corner");
       const std::string upper = prm.get("Region upper corner");
       AssertThrow(lower.empty() == upper.empty(),
@@ -74,10 +107,18 @@ namespace qsmpm
 
   template <int dim>
   MaterialPointSet<dim>::MaterialPointSet(const BackgroundGrid<dim>    &grid,
-                                          const ConstitutiveModel<dim> &model)
+                                          const ConstitutiveModel<dim> &model,
+                                          const Formulation &formulation)
     : grid(grid)
     , model(model)
+    , formulation(formulation)
   {
+    AssertThrow(!formulation.finite_strain() || model.supports_finite_strain(),
+                ExcMessage("Kinematics = finite strain, but the constitutive "
+                           "model <" +
+                           model.name() +
+                           "> is small-strain only. Finite-strain models: "
+                           "hencky, neo-Hookean."));
     using Kind               = PropertyLayout::Kind;
     const unsigned int n_sym = Utils::n_symmetric_components<dim>;
     offsets.initial_volume   = layout.add("initial_volume", 1, Kind::scalar);
@@ -87,6 +128,12 @@ namespace qsmpm
     offsets.strain           = layout.add("strain", n_sym, Kind::symmetric);
     offsets.stress           = layout.add("stress", n_sym, Kind::symmetric);
     offsets.material_id      = layout.add("material_id", 1, Kind::scalar);
+    if (formulation.finite_strain())
+      offsets.deformation_gradient =
+        layout.add("deformation_gradient", dim * dim, Kind::scalar);
+    if (formulation.gimp())
+      offsets.initial_half_length =
+        layout.add("initial_half_length", dim, Kind::vector);
     offsets.state            = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);
@@ -169,6 +216,7 @@ namespace qsmpm
       Point<dim>                                        location;
       Point<dim>                                        reference;
       double                                            volume;
+      double                                            fraction;
     };
     std::vector<NewPoint> new_points;
     for (const auto &cell : grid.get_triangulation().active_cell_iterators())
@@ -182,7 +230,11 @@ namespace qsmpm
                   cell, reference_points[q]);
               if (inside(x))
                 new_points.push_back(
-                  {cell, x, reference_points[q], volume * fractions[q]});
+                  {cell,
+                   x,
+                   reference_points[q],
+                   volume * fractions[q],
+                   fractions[q]});
             }
         }
 
@@ -209,6 +261,14 @@ namespace qsmpm
         properties[offsets.volume]         = p.volume;
         properties[offsets.J]              = 1.;
         properties[offsets.material_id]    = material_id;
+        if (formulation.finite_strain())
+          for (unsigned int d = 0; d < dim; ++d)
+            properties[offsets.deformation_gradient + d * dim + d] = 1.;
+        if (formulation.gimp())
+          for (unsigned int d = 0; d < dim; ++d)
+            properties[offsets.initial_half_length + d] =
+              0.5 * p.cell->extent_in_direction(d) *
+              std::pow(p.fraction, 1. / dim);
         model.initialize_state(
           p.location,
           ArrayView<double>(properties.data() + offsets.state, n_state));
@@ -320,6 +380,15 @@ namespace qsmpm
   MaterialPointSet<dim>::get_model() const
   {
     return model;
+  }
+
+
+
+  template <int dim>
+  const Formulation &
+  MaterialPointSet<dim>::get_formulation() const
+  {
+    return formulation;
   }
 
 

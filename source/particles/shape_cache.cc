@@ -1,6 +1,8 @@
 #include <Epetra_BlockMap.h>
 #include <deal.II/base/exceptions.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/shape_cache.h>
+#include <cmath>
 
 namespace qsmpm
 {
@@ -32,6 +34,61 @@ namespace qsmpm
             }
         }
     }
+
+    // Phi(xi) = int_{-inf}^{xi} hat(s) ds for the hat function
+    // hat(s) = max(0, 1 - |s|) of a node of a uniform 1D grid.
+    inline double
+    hat_integral(const double xi)
+    {
+      if (xi <= -1.)
+        return 0.;
+      if (xi <= 0.)
+        return 0.5 * (1. + xi) * (1. + xi);
+      if (xi <= 1.)
+        return 1. - 0.5 * (1. - xi) * (1. - xi);
+      return 1.;
+    }
+
+    inline double
+    hat(const double xi)
+    {
+      return std::max(0., 1. - std::abs(xi));
+    }
+
+    /**
+     * 1D GIMP weight of a node at distance d = x_p - X_i from the point, for
+     * the domain [x_p - l, x_p + l] and spacing h: the average of the hat
+     * function over the domain, and its derivative with respect to x_p.
+     */
+    inline void
+    gimp_weight_1d(const double d,
+                   const double l,
+                   const double h,
+                   double      &value,
+                   double      &derivative)
+    {
+      const double upper = (d + l) / h, lower = (d - l) / h;
+      value      = h / (2. * l) * (hat_integral(upper) - hat_integral(lower));
+      derivative = (hat(upper) - hat(lower)) / (2. * l);
+    }
+
+    /// The diagonal of the stretch U of F = R U.
+    template <int dim>
+    Tensor<1, dim>
+    stretch_diagonal(const Tensor<2, dim> &F)
+    {
+      const SymmetricTensor<2, dim> C =
+        symmetrize(Tensor<2, dim>(transpose(F) * F));
+      const auto     eigen = eigenvectors(C);
+      Tensor<1, dim> U;
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          const double stretch = std::sqrt(std::max(eigen[a].first, 0.));
+          for (unsigned int d = 0; d < dim; ++d)
+            U[d] += stretch * eigen[a].second[d] * eigen[a].second[d];
+        }
+      return U;
+    }
   } // namespace
 
 
@@ -49,23 +106,24 @@ namespace qsmpm
                  fe.system_to_component_index(v * dim + c).second == v,
                ExcInternalError());
 
-    auto              &particle_handler = points.get_particle_handler();
+    const bool gimp = points.get_formulation().gimp();
+    auto      &particle_handler = points.get_particle_handler();
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
 
+    stencil = gimp ? max_stencil_size : n_vertices;
     cells.clear();
+    dof_offsets.assign(1, 0);
     cell_local_dofs.clear();
     cell_global_dofs.clear();
-    shape_values.resize(n_local_points * n_vertices);
-    shape_gradients.resize(n_local_points * n_vertices);
+    stencil_nodes.resize(n_local_points * stencil);
+    shape_values.resize(n_local_points * stencil);
+    shape_gradients.resize(n_local_points * stencil);
     point_properties.resize(n_local_points);
     point_positions.resize(n_local_points);
 
-    const Epetra_BlockMap               &map = ghosted.trilinos_vector().Map();
-    std::vector<types::global_dof_index> dofs(dofs_per_cell);
-    Tensor<1, dim>                       reference_gradients[n_vertices];
-
-    unsigned int p = 0;
+    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    unsigned int           p   = 0;
     for (const auto &dof_cell : grid.get_dof_handler().active_cell_iterators())
       if (dof_cell->is_locally_owned())
         {
@@ -74,47 +132,199 @@ namespace qsmpm
           const auto particles = particle_handler.particles_in_cell(cell);
           if (particles.begin() == particles.end())
             continue;
+          const unsigned int first = p;
+          if (gimp)
+            add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
+          else
+            add_linear_cell(dof_cell, map, p, particle_handler);
+          cells.push_back({cell, first, p});
+          dof_offsets.push_back(cell_local_dofs.size());
+        }
+    AssertThrow(p == n_local_points,
+                ExcMessage("Some locally owned material points were not found "
+                           "in locally owned cells."));
+  }
 
-          dof_cell->get_dof_indices(dofs);
-          for (const auto dof : dofs)
+
+
+  template <int dim>
+  void
+  ShapeCache<dim>::add_linear_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+    const Epetra_BlockMap                                &map,
+    unsigned int                                         &p,
+    Particles::ParticleHandler<dim>                      &particle_handler)
+  {
+    const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          const types::global_dof_index dof = dof_cell->vertex_dof_index(v, c);
+          const int                     lid =
+            map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
+          AssertThrow(lid >= 0, ExcInternalError());
+          cell_local_dofs.push_back(lid);
+          cell_global_dofs.push_back(dof);
+        }
+
+    Tensor<1, dim> reference_gradients[n_vertices];
+    for (const auto &particle : particle_handler.particles_in_cell(cell))
+      {
+        // The Jacobian of the Q1 map at the point: exact for any
+        // (bi/tri)linear cell, and diagonal on the Cartesian grid.
+        const Point<dim> xi = particle.get_reference_location();
+        q1_shape<dim>(xi, &shape_values[p * stencil], reference_gradients);
+        Tensor<2, dim> jacobian;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          jacobian += outer_product(cell->vertex(v), reference_gradients[v]);
+        const Tensor<2, dim> inverse_transpose = transpose(invert(jacobian));
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            shape_gradients[p * stencil + v] =
+              inverse_transpose * reference_gradients[v];
+            stencil_nodes[p * stencil + v] = v;
+          }
+        // ParticleAccessor::get_properties() is not const, but the
+        // pointer stays valid until particles are added or sorted.
+        point_properties[p] =
+          const_cast<double *>(particle.get_properties().data());
+        point_positions[p] = particle.get_location();
+        ++p;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ShapeCache<dim>::add_gimp_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+    const BackgroundGrid<dim>                            &grid,
+    const MaterialPointSet<dim>                          &points,
+    const Epetra_BlockMap                                &map,
+    unsigned int                                         &p,
+    Particles::ParticleHandler<dim>                      &particle_handler)
+  {
+    constexpr unsigned int n_block = BackgroundGrid<dim>::n_block_nodes;
+    const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
+    grid.node_block_dofs(dof_cell, block_dofs);
+    const Tensor<1, dim> h      = grid.cell_size();
+    const Point<dim>     corner = cell->vertex(0);
+    const auto          &offsets     = points.get_offsets();
+    const Formulation   &formulation = points.get_formulation();
+    const bool stretch = formulation.shape_functions == ShapeFunctions::cpgimp;
+
+    // Block node of each stencil entry; compacted after all points are seen.
+    std::array<bool, n_block> touched;
+    touched.fill(false);
+    const unsigned int first = p;
+    for (const auto &particle : particle_handler.particles_in_cell(cell))
+      {
+        double *data = const_cast<double *>(particle.get_properties().data());
+        const Point<dim> x = particle.get_location();
+
+        // The point's current half-lengths.
+        Tensor<1, dim> l;
+        for (unsigned int d = 0; d < dim; ++d)
+          l[d] = data[offsets.initial_half_length + d];
+        if (stretch)
+          {
+            Tensor<1, dim> U;
+            if (formulation.finite_strain())
+              {
+                Tensor<2, dim> F;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    F[i][j] = data[offsets.deformation_gradient + i * dim + j];
+                U = stretch_diagonal(F);
+              }
+            else
+              {
+                const SymmetricTensor<2, dim> eps =
+                  Utils::read_symmetric<dim>(data + offsets.strain);
+                for (unsigned int d = 0; d < dim; ++d)
+                  U[d] = 1. + eps[d][d];
+              }
+            for (unsigned int d = 0; d < dim; ++d)
+              l[d] *= U[d];
+          }
+
+        // 1D weights of the three nodes s_d, s_d + 1, s_d + 2 of the 4-node
+        // row of the block in each direction.
+        std::array<unsigned int, dim>           start;
+        std::array<std::array<double, 3>, dim> w, dw;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            l[d] = std::min(std::max(l[d], 1e-6 * h[d]), 0.5 * h[d]);
+            const double local = x[d] - corner[d];
+            start[d]           = std::min(
+              1,
+              std::max(0, static_cast<int>(std::floor((local - l[d]) / h[d])) +
+                            1));
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                const double node =
+                  (static_cast<double>(start[d] + a) - 1.) * h[d];
+                gimp_weight_1d(local - node, l[d], h[d], w[d][a], dw[d][a]);
+              }
+          }
+
+        for (unsigned int k = 0; k < stencil; ++k)
+          {
+            unsigned int rest = k, node = 0, stride = 1;
+            double       value = 1.;
+            Tensor<1, dim> gradient;
+            for (unsigned int e = 0; e < dim; ++e)
+              gradient[e] = 1.;
+            for (unsigned int d = 0; d < dim; ++d, rest /= 3, stride *= 4)
+              {
+                const unsigned int a = rest % 3;
+                node += (start[d] + a) * stride;
+                value *= w[d][a];
+                for (unsigned int e = 0; e < dim; ++e)
+                  gradient[e] *= (e == d) ? dw[d][a] : w[d][a];
+              }
+            if (block_dofs[node * dim] == numbers::invalid_dof_index)
+              {
+                // Outside the grid: the point's domain reaches beyond it.
+                value    = 0.;
+                gradient = Tensor<1, dim>();
+              }
+            if (value != 0. || gradient.norm_square() != 0.)
+              touched[node] = true;
+            // Block node for now; replaced by the group's index below.
+            stencil_nodes[p * stencil + k] = node;
+            shape_values[p * stencil + k]  = value;
+            shape_gradients[p * stencil + k] = gradient;
+          }
+        point_properties[p] = data;
+        point_positions[p]  = x;
+        ++p;
+      }
+
+    // The group's nodes: the touched block nodes, in block order.
+    std::array<unsigned short, n_block> group_index;
+    unsigned short                      n_nodes = 0;
+    for (unsigned int node = 0; node < n_block; ++node)
+      if (touched[node])
+        {
+          group_index[node] = n_nodes++;
+          for (unsigned int c = 0; c < dim; ++c)
             {
-              const int lid =
+              const types::global_dof_index dof = block_dofs[node * dim + c];
+              const int                     lid =
                 map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
               AssertThrow(lid >= 0, ExcInternalError());
               cell_local_dofs.push_back(lid);
               cell_global_dofs.push_back(dof);
             }
-
-          const unsigned int first = p;
-          for (const auto &particle : particles)
-            {
-              // The Jacobian of the Q1 map at the point: exact for any
-              // (bi/tri)linear cell, and diagonal on the Cartesian grid.
-              const Point<dim> xi = particle.get_reference_location();
-              q1_shape<dim>(xi,
-                            &shape_values[p * n_vertices],
-                            reference_gradients);
-              Tensor<2, dim> jacobian;
-              for (unsigned int v = 0; v < n_vertices; ++v)
-                jacobian +=
-                  outer_product(cell->vertex(v), reference_gradients[v]);
-              const Tensor<2, dim> inverse_transpose =
-                transpose(invert(jacobian));
-              for (unsigned int v = 0; v < n_vertices; ++v)
-                shape_gradients[p * n_vertices + v] =
-                  inverse_transpose * reference_gradients[v];
-              // ParticleAccessor::get_properties() is not const, but the
-              // pointer stays valid until particles are added or sorted.
-              point_properties[p] =
-                const_cast<double *>(particle.get_properties().data());
-              point_positions[p] = particle.get_location();
-              ++p;
-            }
-          cells.push_back({cell, first, p});
         }
-    AssertThrow(p == n_local_points,
-                ExcMessage("Some locally owned material points were not found "
-                           "in locally owned cells."));
+    for (unsigned int q = first; q < p; ++q)
+      for (unsigned int k = 0; k < stencil; ++k)
+        {
+          unsigned short &node = stencil_nodes[q * stencil + k];
+          node = touched[node] ? group_index[node] : 0;
+        }
   }
 
 
@@ -127,12 +337,9 @@ namespace qsmpm
     // the sum over ranks tells which nodes are inactive everywhere.
     TrilinosWrappers::MPI::Vector count(grid.locally_owned_dofs(),
                                         grid.get_communicator());
-    std::vector<double>           ones(dofs_per_cell, 1.);
+    std::vector<double>           ones(max_dofs_per_group, 1.);
     for (unsigned int c = 0; c < n_cells(); ++c)
-      count.add(std::vector<types::global_dof_index>(global_dofs(c),
-                                                     global_dofs(c) +
-                                                       dofs_per_cell),
-                ones);
+      count.add(n_dofs(c), global_dofs(c), ones.data());
     count.compress(VectorOperation::add);
     TrilinosWrappers::MPI::Vector ghosted(grid.locally_owned_dofs(),
                                           grid.locally_relevant_dofs(),
@@ -155,12 +362,13 @@ namespace qsmpm
                                const unsigned int p,
                                const double      *local_values) const
   {
-    const int     *dofs = local_dofs(c);
-    const double  *N    = values(p);
-    Tensor<1, dim> result;
-    for (unsigned int v = 0; v < n_vertices; ++v)
+    const int            *dofs  = local_dofs(c);
+    const double         *N     = values(p);
+    const unsigned short *nodes = this->nodes(p);
+    Tensor<1, dim>        result;
+    for (unsigned int k = 0; k < stencil; ++k)
       for (unsigned int d = 0; d < dim; ++d)
-        result[d] += N[v] * local_values[dofs[v * dim + d]];
+        result[d] += N[k] * local_values[dofs[nodes[k] * dim + d]];
     return result;
   }
 

@@ -28,10 +28,14 @@ namespace qsmpm
   class TangentAssembler
   {
   public:
-    /// Build the sparsity pattern of the grid (once, or after the grid
-    /// changed).
+    /**
+     * Build the sparsity pattern of the grid (once, or after the grid
+     * changed). With @p gimp, every node couples with the nodes of the
+     * 3^dim cells around each cell (the reach of GIMP weights), across
+     * periodic faces and MPI ranks too.
+     */
     void
-    reinit(const BackgroundGrid<dim> &grid);
+    reinit(const BackgroundGrid<dim> &grid, const bool gimp = false);
 
     /// Assemble K at the points of @p cache.
     void

@@ -93,6 +93,27 @@ namespace qsmpm
     void
     make_periodicity_constraints(AffineConstraints<double> &constraints) const;
 
+    /// Number of nodes in the block of node_block_dofs(): 4^dim.
+    static constexpr unsigned int n_block_nodes = dim == 2 ? 16 : 64;
+
+    /**
+     * The degrees of freedom of the 4^dim nodes of the 3^dim cells around
+     * @p cell (the cell and every cell sharing a vertex with it): node
+     * (a_0, a_1[, a_2]), a_d = 0..3, at cell->vertex(0) + (a_d - 1) h_d e_d,
+     * has index a_0 + 4 a_1 + 16 a_2, and its component c is entry
+     * index * dim + c of @p dofs. Neighbours are found across ordinary and
+     * periodic faces; all of them are locally owned or ghost cells when
+     * @p cell is locally owned. Nodes outside the grid get
+     * numbers::invalid_dof_index. Each node takes its dofs from the
+     * nearest cell of the block that has it (the cell itself first), so
+     * that nodes of the cell are never replaced by their periodic images.
+     * These are the nodes that a GIMP point in @p cell can reach.
+     */
+    void
+    node_block_dofs(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index>                 &dofs) const;
+
     /**
      * Renumber and redistribute degrees of freedom, e.g. after the
      * triangulation was repartitioned.

@@ -9,6 +9,7 @@
 #include <functional>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/particles/formulation.h>
 #include <qsmpm/particles/property_layout.h>
 
 namespace qsmpm
@@ -51,6 +52,8 @@ namespace qsmpm
       Point<dim> region_upper;
       /// Omega_p follows J_p (2.23-2.24); false keeps Omega_p^0.
       bool update_volumes = true;
+      /// Small or finite strain; linear or GIMP shape functions.
+      Formulation formulation;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -68,18 +71,29 @@ namespace qsmpm
       unsigned int strain;
       unsigned int stress;
       unsigned int material_id;
+      /// Finite strain only: F, dim x dim, row by row (else invalid).
+      unsigned int deformation_gradient = numbers::invalid_unsigned_int;
+      /// GIMP only: the half-lengths l_d^0 of the point's initial domain.
+      unsigned int initial_half_length = numbers::invalid_unsigned_int;
       /// First of the constitutive model's own fields.
       unsigned int state;
     };
 
+    /**
+     * Points for @p model on @p grid. The @p formulation decides which
+     * fields the points carry besides the common ones: F at finite strain,
+     * the initial domain half-lengths with GIMP.
+     */
     MaterialPointSet(const BackgroundGrid<dim>    &grid,
-                     const ConstitutiveModel<dim> &model);
+                     const ConstitutiveModel<dim> &model,
+                     const Formulation            &formulation = {});
 
     /**
      * Fill every locally owned cell with points at the positions given by
      * @p placement, keeping those at which @p inside is true. Volumes are the
      * cell volume divided equally (regular) or weighted by the Gauss weights
-     * (gauss). Point ids are globally unique and independent of the number
+     * (gauss). With GIMP, a point's initial domain is the box of
+     * half-lengths l_d = h_d / (2n) around it. Point ids are globally unique and independent of the number
      * of MPI ranks only up to ordering.
      */
     void
@@ -91,7 +105,8 @@ namespace qsmpm
     /**
      * As above, with the points of every cell at the points of @p rule on
      * the reference cell [0,1]^dim and volumes equal to its weights (which
-     * must sum to one) times the cell volume. Use reference_rule() for
+     * must sum to one) times the cell volume (GIMP domains: half-lengths
+     * h_d w^(1/dim) / 2 for weight w). Use reference_rule() for
      * rules with a different number of points per direction, e.g. a cell
      * with 1 x N points.
      */
@@ -142,6 +157,8 @@ namespace qsmpm
     get_offsets() const;
     const ConstitutiveModel<dim> &
     get_model() const;
+    const Formulation &
+    get_formulation() const;
 
     /// Number of points on all ranks.
     types::particle_index
@@ -154,6 +171,7 @@ namespace qsmpm
   private:
     const BackgroundGrid<dim>      &grid;
     const ConstitutiveModel<dim>   &model;
+    const Formulation               formulation;
     PropertyLayout                  layout;
     Offsets                         offsets;
     Particles::ParticleHandler<dim> particle_handler;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/tensor.h>
+#include <Epetra_BlockMap.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -12,8 +13,8 @@ namespace qsmpm
 {
   /**
    * Shape-function values N_i(x_p) and gradients grad N_i(x_p) at all
-   * locally owned material points, together with the cells' degrees of
-   * freedom.
+   * locally owned material points, together with the degrees of freedom
+   * they connect.
    *
    * Because the grid moves with the body during a load step, N_i(x_p^k) and
    * grad N_i(x_p^k) are the same for every residual evaluation of the step
@@ -21,8 +22,16 @@ namespace qsmpm
    * each step, and every residual evaluation, Jacobian-vector product,
    * tangent assembly and point update reads them from here.
    *
-   * Data are stored in flat arrays, cell by cell; inside a cell the local
-   * degree of freedom i = v * dim + c belongs to vertex v and component c.
+   * Points are grouped by the cell that holds them. Each group has a list of
+   * nodes: with linear shape functions the cell's 2^dim vertices in
+   * deal.II's order; with GIMP the nodes of the 3^dim cells around the cell
+   * that some point of the group reaches (see
+   * BackgroundGrid::node_block_dofs()). The degrees of freedom of a group
+   * are numbered node by node: local dof i = node * dim + component. Each
+   * point has a stencil of stencil_size() nodes (2^dim linear, 3^dim GIMP),
+   * given as indices into its group's node list, with the value and
+   * gradient of the shape function of each; stencil entries outside the
+   * grid have value and gradient zero.
    */
   template <int dim>
   class ShapeCache
@@ -30,7 +39,11 @@ namespace qsmpm
   public:
     static constexpr unsigned int n_vertices =
       GeometryInfo<dim>::vertices_per_cell;
-    static constexpr unsigned int dofs_per_cell = dim * n_vertices;
+    /// The largest stencil: 3^dim nodes (GIMP).
+    static constexpr unsigned int max_stencil_size = dim == 2 ? 9 : 27;
+    /// The largest number of dofs of a group: the 4^dim nodes of the block.
+    static constexpr unsigned int max_dofs_per_group =
+      BackgroundGrid<dim>::n_block_nodes * dim;
 
     /// A cell holding points: its points are [first_point, end_point).
     struct CellRange
@@ -41,9 +54,10 @@ namespace qsmpm
     };
 
     /**
-     * Recompute everything for the current point positions. @p ghosted is a
-     * vector with the locally relevant layout of the grid; local_dofs()
-     * index its local storage directly.
+     * Recompute everything for the current point positions (and, with
+     * cpGIMP, the points' current domains). @p ghosted is a vector with the
+     * locally relevant layout of the grid; local_dofs() index its local
+     * storage directly.
      */
     void
     reinit(const BackgroundGrid<dim>           &grid,
@@ -62,38 +76,59 @@ namespace qsmpm
       return point_properties.size();
     }
 
+    /// Nodes per point: 2^dim (linear) or 3^dim (GIMP).
+    unsigned int
+    stencil_size() const
+    {
+      return stencil;
+    }
+
     const CellRange &
     cell(const unsigned int c) const
     {
       return cells[c];
     }
 
-    /// Local indices (into the ghosted vector's storage) of cell @p c.
+    /// Number of degrees of freedom of group @p c (nodes times dim).
+    unsigned int
+    n_dofs(const unsigned int c) const
+    {
+      return dof_offsets[c + 1] - dof_offsets[c];
+    }
+
+    /// Local indices (into the ghosted vector's storage) of group @p c.
     const int *
     local_dofs(const unsigned int c) const
     {
-      return &cell_local_dofs[c * dofs_per_cell];
+      return &cell_local_dofs[dof_offsets[c]];
     }
 
-    /// Global indices of the degrees of freedom of cell @p c.
+    /// Global indices of the degrees of freedom of group @p c.
     const types::global_dof_index *
     global_dofs(const unsigned int c) const
     {
-      return &cell_global_dofs[c * dofs_per_cell];
+      return &cell_global_dofs[dof_offsets[c]];
     }
 
-    /// N_v(x_p), v = 0..n_vertices-1.
+    /// The stencil of point @p p: indices into its group's node list.
+    const unsigned short *
+    nodes(const unsigned int p) const
+    {
+      return &stencil_nodes[p * stencil];
+    }
+
+    /// N_k(x_p) for the stencil nodes k = 0..stencil_size()-1.
     const double *
     values(const unsigned int p) const
     {
-      return &shape_values[p * n_vertices];
+      return &shape_values[p * stencil];
     }
 
-    /// grad N_v(x_p), v = 0..n_vertices-1.
+    /// grad N_k(x_p) for the stencil nodes k = 0..stencil_size()-1.
     const Tensor<1, dim> *
     gradients(const unsigned int p) const
     {
-      return &shape_gradients[p * n_vertices];
+      return &shape_gradients[p * stencil];
     }
 
     /// Position x_p of point @p p at the start of the step.
@@ -120,7 +155,7 @@ namespace qsmpm
 
     /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
-     * @p p of cell @p c: sum_i v_i N_i(x_p).
+     * @p p of group @p c: sum_k v_k N_k(x_p).
      */
     Tensor<1, dim>
     interpolate(const unsigned int c,
@@ -128,13 +163,34 @@ namespace qsmpm
                 const double      *local_values) const;
 
   private:
+    /// Linear shape functions of the point's cell.
+    void
+    add_linear_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const Epetra_BlockMap &map,
+                    unsigned int          &p,
+                    Particles::ParticleHandler<dim> &particle_handler);
+
+    /// GIMP weights over the 3^dim cells around the point's cell.
+    void
+    add_gimp_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const BackgroundGrid<dim>                            &grid,
+                  const MaterialPointSet<dim>                          &points,
+                  const Epetra_BlockMap                                &map,
+                  unsigned int                                         &p,
+                  Particles::ParticleHandler<dim> &particle_handler);
+
+    unsigned int                         stencil = n_vertices;
     std::vector<CellRange>               cells;
+    std::vector<unsigned int>            dof_offsets;
     std::vector<int>                     cell_local_dofs;
     std::vector<types::global_dof_index> cell_global_dofs;
+    std::vector<unsigned short>          stencil_nodes;
     std::vector<double>                  shape_values;
     std::vector<Tensor<1, dim>>          shape_gradients;
     std::vector<double *>                point_properties;
     std::vector<Point<dim>>              point_positions;
+    /// Scratch of add_gimp_cell().
+    std::vector<types::global_dof_index> block_dofs;
   };
 } // namespace qsmpm
 
