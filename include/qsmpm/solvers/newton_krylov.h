@@ -9,6 +9,7 @@
 #include <qsmpm/solvers/jacobian_free_operator.h>
 #include <qsmpm/solvers/newton_parameters.h>
 #include <string>
+#include <vector>
 
 namespace qsmpm
 {
@@ -27,6 +28,8 @@ namespace qsmpm
     unsigned int line_search_steps = 0;
     double       initial_residual  = 0.;
     double       final_residual    = 0.;
+    /// ||R|| (free rows) of du_0 and after every Newton iteration.
+    std::vector<double> residual_history;
     /// Why the solve failed (empty if it converged).
     std::string failure;
   };
@@ -107,6 +110,7 @@ namespace qsmpm
       op.residual(du, R);
       double norm             = free_norm(op, R, rhs);
       report.initial_residual = norm;
+      report.residual_history.push_back(norm);
       const double target =
         parameters.tolerance * std::max(parameters.residual_floor, norm);
 
@@ -172,6 +176,7 @@ namespace qsmpm
             }
           du                       = trial;
           report.newton_iterations = n + 1;
+          report.residual_history.push_back(norm);
           print_iteration(report, norm, linear, alpha);
         }
     }
@@ -225,6 +230,7 @@ namespace qsmpm
       op.residual(du, R);
       const double norm        = free_norm(op, R, rhs);
       report.newton_iterations = 1;
+      report.residual_history.push_back(norm);
       print_iteration(report, norm, linear, 1.);
       return norm;
     }
