@@ -9,7 +9,8 @@ namespace qsmpm
     std::array<std::pair<double, Tensor<1, dim>>, dim>
     eigen_decomposition(const SymmetricTensor<2, dim> &b)
     {
-      return eigenvectors(b, SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
+      return eigenvectors(b,
+                          SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
     }
 
 
@@ -96,8 +97,8 @@ namespace qsmpm
     SymmetricTensor<4, dim>
     log_derivative(const SymmetricTensor<2, dim> &b)
     {
-      const auto           eigen = eigen_decomposition(b);
-      const Tensor<2, dim> theta = divided_differences<dim>(eigen);
+      const auto              eigen = eigen_decomposition(b);
+      const Tensor<2, dim>    theta = divided_differences<dim>(eigen);
       SymmetricTensor<4, dim> L;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
@@ -130,10 +131,10 @@ namespace qsmpm
     log<3>(const SymmetricTensor<2, 3> &);
     template SymmetricTensor<2, 2>
     log_directional_derivative<2>(const SymmetricTensor<2, 2> &,
-                               const SymmetricTensor<2, 2> &);
+                                  const SymmetricTensor<2, 2> &);
     template SymmetricTensor<2, 3>
     log_directional_derivative<3>(const SymmetricTensor<2, 3> &,
-                               const SymmetricTensor<2, 3> &);
+                                  const SymmetricTensor<2, 3> &);
     template SymmetricTensor<4, 2>
     log_derivative<2>(const SymmetricTensor<2, 2> &);
     template SymmetricTensor<4, 3>
