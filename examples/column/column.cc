@@ -322,6 +322,37 @@ namespace Column
 
 
 
+  // @sect3{The exact compaction of a Hencky column}
+  //
+  // For Hencky elasticity with nu = 0 a horizontal fibre at initial height
+  // Y has the vertical stretch lambda(Y) with
+  // E ln(lambda) / lambda = -rho0 g (l0 - Y) (the Cauchy stress is
+  // tau / J and J = lambda). The compaction 1 - (1/l0) int lambda dY is
+  // computed here independently of the material-point method: bisection
+  // for lambda at the nodes of a 2000-interval Simpson rule.
+  double
+  exact_hencky_compaction(const double E, const double weight, const double l0)
+  {
+    const unsigned int n   = 2000;
+    double             sum = 0;
+    for (unsigned int i = 0; i <= n; ++i)
+      {
+        const double s = -weight * l0 * (1. - double(i) / n) / E;
+        // ln(lambda) / lambda increases monotonically on (0, 1]: bisection.
+        double low = 1e-12, high = 1.;
+        for (unsigned int k = 0; k < 200; ++k)
+          {
+            const double mid = 0.5 * (low + high);
+            (std::log(mid) / mid < s ? low : high) = mid;
+          }
+        const double lambda = 0.5 * (low + high);
+        sum += (i == 0 || i == n ? 1. : (i % 2 ? 4. : 2.)) * lambda;
+      }
+    return 1. - sum / (3. * n);
+  }
+
+
+
   // @sect3{The convergence study}
   //
   // All runs of the study, a line per run on the screen and in the CSV
@@ -340,6 +371,21 @@ namespace Column
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                                0);
+    prm.enter_subsection("Material");
+    const std::string model = prm.get("Model");
+    if (model == "hencky")
+      {
+        prm.enter_subsection("hencky");
+        const double E = prm.get_double("Young's modulus");
+        if (prm.get_double("Poisson's ratio") == 0.)
+          pcout << column.prefix << "exact compaction (Hencky, nu = 0): "
+                << std::setprecision(5)
+                << exact_hencky_compaction(E, column.weight, column.height)
+                << std::endl;
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
     std::ofstream csv;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
