@@ -133,6 +133,13 @@ namespace qsmpm
   {
     if (!residual)
       {
+        AssertThrow(!(points().get_formulation().gimp() &&
+                      bcs.has_macroscopic_gradient()),
+                    ExcMessage("GIMP shape functions with a macroscopic "
+                               "displacement gradient on a periodic grid are "
+                               "not supported (the affine jump is not added "
+                               "to nodes reached across periodic faces); use "
+                               "Shape functions = linear."));
         residual = std::make_unique<QuasiStaticResidual<dim>>(
           background_grid,
           points(),

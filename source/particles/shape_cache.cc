@@ -8,33 +8,6 @@ namespace qsmpm
 {
   namespace
   {
-    // Q1 shape functions on the unit cell; vertex v sits at the corner whose
-    // d-th coordinate is bit d of v (deal.II's vertex numbering).
-    template <int dim>
-    void
-    q1_shape(const Point<dim> &xi,
-             double           *values,
-             Tensor<1, dim>   *reference_gradients)
-    {
-      for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
-        {
-          double value = 1.;
-          for (unsigned int d = 0; d < dim; ++d)
-            value *= ((v >> d) & 1) ? xi[d] : 1. - xi[d];
-          values[v] = value;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              double g = 1.;
-              for (unsigned int e = 0; e < dim; ++e)
-                if (e == d)
-                  g *= ((v >> e) & 1) ? 1. : -1.;
-                else
-                  g *= ((v >> e) & 1) ? xi[e] : 1. - xi[e];
-              reference_gradients[v][d] = g;
-            }
-        }
-    }
-
     // Phi(xi) = int_{-inf}^{xi} hat(s) ds for the hat function
     // hat(s) = max(0, 1 - |s|) of a node of a uniform 1D grid.
     inline double
@@ -136,7 +109,7 @@ namespace qsmpm
           if (gimp)
             add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
           else
-            add_linear_cell(dof_cell, map, p, particle_handler);
+            add_linear_cell(dof_cell, grid, map, p, particle_handler);
           cells.push_back({cell, first, p});
           dof_offsets.push_back(cell_local_dofs.size());
         }
@@ -151,6 +124,7 @@ namespace qsmpm
   void
   ShapeCache<dim>::add_linear_cell(
     const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+    const BackgroundGrid<dim>                            &grid,
     const Epetra_BlockMap                                &map,
     unsigned int                                         &p,
     Particles::ParticleHandler<dim>                      &particle_handler)
@@ -167,13 +141,20 @@ namespace qsmpm
           cell_global_dofs.push_back(dof);
         }
 
-    Tensor<1, dim> reference_gradients[n_vertices];
+    // deal.II's FE_Q(1) evaluated at the points' reference locations; its
+    // shape function v belongs to vertex v.
+    const FiniteElement<dim> &q1 = grid.get_fe().base_element(0);
+    Tensor<1, dim>            reference_gradients[n_vertices];
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         // The Jacobian of the Q1 map at the point: exact for any
         // (bi/tri)linear cell, and diagonal on the Cartesian grid.
         const Point<dim> xi = particle.get_reference_location();
-        q1_shape<dim>(xi, &shape_values[p * stencil], reference_gradients);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            shape_values[p * stencil + v] = q1.shape_value(v, xi);
+            reference_gradients[v]        = q1.shape_grad(v, xi);
+          }
         Tensor<2, dim> jacobian;
         for (unsigned int v = 0; v < n_vertices; ++v)
           jacobian += outer_product(cell->vertex(v), reference_gradients[v]);

@@ -159,6 +159,13 @@ namespace qsmpm
     const std::vector<DirichletCondition> &
     dirichlet_conditions() const;
 
+    /// Whether a macroscopic displacement gradient is prescribed.
+    bool
+    has_macroscopic_gradient() const
+    {
+      return static_cast<bool>(macroscopic_gradient);
+    }
+
     /// Whether any load (body force, traction, point load) is given.
     bool
     has_loads() const;

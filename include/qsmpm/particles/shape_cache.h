@@ -166,7 +166,8 @@ namespace qsmpm
     /// Linear shape functions of the point's cell.
     void
     add_linear_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const Epetra_BlockMap &map,
+                    const BackgroundGrid<dim> &grid,
+                    const Epetra_BlockMap     &map,
                     unsigned int          &p,
                     Particles::ParticleHandler<dim> &particle_handler);
 
