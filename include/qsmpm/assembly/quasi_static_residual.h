@@ -24,6 +24,21 @@ namespace qsmpm
    * (2.18), the trial stress from the constitutive model (2.20-2.21), and
    * Omega_p^{k+1} = (1 + tr d_eps_p) J_p^k Omega_p^0 (2.23-2.24).
    *
+   * At finite strain (Kinematics::finite_strain) the same loop computes
+   * Delta F_p = I + sum_i du_i (x) grad N_i, F_p = Delta F_p F_p^k, the
+   * Kirchhoff stress tau_p from the model, and
+   *
+   *   f_int_i = - sum_p Omega_p^0 tau_p Delta F_p^{-T} . grad N_i(x_p^k),
+   *
+   * which equals - sum_p Omega_p^{k+1} sigma_p . grad_{k+1} N_i. commit()
+   * stores F, J = det F, the volume J Omega^0, the Cauchy stress tau / J
+   * and the logarithmic strain 1/2 ln(F F^T). An inverted point
+   * (det Delta F <= 0) makes the residual non-finite, which Newton's line
+   * search backs off from.
+   *
+   * The sums over i run over each point's stencil in the ShapeCache: the
+   * 2^dim vertices of its cell (linear) or 3^dim nodes (GIMP).
+   *
    * evaluate() is pure: it reads the committed point state and writes only
    * the residual. This is what makes finite-difference Jacobian-vector
    * products, line searches and rejected steps safe. commit() evaluates the
