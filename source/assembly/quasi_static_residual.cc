@@ -140,7 +140,6 @@ namespace qsmpm
                                  TrilinosWrappers::MPI::Vector       *R) const
   {
     constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
-    const unsigned int     stencil  = cache.stencil_size();
     const auto            &offsets  = points.get_offsets();
     const unsigned int     n_state  = state_scratch.size();
     const bool finite_strain = points.get_formulation().finite_strain();
@@ -168,7 +167,8 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const Tensor<1, dim> *grad_N  = cache.gradients(p);
+            const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes  = cache.nodes(p);
             double               *data   = cache.properties(p);
 

@@ -13,44 +13,61 @@ namespace qsmpm
   {
     // Displacement conditions only fix values, but periodicity constraints
     // couple the nodes of opposite faces: condensing them adds the slave's
-    // couplings to its master's row. Those are the only couplings that do
-    // not change from step to step, so this pattern serves every step.
-    AffineConstraints<double> periodicity(grid.locally_relevant_dofs());
+    // couplings to its master's row.
+    periodicity.clear();
+    periodicity.reinit(grid.locally_relevant_dofs());
     grid.make_periodicity_constraints(periodicity);
     periodicity.close();
-    IndexSet writable_rows = grid.locally_relevant_dofs();
+    writable_rows = grid.locally_relevant_dofs();
     for (const auto &line : periodicity.get_lines())
       for (const auto &entry : line.entries)
         writable_rows.add_index(entry.first);
     writable_rows.compress();
+    pattern_per_step = gimp;
+    if (gimp)
+      return;
+
+    // Linear shape functions: the cell couplings serve every step.
     TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
                                               writable_rows,
                                               grid.get_communicator());
-    if (gimp)
+    DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
+                                    pattern,
+                                    periodicity,
+                                    /*keep_constrained_dofs=*/true,
+                                    dealii::Utilities::MPI::this_mpi_process(
+                                      grid.get_communicator()));
+    pattern.compress();
+    K.reinit(pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  TangentAssembler<dim>::make_step_pattern(const BackgroundGrid<dim> &grid,
+                                           const ShapeCache<dim>     &cache)
+  {
+    // GIMP: the couplings of the nodes that the points of each cell reach
+    // in this step. A pattern with every node of the 3^dim cells around
+    // each cell would do for all steps, but it stores many zeros, which
+    // AMG and its smoothers then treat as couplings.
+    TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
+                                              grid.locally_owned_dofs(),
+                                              writable_rows,
+                                              grid.get_communicator());
+    std::vector<types::global_dof_index> dofs;
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        // The block's nodes outside the grid do not exist; the rest couple.
-        std::vector<types::global_dof_index> block, dofs;
-        for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              grid.node_block_dofs(cell, block);
-              dofs.clear();
-              for (const auto dof : block)
-                if (dof != numbers::invalid_dof_index)
-                  dofs.push_back(dof);
-              periodicity.add_entries_local_to_global(dofs,
-                                                      pattern,
-                                                      /*keep_constrained=*/true);
-            }
+        dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + cache.n_dofs(c));
+        periodicity.add_entries_local_to_global(dofs,
+                                                pattern,
+                                                /*keep_constrained=*/true);
       }
-    else
-      DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
-                                      pattern,
-                                      periodicity,
-                                      /*keep_constrained_dofs=*/true,
-                                      dealii::Utilities::MPI::this_mpi_process(
-                                        grid.get_communicator()));
+    // Every row has its diagonal (nodes without points get one below).
+    for (const auto dof : grid.locally_owned_dofs())
+      pattern.add(dof, dof);
     pattern.compress();
     K.reinit(pattern);
   }
@@ -64,12 +81,13 @@ namespace qsmpm
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints)
   {
-    const unsigned int stencil       = cache.stencil_size();
     const auto        &offsets       = points.get_offsets();
     const auto        &model         = points.get_model();
     const unsigned int n_state       = model.n_state_components();
     const bool finite_strain = points.get_formulation().finite_strain();
 
+    if (pattern_per_step)
+      make_step_pattern(grid, cache);
     K = 0;
     FullMatrix<double>                   K_cell;
     std::vector<types::global_dof_index> dofs;
@@ -81,7 +99,8 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *data   = cache.properties(p);
-            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const Tensor<1, dim> *grad_N  = cache.gradients(p);
+            const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes  = cache.nodes(p);
             const PointState<dim> state{
               Utils::read_symmetric<dim>(data + offsets.strain),

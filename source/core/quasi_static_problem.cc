@@ -133,6 +133,7 @@ namespace qsmpm
   {
     if (!residual)
       {
+        TimerOutput::Scope scope(timer_output, "set-up (sparsity pattern)");
         AssertThrow(!(points().get_formulation().gimp() &&
                       bcs.has_macroscopic_gradient()),
                     ExcMessage("GIMP shape functions with a macroscopic "
@@ -195,11 +196,14 @@ namespace qsmpm
     }
     if (preconditioner.needs_matrix())
       {
+        {
+          TimerOutput::Scope scope(timer_output, "tangent assembly");
+          tangent.assemble(background_grid,
+                           points(),
+                           cache,
+                           step_constraints.get());
+        }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
-        tangent.assemble(background_grid,
-                         points(),
-                         cache,
-                         step_constraints.get());
         preconditioner.setup(tangent.matrix(), background_grid);
       }
 
@@ -224,9 +228,27 @@ namespace qsmpm
                             background_grid.locally_relevant_dofs(),
                             communicator);
       du_ghosted = du;
-      points().advect(cache, du_ghosted);
-      last_reactions  = bcs.reactions(R, communicator);
-      const auto lost = points().sort_into_cells();
+      const double moved = points().advect(cache, du_ghosted);
+      last_reactions     = bcs.reactions(R, communicator);
+      const auto lost    = points().sort_into_cells();
+      // In parallel, deal.II finds a point's new cell only among the
+      // neighbours of its old one (the ghost layer).
+      const Tensor<1, dim> h     = background_grid.cell_size();
+      double               h_min = h[0];
+      for (unsigned int d = 1; d < dim; ++d)
+        h_min = std::min(h_min, h[d]);
+      std::ostringstream cells_moved;
+      cells_moved << std::setprecision(3) << moved / h_min;
+      AssertThrow(lost == 0 ||
+                    dealii::Utilities::MPI::n_mpi_processes(communicator) ==
+                      1 ||
+                    moved < h_min,
+                  ExcMessage(std::to_string(lost) +
+                             " material points were lost: in a parallel "
+                             "run a point may move at most one cell per "
+                             "load step, and in this step a point moved " +
+                             cells_moved.str() +
+                             " cells. Use more load steps."));
       AssertThrow(lost == 0,
                   ExcMessage(std::to_string(lost) +
                              " material points left the background grid. "

@@ -301,10 +301,11 @@ namespace qsmpm
 
 
   template <int dim>
-  void
+  double
   MaterialPointSet<dim>::advect(const ShapeCache<dim>               &cache,
                                 const TrilinosWrappers::MPI::Vector &du)
   {
+    double largest = 0.;
     const double *values = du.trilinos_vector()[0];
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
@@ -316,6 +317,7 @@ namespace qsmpm
             Assert(particle.get_properties().data() == cache.properties(p),
                    ExcInternalError());
             const Tensor<1, dim> u = cache.interpolate(c, p, values);
+            largest                = std::max(largest, u.norm());
             particle.set_location(particle.get_location() + u);
             double *data = cache.properties(p);
             for (unsigned int d = 0; d < dim; ++d)
@@ -324,6 +326,7 @@ namespace qsmpm
           }
         Assert(p == range.end_point, ExcInternalError());
       }
+    return Utilities::MPI::max(largest, grid.get_communicator());
   }
 
 

@@ -92,6 +92,7 @@ namespace qsmpm
     stencil_nodes.resize(n_local_points * stencil);
     shape_values.resize(n_local_points * stencil);
     shape_gradients.resize(n_local_points * stencil);
+    point_stencil_sizes.assign(n_local_points, stencil);
     point_properties.resize(n_local_points);
     point_positions.resize(n_local_points);
 
@@ -190,6 +191,9 @@ namespace qsmpm
     const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
     grid.node_block_dofs(dof_cell, block_dofs);
     const Tensor<1, dim> h      = grid.cell_size();
+    double               h_min  = h[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      h_min = std::min(h_min, h[d]);
     const Point<dim>     corner = cell->vertex(0);
     const auto          &offsets     = points.get_offsets();
     const Formulation   &formulation = points.get_formulation();
@@ -250,6 +254,10 @@ namespace qsmpm
               }
           }
 
+        // Only the entries with a non-zero value or gradient are kept, at
+        // the front of the point's stencil: a point whose domain lies inside
+        // its cell costs as much as with linear shape functions.
+        unsigned int n_kept = 0;
         for (unsigned int k = 0; k < stencil; ++k)
           {
             unsigned int rest = k, node = 0, stride = 1;
@@ -265,19 +273,21 @@ namespace qsmpm
                 for (unsigned int e = 0; e < dim; ++e)
                   gradient[e] *= (e == d) ? dw[d][a] : w[d][a];
               }
-            if (block_dofs[node * dim] == numbers::invalid_dof_index)
-              {
-                // Outside the grid: the point's domain reaches beyond it.
-                value    = 0.;
-                gradient = Tensor<1, dim>();
-              }
-            if (value != 0. || gradient.norm_square() != 0.)
-              touched[node] = true;
+            // Entries at round-off level (a domain edge on a cell face) and
+            // nodes outside the grid (the point's domain reaches beyond it)
+            // are dropped too.
+            if ((std::abs(value) <= 1e-12 &&
+                 gradient.norm() * h_min <= 1e-12) ||
+                block_dofs[node * dim] == numbers::invalid_dof_index)
+              continue;
+            touched[node] = true;
             // Block node for now; replaced by the group's index below.
-            stencil_nodes[p * stencil + k] = node;
-            shape_values[p * stencil + k]  = value;
-            shape_gradients[p * stencil + k] = gradient;
+            stencil_nodes[p * stencil + n_kept]   = node;
+            shape_values[p * stencil + n_kept]    = value;
+            shape_gradients[p * stencil + n_kept] = gradient;
+            ++n_kept;
           }
+        point_stencil_sizes[p] = n_kept;
         point_properties[p] = data;
         point_positions[p]  = x;
         ++p;
@@ -301,10 +311,10 @@ namespace qsmpm
             }
         }
     for (unsigned int q = first; q < p; ++q)
-      for (unsigned int k = 0; k < stencil; ++k)
+      for (unsigned int k = 0; k < point_stencil_sizes[q]; ++k)
         {
           unsigned short &node = stencil_nodes[q * stencil + k];
-          node = touched[node] ? group_index[node] : 0;
+          node                 = group_index[node];
         }
   }
 
@@ -347,7 +357,7 @@ namespace qsmpm
     const double         *N     = values(p);
     const unsigned short *nodes = this->nodes(p);
     Tensor<1, dim>        result;
-    for (unsigned int k = 0; k < stencil; ++k)
+    for (unsigned int k = 0; k < stencil_size(p); ++k)
       for (unsigned int d = 0; d < dim; ++d)
         result[d] += N[k] * local_values[dofs[nodes[k] * dim + d]];
     return result;

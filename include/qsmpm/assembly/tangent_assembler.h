@@ -30,9 +30,10 @@ namespace qsmpm
   public:
     /**
      * Build the sparsity pattern of the grid (once, or after the grid
-     * changed). With @p gimp, every node couples with the nodes of the
-     * 3^dim cells around each cell (the reach of GIMP weights), across
-     * periodic faces and MPI ranks too.
+     * changed). With @p gimp, the pattern is instead built in every
+     * assemble() from the nodes that the points of each cell reach (the
+     * nodes of the 3^dim cells around it at most), across periodic faces
+     * and MPI ranks too.
      */
     void
     reinit(const BackgroundGrid<dim> &grid, const bool gimp = false);
@@ -48,7 +49,15 @@ namespace qsmpm
     matrix() const;
 
   private:
+    /// GIMP: the pattern of the couplings that the points reach this step.
+    void
+    make_step_pattern(const BackgroundGrid<dim> &grid,
+                      const ShapeCache<dim>     &cache);
+
     TrilinosWrappers::SparseMatrix K;
+    AffineConstraints<double>      periodicity;
+    IndexSet                       writable_rows;
+    bool                           pattern_per_step = false;
   };
 } // namespace qsmpm
 

@@ -133,8 +133,9 @@ namespace qsmpm
      * Move the points with the converged grid increment (paper eqs.
      * 2.26-2.27): x_p += sum_i du_i N_i(x_p), u_p += the same. @p du_ghosted
      * must hold the locally relevant entries. Call sort_into_cells() next.
+     * Returns the largest distance a point moved (over all ranks).
      */
-    void
+    double
     advect(const ShapeCache<dim>               &cache,
            const TrilinosWrappers::MPI::Vector &du_ghosted);
 

@@ -28,10 +28,10 @@ namespace qsmpm
    * that some point of the group reaches (see
    * BackgroundGrid::node_block_dofs()). The degrees of freedom of a group
    * are numbered node by node: local dof i = node * dim + component. Each
-   * point has a stencil of stencil_size() nodes (2^dim linear, 3^dim GIMP),
-   * given as indices into its group's node list, with the value and
-   * gradient of the shape function of each; stencil entries outside the
-   * grid have value and gradient zero.
+   * point has a stencil of stencil_size(p) nodes (2^dim linear, up to 3^dim
+   * GIMP: the nodes where its weight or gradient is non-zero and that lie
+   * inside the grid), given as indices into its group's node list, with the
+   * value and gradient of the shape function of each.
    */
   template <int dim>
   class ShapeCache
@@ -76,11 +76,23 @@ namespace qsmpm
       return point_properties.size();
     }
 
-    /// Nodes per point: 2^dim (linear) or 3^dim (GIMP).
+    /// The largest number of nodes of a point: 2^dim (linear) or 3^dim
+    /// (GIMP).
     unsigned int
     stencil_size() const
     {
       return stencil;
+    }
+
+    /**
+     * The number of nodes of point @p p: 2^dim (linear); with GIMP the
+     * nodes with a non-zero weight or gradient, from 2^dim (a domain inside
+     * its cell) to 3^dim.
+     */
+    unsigned int
+    stencil_size(const unsigned int p) const
+    {
+      return point_stencil_sizes[p];
     }
 
     const CellRange &
@@ -186,6 +198,7 @@ namespace qsmpm
     std::vector<int>                     cell_local_dofs;
     std::vector<types::global_dof_index> cell_global_dofs;
     std::vector<unsigned short>          stencil_nodes;
+    std::vector<unsigned char>           point_stencil_sizes;
     std::vector<double>                  shape_values;
     std::vector<Tensor<1, dim>>          shape_gradients;
     std::vector<double *>                point_properties;
