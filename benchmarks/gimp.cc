@@ -8,8 +8,9 @@
 //  2. GMRES iterations per Newton iteration with AMG on the block, one load
 //     step, under refinement (2D 32^2 ... 256^2, 3D 8^3 ... 32^3);
 //  3. small cut cells: the self-weight column (finite strain, Hencky,
-//     E = 1 MPa, nu = 0, 16 cells, 20 steps) whose top cell is filled to
-//     a fraction f = 1, 0.5, 0.1, 0.01 of its height: Newton and GMRES
+//     E = 1 MPa, nu = 0, 16 cells, 20 steps), one cell wide and 16 cells
+//     wide (a block on rollers), whose top row of cells is filled to a
+//     fraction f = 1, 0.5, 0.1, 0.01 of its height: Newton and GMRES
 //     iterations and the stress error.
 //
 // Usage: gimp. Writes "key,value" lines to standard output.
@@ -114,7 +115,9 @@ namespace
   };
 
   void
-  cut_column(const double f, const qsmpm::ShapeFunctions shape)
+  cut_column(const double                f,
+             const qsmpm::ShapeFunctions shape,
+             const unsigned int          width)
   {
     const unsigned int          n = 16;
     const double                h = 50. / n, l0 = (n - 1 + f) * h;
@@ -126,7 +129,7 @@ namespace
     prm.output.interval                             = 0;
     prm.output.directory                            = "benchmark_output";
     prm.load_stepping.n_steps                       = 20;
-    problem.grid().make_box(Point<2>(), Point<2>(h, n * h), {{1, n}});
+    problem.grid().make_box(Point<2>(), Point<2>(width * h, n * h), {{width, n}});
     problem.set_model(std::make_unique<qsmpm::Hencky<2>>(1e6, 0.));
 
     // Full cells with 2 x 2 points; the top cell with 2 x 2 points in its
@@ -184,7 +187,8 @@ namespace
     volume = Utilities::MPI::sum(volume, MPI_COMM_WORLD);
     std::ostringstream fraction;
     fraction << f;
-    const std::string tag = "cut_" + fraction.str() + "_" + name(shape);
+    const std::string tag = "cut_w" + std::to_string(width) + "_" +
+                            fraction.str() + "_" + name(shape);
     print(tag + "_steps", problem.step_reports().size());
     print(tag + "_newton_max", newton_max);
     print(tag + "_gmres_per_newton_mean", gmres_per_newton);
@@ -218,9 +222,10 @@ main(int argc, char *argv[])
           for (const unsigned int n : {8u, 16u, 32u})
             block_step<3>(n, s);
         }
-      for (const S s : {S::linear, S::cpgimp})
-        for (const double f : {1., 0.5, 0.1, 0.01})
-          cut_column(f, s);
+      for (const unsigned int width : {1u, 16u})
+        for (const S s : {S::linear, S::cpgimp})
+          for (const double f : {1., 0.5, 0.1, 0.01})
+            cut_column(f, s, width);
     }
   catch (std::exception &exc)
     {
