@@ -19,6 +19,8 @@ echo "kernel_ratios ..." >&2
 $bin/kernel_ratios 256 0 > "$tmp/ratios_2d.csv"
 $bin/kernel_ratios 0 32 > "$tmp/ratios_3d_32.csv"
 $bin/kernel_ratios 0 64 > "$tmp/ratios_3d_64.csv"
+echo "gimp ..." >&2
+$bin/gimp > "$tmp/gimp.csv"
 echo "MPI: largest 3D case on 1 and 2 ranks ..." >&2
 $mpirun -np 1 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 0 > "$tmp/np1.csv"
 $mpirun -np 2 $bin/solver_scaling --dim 3 --min-3d 64 --max-3d 64 --max-none-3d 0 > "$tmp/np2.csv"
@@ -138,6 +140,14 @@ speedup=$(awk -F, 'FNR == 2 { t[FILENAME] = $8 } END { for (f in t) if (f ~ /np1
       "$(cat "$tmp/poly_np$np.log.seconds")" \
       "$(grep -E '^(n_grains|n_points|E_in_plane_GPa) ' "$summary" | tr '\n' ';' | sed 's/;$//; s/;/; /g')"
   done
+  echo
+  echo "## GIMP shape functions"
+  echo
+  cat benchmarks/gimp_section.md
+  echo
+  echo '```'
+  cat "$tmp/gimp.csv"
+  echo '```'
   echo
   echo "The example pages ([compact tension](example_compact_tension.md), [polycrystal](example_polycrystal.md))"
   echo "discuss the results themselves."
