@@ -3,6 +3,8 @@
 //  - an unknown entry,
 //  - a malformed or impossible boundary condition (also periodic ones),
 //  - a missing parameter file,
+//  - finite strain with a small-strain model or without volume updates,
+//    GIMP with a macroscopic displacement gradient,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points.
 #include "tests.h"
@@ -26,7 +28,9 @@ user_message(const std::exception &exc)
 }
 
 void
-try_input(const std::string &what, const std::string &input)
+try_input(const std::string &what,
+          const std::string &input,
+          const bool         run = false)
 {
   ParameterHandler prm;
   qsmpm::QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
@@ -36,6 +40,8 @@ try_input(const std::string &what, const std::string &input)
       qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
       problem.pcout().set_condition(false);
       problem.initialize(prm);
+      if (run)
+        problem.run();
       deallog << what << ": accepted (FAIL)" << std::endl;
     }
   catch (const std::exception &exc)
@@ -90,6 +96,34 @@ main(int argc, char *argv[])
             "subsection Boundary conditions\n"
             "  set Macroscopic displacement gradient = 1e-3, 0, 0\n"
             "end\n");
+  try_input("finite strain with a small-strain model",
+            "subsection Material points\n"
+            "  set Kinematics = finite strain\n"
+            "end\n");
+  try_input("finite strain without volume updates",
+            "subsection Material points\n"
+            "  set Kinematics = finite strain\n"
+            "  set Update volumes = false\n"
+            "end\n"
+            "subsection Material\n"
+            "  set Model = hencky\n"
+            "end\n");
+  try_input("GIMP with a macroscopic displacement gradient",
+            "subsection Geometry\n"
+            "  set Periodic directions = xy\n"
+            "  set Subdivisions = 4, 4\n"
+            "end\n"
+            "subsection Material points\n"
+            "  set Shape functions = cpGIMP\n"
+            "end\n"
+            "subsection Boundary conditions\n"
+            "  set Macroscopic displacement gradient = 1e-3, 0, 0, 0\n"
+            "end\n"
+            "subsection Output\n"
+            "  set Interval = 0\n"
+            "  set Directory = bad-input-out\n"
+            "end\n",
+            /*run=*/true);
 
   // A missing file.
   try
