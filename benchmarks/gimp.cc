@@ -9,9 +9,9 @@
 //     step, under refinement (2D 32^2 ... 256^2, 3D 8^3 ... 32^3);
 //  3. small cut cells: the self-weight column (finite strain, Hencky,
 //     E = 1 MPa, 16 cells, 20 steps), one cell wide with nu = 0 and 16
-//     cells wide (a block on rollers) with nu = 0.3, whose top row of cells is filled to a
-//     fraction f = 1, 0.5, 0.1, 0.01 of its height: Newton and GMRES
-//     iterations and the stress error.
+//     cells wide (a block on rollers) with nu = 0.3, whose top row of cells is
+//     filled to a fraction f = 1, 0.5, 0.1, 0.01 of its height: Newton and
+//     GMRES iterations and the stress error.
 //
 // Usage: gimp. Writes "key,value" lines to standard output.
 #include "benchmark_problem.h"
@@ -19,10 +19,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <iostream>
-#include <sstream>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/materials/hencky.h>
+#include <sstream>
 
 namespace
 {
@@ -70,8 +70,9 @@ namespace
     if (crossing)
       for (auto &particle : points.get_particle_handler())
         for (unsigned int d = 0; d < dim; ++d)
-          particle.get_properties()[points.get_offsets().initial_half_length +
-                                    d] = 0.45 / n;
+          particle
+            .get_properties()[points.get_offsets().initial_half_length + d] =
+            0.45 / n;
     qsmpm::ShapeCache<dim>          cache;
     qsmpm::QuasiStaticResidual<dim> residual(grid, points, cache, true);
     cache.reinit(grid, points, residual.ghosted_layout());
@@ -99,9 +100,9 @@ namespace
     Timer timer;
     problem.run();
     timer.stop();
-    const auto &r   = problem.step_reports().back().newton;
-    const std::string tag = std::to_string(dim) + "d_" + std::to_string(n) +
-                            "_" + name(shape);
+    const auto       &r = problem.step_reports().back().newton;
+    const std::string tag =
+      std::to_string(dim) + "d_" + std::to_string(n) + "_" + name(shape);
     print(tag + "_newton_iterations", r.newton_iterations);
     print(tag + "_gmres_per_newton",
           double(r.linear_iterations) / r.newton_iterations);
@@ -129,17 +130,20 @@ namespace
              const unsigned int          width,
              const double                nu)
   {
-    const unsigned int          n = 16;
-    const double                h = 50. / n, l0 = (n - 1 + f) * h;
+    const unsigned int           n = 16;
+    const double                 h = 50. / n, l0 = (n - 1 + f) * h;
     qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     problem.pcout().set_condition(false);
     auto &prm = problem.parameters();
-    prm.material_points.formulation.kinematics = qsmpm::Kinematics::finite_strain;
+    prm.material_points.formulation.kinematics =
+      qsmpm::Kinematics::finite_strain;
     prm.material_points.formulation.shape_functions = shape;
     prm.output.interval                             = 0;
     prm.output.directory                            = "benchmark_output";
     prm.load_stepping.n_steps                       = 20;
-    problem.grid().make_box(Point<2>(), Point<2>(width * h, n * h), {{width, n}});
+    problem.grid().make_box(Point<2>(),
+                            Point<2>(width * h, n * h),
+                            {{width, n}});
     problem.set_model(std::make_unique<qsmpm::Hencky<2>>(1e6, nu));
 
     // Full cells with 2 x 2 points; the top cell with 2 x 2 points in its
@@ -187,8 +191,9 @@ namespace
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();
-        const double Y    = particle.get_location()[1] - data[o.displacement + 1];
-        SymmetricTensor<2, 2> e = qsmpm::Utils::read_symmetric<2>(&data[o.stress]);
+        const double Y = particle.get_location()[1] - data[o.displacement + 1];
+        SymmetricTensor<2, 2> e =
+          qsmpm::Utils::read_symmetric<2>(&data[o.stress]);
         e[1][1] += 800. * (l0 - Y);
         sum += data[o.initial_volume] * e.norm() * e.norm();
         volume += data[o.initial_volume];
@@ -227,8 +232,10 @@ main(int argc, char *argv[])
         }
       for (const S s : {S::linear, S::cpgimp})
         {
-          print("residual_seconds_2d_256_" + name(s), residual_seconds<2>(256, s));
-          print("residual_seconds_3d_32_" + name(s), residual_seconds<3>(32, s));
+          print("residual_seconds_2d_256_" + name(s),
+                residual_seconds<2>(256, s));
+          print("residual_seconds_3d_32_" + name(s),
+                residual_seconds<3>(32, s));
         }
       print("residual_ratio_2d_256_cpgimp_over_linear",
             residual_seconds<2>(256, S::cpgimp) /

@@ -18,11 +18,11 @@
 //    (E = 30 kPa), with exact linear solves, the observed order
 //    log(r_{k+1}) / log(r_k) of the relative residuals r_k is >= 1.8 for
 //    every iteration from r_k <= 1e-2 until the round-off floor.
+#include "tests.h"
+
 #include <deal.II/base/function.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
-
-#include "tests.h"
 
 using namespace qsmpm;
 
@@ -58,17 +58,19 @@ namespace
         << "    set Function expression = 0; -800*t\n  end\nend\n"
         << "subsection Load stepping\n  set Number of steps = " << steps
         << "\nend\n"
-        << "subsection Nonlinear solver\n" << solver << "end\n"
-        << "subsection Output\n  set Interval = 0\n  set Directory = column-out\nend\n";
+        << "subsection Nonlinear solver\n"
+        << solver << "end\n"
+        << "subsection Output\n  set Interval = 0\n  set Directory = "
+           "column-out\nend\n";
     return prm.str();
   }
 
   struct Result
   {
-    bool                 completed = false;
-    unsigned int         steps = 0, cut_backs = 0;
-    double               l2 = 0;
-    std::vector<double>  history; // of the last step
+    bool                completed = false;
+    unsigned int        steps = 0, cut_backs = 0;
+    double              l2 = 0;
+    std::vector<double> history; // of the last step
   };
 
   Result
@@ -89,7 +91,8 @@ namespace
       }
     catch (const std::exception &exc)
       {
-        deallog << "  run stopped: " << qsmpm::Utils::error_message(exc) << std::endl;
+        deallog << "  run stopped: " << qsmpm::Utils::error_message(exc)
+                << std::endl;
       }
     result.steps = problem.step_reports().size();
     for (const auto &report : problem.step_reports())
@@ -103,15 +106,16 @@ namespace
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();
-        const double Y = particle.get_location()[1] - data[offsets.displacement + 1];
+        const double Y =
+          particle.get_location()[1] - data[offsets.displacement + 1];
         SymmetricTensor<2, 2> error =
           qsmpm::Utils::read_symmetric<2>(&data[offsets.stress]);
         error[1][1] += 800. * (50. - Y);
         sum += data[offsets.initial_volume] * error.norm() * error.norm();
         volume += data[offsets.initial_volume];
       }
-    sum    = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
-    volume = Utilities::MPI::sum(volume, MPI_COMM_WORLD);
+    sum       = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
+    volume    = Utilities::MPI::sum(volume, MPI_COMM_WORLD);
     result.l2 = std::sqrt(sum / volume) / (800. * 50.);
     return result;
   }
@@ -126,16 +130,15 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize    mpi(argc, argv, 1);
-  qsmpm_tests::MPILogInitAll          log;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  qsmpm_tests::MPILogInitAll       log;
 
   deallog << "1. The issue's column, small strain, linear, default AMG"
           << std::endl;
   for (const unsigned int cells : {8u, 16u})
     {
-      const Result r =
-        run(column_prm(cells, "small strain", "linear", "linear elastic", 1e6,
-                       20, ""));
+      const Result r = run(column_prm(
+        cells, "small strain", "linear", "linear elastic", 1e6, 20, ""));
       check("  " + std::to_string(cells) +
               " cells: 20 steps converged without cut-backs",
             r.completed && r.steps == 20 && r.cut_backs == 0);
@@ -148,8 +151,8 @@ main(int argc, char **argv)
   std::vector<double> gimp;
   for (const unsigned int cells : {8u, 16u, 32u})
     {
-      const Result r =
-        run(column_prm(cells, "finite strain", "cpGIMP", "hencky", 1e6, 20, ""));
+      const Result r = run(
+        column_prm(cells, "finite strain", "cpGIMP", "hencky", 1e6, 20, ""));
       check("  cpGIMP " + std::to_string(cells) + " cells: completed",
             r.completed && r.steps == 20);
       gimp.push_back(r.l2);
@@ -165,11 +168,16 @@ main(int argc, char **argv)
         linear.completed && linear.l2 > 5e-2);
 
   deallog << "3. Quadratic Newton convergence, 32 % compaction" << std::endl;
-  const Result large = run(
-    column_prm(16, "finite strain", "cpGIMP", "hencky", 3e4, 10,
-               "  set Tolerance = 1e-13\n  set Linear tolerance = 1e-12\n"
-               "  set Maximum linear iterations = 200\n"
-               "  set Maximum Newton iterations = 20\n"));
+  const Result large =
+    run(column_prm(16,
+                   "finite strain",
+                   "cpGIMP",
+                   "hencky",
+                   3e4,
+                   10,
+                   "  set Tolerance = 1e-13\n  set Linear tolerance = 1e-12\n"
+                   "  set Maximum linear iterations = 200\n"
+                   "  set Maximum Newton iterations = 20\n"));
   check("  completed", large.completed && large.steps == 10);
   bool         quadratic = true;
   unsigned int n_checked = 0;

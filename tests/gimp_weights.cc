@@ -16,14 +16,14 @@
 // support points, distances wrapped by the period), sum_k S_k = 1,
 // sum_k grad S_k = 0, and no stencil node missing (the number of nodes with
 // |d_x| < h + l_x in each direction). Tolerance 1e-13: round-off only.
+#include "tests.h"
+
 #include <deal.II/dofs/dof_tools.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
-
-#include "tests.h"
 
 namespace
 {
@@ -91,7 +91,7 @@ namespace
     DoFTools::map_dofs_to_support_points(grid.get_mapping(),
                                          grid.get_dof_handler(),
                                          support);
-    double       value_error = 0, gradient_error = 0, unity_error = 0,
+    double value_error = 0, gradient_error = 0, unity_error = 0,
            gradient_sum_error = 0;
     unsigned int missing = 0, n_points = 0;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
@@ -99,8 +99,8 @@ namespace
            p < cache.cell(c).end_point;
            ++p)
         {
-          const Point<dim>     &x = cache.position(p);
-          Tensor<1, dim>        l;
+          const Point<dim> &x = cache.position(p);
+          Tensor<1, dim>    l;
           for (unsigned int d = 0; d < dim; ++d)
             l[d] = cache.properties(p)[o.initial_half_length + d];
           double                sum = 0;
@@ -121,17 +121,19 @@ namespace
                     dist -= upper[d] * std::round(dist / upper[d]);
                   S *= s1d(dist, l[d], 1.);
                   for (unsigned int e = 0; e < dim; ++e)
-                    G[e] *= (e == d) ? ds1d(dist, l[d], 1.) :
-                                       s1d(dist, l[d], 1.);
+                    G[e] *=
+                      (e == d) ? ds1d(dist, l[d], 1.) : s1d(dist, l[d], 1.);
                 }
-              value_error = std::max(value_error, std::abs(S - cache.values(p)[k]));
+              value_error =
+                std::max(value_error, std::abs(S - cache.values(p)[k]));
               gradient_error =
                 std::max(gradient_error, (G - cache.gradients(p)[k]).norm());
               sum += cache.values(p)[k];
               gradient_sum += cache.gradients(p)[k];
             }
-          unity_error        = std::max(unity_error, std::abs(sum - 1.));
-          gradient_sum_error = std::max(gradient_sum_error, gradient_sum.norm());
+          unity_error = std::max(unity_error, std::abs(sum - 1.));
+          gradient_sum_error =
+            std::max(gradient_sum_error, gradient_sum.norm());
           // Nodes with a non-zero weight: per direction those within h + l.
           unsigned int expected = 1;
           for (unsigned int d = 0; d < dim; ++d)
@@ -143,9 +145,10 @@ namespace
                   const bool   exists =
                     d != 1 || (i >= 0 && i <= static_cast<int>(upper[d]));
                   // Periodic directions: images i and i + L are one node.
-                  const bool duplicate = d != 1 && (i < 0 || i >= upper[d]) &&
-                                         std::abs(x[d] - (i - upper[d] *
-                                           std::floor(i / upper[d]))) < 1. + l[d];
+                  const bool duplicate =
+                    d != 1 && (i < 0 || i >= upper[d]) &&
+                    std::abs(x[d] - (i - upper[d] * std::floor(i / upper[d]))) <
+                      1. + l[d];
                   if (exists && !duplicate && dist < 1. + l[d] - 1e-12)
                     ++count;
                 }

@@ -70,13 +70,13 @@ namespace Column
   // QuasiStaticProblem.
   struct Parameters
   {
-    double                   height          = 50.;
-    double                   weight          = 800.;
-    std::vector<unsigned int> cells          = {4, 8, 16, 32, 64, 128};
-    std::vector<std::string> shape_functions = {"linear", "cpGIMP"};
-    std::string              output_file     = "convergence.csv";
-    unsigned int             points          = 2;
-    std::string              prefix          = "";
+    double                    height          = 50.;
+    double                    weight          = 800.;
+    std::vector<unsigned int> cells           = {4, 8, 16, 32, 64, 128};
+    std::vector<std::string>  shape_functions = {"linear", "cpGIMP"};
+    std::string               output_file     = "convergence.csv";
+    unsigned int              points          = 2;
+    std::string               prefix          = "";
 
     void
     add_parameters(ParameterHandler &prm)
@@ -140,10 +140,10 @@ namespace Column
   class SelfWeightColumn
   {
   public:
-    SelfWeightColumn(const Parameters   &column,
-                     ParameterHandler   &prm,
-                     const std::string  &shape_functions,
-                     const unsigned int  cells);
+    SelfWeightColumn(const Parameters  &column,
+                     ParameterHandler  &prm,
+                     const std::string &shape_functions,
+                     const unsigned int cells);
 
     struct Errors
     {
@@ -167,10 +167,10 @@ namespace Column
     Errors
     measure_errors() const;
 
-    const Parameters        &column;
-    const unsigned int       cells;
-    const double             h;
-    QuasiStaticProblem<dim>  problem;
+    const Parameters       &column;
+    const unsigned int      cells;
+    const double            h;
+    QuasiStaticProblem<dim> problem;
   };
 
 
@@ -188,9 +188,9 @@ namespace Column
     // Solver, load stepping and output from the file; the formulation
     // from the study. The material model is the one in the file.
     problem.parameters().parse_parameters(prm);
-    auto &mp                        = problem.parameters().material_points;
-    mp.points_per_direction         = column.points;
-    mp.formulation.shape_functions  = parse_shape_functions(shape_functions);
+    auto &mp                       = problem.parameters().material_points;
+    mp.points_per_direction        = column.points;
+    mp.formulation.shape_functions = parse_shape_functions(shape_functions);
     problem.parameters().output.interval = 0;
     // One line per run is printed by the study; the problem stays quiet.
     problem.pcout().set_condition(false);
@@ -255,14 +255,14 @@ namespace Column
     Timer timer;
     problem.run();
     timer.stop();
-    Errors errors    = measure_errors();
-    errors.wall_time = timer.wall_time();
-    errors.steps     = problem.step_reports().size();
+    Errors errors     = measure_errors();
+    errors.wall_time  = timer.wall_time();
+    errors.steps      = problem.step_reports().size();
     errors.newton_min = errors.gmres_per_newton_min = 1000000;
     errors.newton_max = errors.gmres_per_newton_max = 0;
     for (const auto &report : problem.step_reports())
       {
-        const auto &n = report.newton;
+        const auto &n     = report.newton;
         errors.newton_min = std::min(errors.newton_min, n.newton_iterations);
         errors.newton_max = std::max(errors.newton_max, n.newton_iterations);
         const unsigned int g =
@@ -288,22 +288,23 @@ namespace Column
   typename SelfWeightColumn<dim>::Errors
   SelfWeightColumn<dim>::measure_errors() const
   {
-    const auto  &points  = const_cast<QuasiStaticProblem<dim> &>(problem).points();
+    const auto &points =
+      const_cast<QuasiStaticProblem<dim> &>(problem).points();
     const auto  &offsets = points.get_offsets();
     const double scale   = column.weight * column.height;
     double       sum = 0, volume = 0, max = 0, initial_height = 0;
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();
-        const double Y    = particle.get_location()[1] -
-                         data[offsets.displacement + 1];
+        const double Y =
+          particle.get_location()[1] - data[offsets.displacement + 1];
         SymmetricTensor<2, dim> error =
           Utils::read_symmetric<dim>(&data[offsets.stress]);
         error[1][1] += column.weight * (column.height - Y);
         const double V = data[offsets.initial_volume];
         sum += V * error.norm() * error.norm();
         volume += V;
-        max = std::max(max, error.norm());
+        max            = std::max(max, error.norm());
         initial_height = std::max(initial_height, particle.get_location()[1]);
       }
     const MPI_Comm comm = MPI_COMM_WORLD;
@@ -342,7 +343,7 @@ namespace Column
         double low = 1e-12, high = 1.;
         for (unsigned int k = 0; k < 200; ++k)
           {
-            const double mid = 0.5 * (low + high);
+            const double mid                       = 0.5 * (low + high);
             (std::log(mid) / mid < s ? low : high) = mid;
           }
         const double lambda = 0.5 * (low + high);
@@ -378,8 +379,8 @@ namespace Column
         prm.enter_subsection("hencky");
         const double E = prm.get_double("Young's modulus");
         if (prm.get_double("Poisson's ratio") == 0.)
-          pcout << column.prefix << "exact compaction (Hencky, nu = 0): "
-                << std::setprecision(5)
+          pcout << column.prefix
+                << "exact compaction (Hencky, nu = 0): " << std::setprecision(5)
                 << exact_hencky_compaction(E, column.weight, column.height)
                 << std::endl;
         prm.leave_subsection();
@@ -390,7 +391,8 @@ namespace Column
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         csv.open(column.output_file);
-        AssertThrow(csv, ExcMessage("Cannot write <" + column.output_file + ">."));
+        AssertThrow(csv,
+                    ExcMessage("Cannot write <" + column.output_file + ">."));
         csv << "shape_functions,cells,l2_stress_error,max_stress_error\n";
       }
 
@@ -404,22 +406,22 @@ namespace Column
             l2.push_back(e.l2);
             pcout << column.prefix << std::setw(7) << shape_functions
                   << "  cells " << std::setw(4) << cells << "  L2 "
-                  << std::scientific << std::setprecision(3) << e.l2
-                  << "  max " << e.max << std::defaultfloat
-                  << std::setprecision(4) << "  compaction " << e.compaction
-                  << "  steps " << e.steps << "  newton " << e.newton_min
-                  << "-" << e.newton_max << "  gmres/newton "
-                  << e.gmres_per_newton_min << "-" << e.gmres_per_newton_max
-                  << "  " << std::fixed << std::setprecision(2) << e.wall_time
-                  << " s" << std::defaultfloat << std::endl;
+                  << std::scientific << std::setprecision(3) << e.l2 << "  max "
+                  << e.max << std::defaultfloat << std::setprecision(4)
+                  << "  compaction " << e.compaction << "  steps " << e.steps
+                  << "  newton " << e.newton_min << "-" << e.newton_max
+                  << "  gmres/newton " << e.gmres_per_newton_min << "-"
+                  << e.gmres_per_newton_max << "  " << std::fixed
+                  << std::setprecision(2) << e.wall_time << " s"
+                  << std::defaultfloat << std::endl;
             if (csv.is_open())
               csv << shape_functions << ',' << cells << ','
                   << std::setprecision(8) << e.l2 << ',' << e.max << '\n';
           }
         for (unsigned int i = 1; i < l2.size(); ++i)
-          pcout << column.prefix << std::setw(7) << shape_functions
-                << "  rate " << column.cells[i - 1] << " -> "
-                << column.cells[i] << ": " << std::setprecision(3)
+          pcout << column.prefix << std::setw(7) << shape_functions << "  rate "
+                << column.cells[i - 1] << " -> " << column.cells[i] << ": "
+                << std::setprecision(3)
                 << std::log(l2[i - 1] / l2[i]) /
                      std::log(double(column.cells[i]) / column.cells[i - 1])
                 << std::endl;
@@ -436,9 +438,9 @@ main(int argc, char *argv[])
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string parameter_file =
+      const std::string                        parameter_file =
         argc > 1 ? std::string(argv[1]) :
-                   (std::filesystem::path(argv[0]).parent_path() / "column.prm")
+                                          (std::filesystem::path(argv[0]).parent_path() / "column.prm")
                      .string();
       AssertThrow(std::filesystem::exists(parameter_file),
                   dealii::ExcMessage("Cannot find the parameter file <" +

@@ -1,8 +1,8 @@
 #include <Epetra_BlockMap.h>
-#include <qsmpm/assembly/quasi_static_residual.h>
-#include <qsmpm/base/utilities.h>
 #include <cmath>
 #include <limits>
+#include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/base/utilities.h>
 
 namespace qsmpm
 {
@@ -64,7 +64,7 @@ namespace qsmpm
   double
   QuasiStaticResidual<dim>::typical_increment_norm() const
   {
-    const Tensor<1, dim> h = grid.cell_size();
+    const Tensor<1, dim> h     = grid.cell_size();
     double               h_min = h[0];
     for (unsigned int d = 1; d < dim; ++d)
       h_min = std::min(h_min, h[d]);
@@ -142,7 +142,7 @@ namespace qsmpm
     constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
     const auto            &offsets  = points.get_offsets();
     const unsigned int     n_state  = state_scratch.size();
-    const bool finite_strain = points.get_formulation().finite_strain();
+    const bool finite_strain        = points.get_formulation().finite_strain();
 
     du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
                                         *importer,
@@ -169,8 +169,8 @@ namespace qsmpm
           {
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
-            const unsigned short *nodes  = cache.nodes(p);
-            double               *data   = cache.properties(p);
+            const unsigned short *nodes   = cache.nodes(p);
+            double               *data    = cache.properties(p);
 
             // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e.
             // in the configuration at the start of the step.
@@ -208,7 +208,10 @@ namespace qsmpm
                 else
                   {
                     SymmetricTensor<2, dim> tau;
-                    model.update_kirchhoff_stress(old, kinematics, tau, new_state);
+                    model.update_kirchhoff_stress(old,
+                                                  kinematics,
+                                                  tau,
+                                                  new_state);
                     // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T}
                     // grad_n N.
                     volume = data[offsets.initial_volume];
@@ -217,8 +220,9 @@ namespace qsmpm
                     if (write_back)
                       {
                         const double J = determinant(kinematics.F);
-                        Utils::write_symmetric<dim>(
-                          logarithmic_strain(kinematics.F), data + offsets.strain);
+                        Utils::write_symmetric<dim>(logarithmic_strain(
+                                                      kinematics.F),
+                                                    data + offsets.strain);
                         Utils::write_symmetric<dim>(tau / J,
                                                     data + offsets.stress);
                         for (unsigned int i = 0; i < dim; ++i)
@@ -238,7 +242,7 @@ namespace qsmpm
                 model.update_stress(old, d_eps, stress, new_state);
 
                 // (2.23)-(2.24): J and the volume at the end of the step.
-                const double J      = (1. + trace(d_eps)) * data[offsets.J];
+                const double J = (1. + trace(d_eps)) * data[offsets.J];
                 volume = update_volumes ? J * data[offsets.initial_volume] :
                                           data[offsets.initial_volume];
                 if (write_back)

@@ -53,14 +53,15 @@ namespace qsmpm
     // in this step. A pattern with every node of the 3^dim cells around
     // each cell would do for all steps, but it stores many zeros, which
     // AMG and its smoothers then treat as couplings.
-    TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
+    TrilinosWrappers::SparsityPattern    pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
                                               writable_rows,
                                               grid.get_communicator());
     std::vector<types::global_dof_index> dofs;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + cache.n_dofs(c));
+        dofs.assign(cache.global_dofs(c),
+                    cache.global_dofs(c) + cache.n_dofs(c));
         periodicity.add_entries_local_to_global(dofs,
                                                 pattern,
                                                 /*keep_constrained=*/true);
@@ -84,7 +85,7 @@ namespace qsmpm
     const auto        &offsets       = points.get_offsets();
     const auto        &model         = points.get_model();
     const unsigned int n_state       = model.n_state_components();
-    const bool finite_strain = points.get_formulation().finite_strain();
+    const bool         finite_strain = points.get_formulation().finite_strain();
 
     if (pattern_per_step)
       make_step_pattern(grid, cache);
@@ -98,10 +99,10 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const double         *data   = cache.properties(p);
+            const double         *data    = cache.properties(p);
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
-            const unsigned short *nodes  = cache.nodes(p);
+            const unsigned short *nodes   = cache.nodes(p);
             const PointState<dim> state{
               Utils::read_symmetric<dim>(data + offsets.strain),
               Utils::read_symmetric<dim>(data + offsets.stress),
@@ -121,8 +122,9 @@ namespace qsmpm
                       data[offsets.deformation_gradient + i * dim + j];
                 kinematics.delta_F = unit_symmetric_tensor<dim>();
                 kinematics.F       = kinematics.F_old;
-                C = model.kirchhoff_tangent(state, kinematics);
-                const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+                C                  = model.kirchhoff_tangent(state, kinematics);
+                const SymmetricTensor<2, dim> tau =
+                  data[offsets.J] * state.stress;
                 for (unsigned int a = 0; a < dim; ++a)
                   for (unsigned int k = 0; k < dim; ++k)
                     for (unsigned int l = 0; l < dim; ++l)

@@ -90,7 +90,7 @@ namespace qsmpm
   {
     residual.reset();
     material_points.reset();
-    model = std::move(new_model);
+    model           = std::move(new_model);
     material_points = std::make_unique<MaterialPointSet<dim>>(
       background_grid, *model, prm_values.material_points.formulation);
   }
@@ -227,7 +227,7 @@ namespace qsmpm
       VectorType du_ghosted(background_grid.locally_owned_dofs(),
                             background_grid.locally_relevant_dofs(),
                             communicator);
-      du_ghosted = du;
+      du_ghosted         = du;
       const double moved = points().advect(cache, du_ghosted);
       last_reactions     = bcs.reactions(R, communicator);
       const auto lost    = points().sort_into_cells();

@@ -306,14 +306,14 @@ namespace qsmpm
       return Iterator();
     };
 
-    constexpr unsigned int n_block_cells = dim == 2 ? 9 : 27;
+    constexpr unsigned int              n_block_cells = dim == 2 ? 9 : 27;
     std::array<Iterator, n_block_cells> block;
     // Block cell (o_0, o_1[, o_2]), o_d = 0..2 for offsets -1..1: first
     // along the last direction, then the rows along the earlier ones.
     for (unsigned int b = 0; b < n_block_cells; ++b)
       {
-        Iterator     c = cell;
-        unsigned int rest = b;
+        Iterator             c    = cell;
+        unsigned int         rest = b;
         std::array<int, dim> offset;
         for (unsigned int d = 0; d < dim; ++d, rest /= 3)
           offset[d] = static_cast<int>(rest % 3) - 1;

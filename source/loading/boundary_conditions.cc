@@ -456,9 +456,9 @@ namespace qsmpm
             for (unsigned int p = range.first_point; p < range.end_point; ++p)
               {
                 body_force->vector_value(cache.position(p), b);
-                const double          volume = cache.properties(p)[volume_offset];
-                const double         *N      = cache.values(p);
-                const unsigned short *nodes  = cache.nodes(p);
+                const double  volume = cache.properties(p)[volume_offset];
+                const double *N      = cache.values(p);
+                const unsigned short *nodes = cache.nodes(p);
                 for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
                   for (unsigned int d = 0; d < dim; ++d)
                     cell_force[nodes[k] * dim + d] += volume * b[d] * N[k];

@@ -80,8 +80,8 @@ namespace qsmpm
       points_per_direction = prm.get_integer("Points per cell per direction");
       placement =
         prm.get("Placement") == "gauss" ? Placement::gauss : Placement::regular;
-      update_volumes          = prm.get_bool("Update volumes");
-      formulation.kinematics  = parse_kinematics(prm.get("Kinematics"));
+      update_volumes         = prm.get_bool("Update volumes");
+      formulation.kinematics = parse_kinematics(prm.get("Kinematics"));
       formulation.shape_functions =
         parse_shape_functions(prm.get("Shape functions"));
       AssertThrow(update_volumes || !formulation.finite_strain(),
@@ -134,7 +134,7 @@ namespace qsmpm
     if (formulation.gimp())
       offsets.initial_half_length =
         layout.add("initial_half_length", dim, Kind::vector);
-    offsets.state            = layout.size();
+    offsets.state = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);
 
@@ -229,12 +229,11 @@ namespace qsmpm
                 grid.get_mapping().transform_unit_to_real_cell(
                   cell, reference_points[q]);
               if (inside(x))
-                new_points.push_back(
-                  {cell,
-                   x,
-                   reference_points[q],
-                   volume * fractions[q],
-                   fractions[q]});
+                new_points.push_back({cell,
+                                      x,
+                                      reference_points[q],
+                                      volume * fractions[q],
+                                      fractions[q]});
             }
         }
 
@@ -305,8 +304,8 @@ namespace qsmpm
   MaterialPointSet<dim>::advect(const ShapeCache<dim>               &cache,
                                 const TrilinosWrappers::MPI::Vector &du)
   {
-    double largest = 0.;
-    const double *values = du.trilinos_vector()[0];
+    double        largest = 0.;
+    const double *values  = du.trilinos_vector()[0];
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto  &range = cache.cell(c);

@@ -1,8 +1,8 @@
 #include <Epetra_BlockMap.h>
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/shape_cache.h>
-#include <cmath>
 
 namespace qsmpm
 {
@@ -79,8 +79,8 @@ namespace qsmpm
                  fe.system_to_component_index(v * dim + c).second == v,
                ExcInternalError());
 
-    const bool gimp = points.get_formulation().gimp();
-    auto      &particle_handler = points.get_particle_handler();
+    const bool         gimp             = points.get_formulation().gimp();
+    auto              &particle_handler = points.get_particle_handler();
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
 
@@ -190,13 +190,13 @@ namespace qsmpm
     constexpr unsigned int n_block = BackgroundGrid<dim>::n_block_nodes;
     const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
     grid.node_block_dofs(dof_cell, block_dofs);
-    const Tensor<1, dim> h      = grid.cell_size();
-    double               h_min  = h[0];
+    const Tensor<1, dim> h     = grid.cell_size();
+    double               h_min = h[0];
     for (unsigned int d = 1; d < dim; ++d)
       h_min = std::min(h_min, h[d]);
-    const Point<dim>     corner = cell->vertex(0);
-    const auto          &offsets     = points.get_offsets();
-    const Formulation   &formulation = points.get_formulation();
+    const Point<dim>   corner      = cell->vertex(0);
+    const auto        &offsets     = points.get_offsets();
+    const Formulation &formulation = points.get_formulation();
     const bool stretch = formulation.shape_functions == ShapeFunctions::cpgimp;
 
     // Block node of each stencil entry; compacted after all points are seen.
@@ -236,16 +236,17 @@ namespace qsmpm
 
         // 1D weights of the three nodes s_d, s_d + 1, s_d + 2 of the 4-node
         // row of the block in each direction.
-        std::array<unsigned int, dim>           start;
+        std::array<unsigned int, dim>          start;
         std::array<std::array<double, 3>, dim> w, dw;
         for (unsigned int d = 0; d < dim; ++d)
           {
             l[d] = std::min(std::max(l[d], 1e-6 * h[d]), 0.5 * h[d]);
             const double local = x[d] - corner[d];
-            start[d]           = std::min(
-              1,
-              std::max(0, static_cast<int>(std::floor((local - l[d]) / h[d])) +
-                            1));
+            start[d]           = std::min(1,
+                                std::max(0,
+                                         static_cast<int>(
+                                           std::floor((local - l[d]) / h[d])) +
+                                           1));
             for (unsigned int a = 0; a < 3; ++a)
               {
                 const double node =
@@ -260,8 +261,8 @@ namespace qsmpm
         unsigned int n_kept = 0;
         for (unsigned int k = 0; k < stencil; ++k)
           {
-            unsigned int rest = k, node = 0, stride = 1;
-            double       value = 1.;
+            unsigned int   rest = k, node = 0, stride = 1;
+            double         value = 1.;
             Tensor<1, dim> gradient;
             for (unsigned int e = 0; e < dim; ++e)
               gradient[e] = 1.;
@@ -288,8 +289,8 @@ namespace qsmpm
             ++n_kept;
           }
         point_stencil_sizes[p] = n_kept;
-        point_properties[p] = data;
-        point_positions[p]  = x;
+        point_properties[p]    = data;
+        point_positions[p]     = x;
         ++p;
       }
 

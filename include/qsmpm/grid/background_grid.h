@@ -110,9 +110,8 @@ namespace qsmpm
      * These are the nodes that a GIMP point in @p cell can reach.
      */
     void
-    node_block_dofs(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      std::vector<types::global_dof_index>                 &dofs) const;
+    node_block_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    std::vector<types::global_dof_index> &dofs) const;
 
     /**
      * Renumber and redistribute degrees of freedom, e.g. after the

@@ -121,10 +121,10 @@ namespace qsmpm
      * The default throws: the model is small-strain only.
      */
     virtual void
-    update_kirchhoff_stress(const PointState<dim>              &old,
-                            const FiniteStrainKinematics<dim>  &kinematics,
-                            SymmetricTensor<2, dim>            &tau,
-                            ArrayView<double>                   new_state) const;
+    update_kirchhoff_stress(const PointState<dim>             &old,
+                            const FiniteStrainKinematics<dim> &kinematics,
+                            SymmetricTensor<2, dim>           &tau,
+                            ArrayView<double>                  new_state) const;
 
     /**
      * Finite strain: the consistent tangent of the Kirchhoff stress returned

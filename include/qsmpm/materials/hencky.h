@@ -1,8 +1,7 @@
 #ifndef qsmpm_materials_hencky_h
 #define qsmpm_materials_hencky_h
 
-#include <qsmpm/materials/constitutive_model.h>
-#include <utility>
+#include <qsmpm/materials/isotropic_hyperelastic.h>
 
 namespace qsmpm
 {
@@ -42,7 +41,7 @@ namespace qsmpm
    * Selected in a .prm file with `set Model = hencky`.
    */
   template <int dim>
-  class Hencky : public ConstitutiveModel<dim>
+  class Hencky : public IsotropicHyperelastic<dim>
   {
   public:
     std::string
@@ -56,25 +55,7 @@ namespace qsmpm
     /// Construct from the subsection "hencky".
     explicit Hencky(ParameterHandler &prm);
 
-    static void
-    declare_parameters(ParameterHandler &prm);
 
-    /// The Lame constants (lambda, mu) of E and nu (3D formulas, which are
-    /// also those of plane strain).
-    static std::pair<double, double>
-    lame_parameters(const double young_modulus, const double poisson_ratio);
-
-    bool
-    supports_finite_strain() const override;
-
-    void
-    update_stress(const PointState<dim>         &old,
-                  const SymmetricTensor<2, dim> &strain_increment,
-                  SymmetricTensor<2, dim>       &stress,
-                  ArrayView<double>              new_state) const override;
-
-    SymmetricTensor<4, dim>
-    tangent(const PointState<dim> &old) const override;
 
     /// tau = D : 1/2 ln(F F^T) at F = kinematics.F.
     void
@@ -88,13 +69,6 @@ namespace qsmpm
     kirchhoff_tangent(
       const PointState<dim>             &old,
       const FiniteStrainKinematics<dim> &kinematics) const override;
-
-    /// The isotropic elasticity tensor D (= C, plane strain in 2D).
-    const SymmetricTensor<4, dim> &
-    stiffness() const;
-
-  private:
-    SymmetricTensor<4, dim> C;
   };
 } // namespace qsmpm
 

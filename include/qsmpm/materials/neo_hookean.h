@@ -1,8 +1,7 @@
 #ifndef qsmpm_materials_neo_hookean_h
 #define qsmpm_materials_neo_hookean_h
 
-#include <qsmpm/materials/constitutive_model.h>
-#include <utility>
+#include <qsmpm/materials/isotropic_hyperelastic.h>
 
 namespace qsmpm
 {
@@ -37,7 +36,7 @@ namespace qsmpm
    * Selected in a .prm file with `set Model = neo-Hookean`.
    */
   template <int dim>
-  class NeoHookean : public ConstitutiveModel<dim>
+  class NeoHookean : public IsotropicHyperelastic<dim>
   {
   public:
     std::string
@@ -51,25 +50,7 @@ namespace qsmpm
     /// Construct from the subsection "neo-Hookean".
     explicit NeoHookean(ParameterHandler &prm);
 
-    static void
-    declare_parameters(ParameterHandler &prm);
 
-    /// The Lame constants (lambda, mu) of E and nu (3D formulas, which are
-    /// also those of plane strain).
-    static std::pair<double, double>
-    lame_parameters(const double young_modulus, const double poisson_ratio);
-
-    bool
-    supports_finite_strain() const override;
-
-    void
-    update_stress(const PointState<dim>         &old,
-                  const SymmetricTensor<2, dim> &strain_increment,
-                  SymmetricTensor<2, dim>       &stress,
-                  ArrayView<double>              new_state) const override;
-
-    SymmetricTensor<4, dim>
-    tangent(const PointState<dim> &old) const override;
 
     /// tau = mu (b - I) + lambda ln J I at F = kinematics.F.
     void
@@ -83,15 +64,6 @@ namespace qsmpm
     kirchhoff_tangent(
       const PointState<dim>             &old,
       const FiniteStrainKinematics<dim> &kinematics) const override;
-
-    /// The small-strain stiffness C (plane strain in 2D).
-    const SymmetricTensor<4, dim> &
-    stiffness() const;
-
-  private:
-    double                  lambda;
-    double                  mu;
-    SymmetricTensor<4, dim> C;
   };
 } // namespace qsmpm
 

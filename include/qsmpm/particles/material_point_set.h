@@ -93,8 +93,8 @@ namespace qsmpm
      * @p placement, keeping those at which @p inside is true. Volumes are the
      * cell volume divided equally (regular) or weighted by the Gauss weights
      * (gauss). With GIMP, a point's initial domain is the box of
-     * half-lengths l_d = h_d / (2n) around it. Point ids are globally unique and independent of the number
-     * of MPI ranks only up to ordering.
+     * half-lengths l_d = h_d / (2n) around it. Point ids are globally unique
+     * and independent of the number of MPI ranks only up to ordering.
      */
     void
     fill(const std::function<bool(const Point<dim> &)> &inside,

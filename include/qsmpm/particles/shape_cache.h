@@ -1,9 +1,9 @@
 #ifndef qsmpm_particles_shape_cache_h
 #define qsmpm_particles_shape_cache_h
 
+#include <Epetra_BlockMap.h>
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/tensor.h>
-#include <Epetra_BlockMap.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -178,9 +178,9 @@ namespace qsmpm
     /// Linear shape functions of the point's cell.
     void
     add_linear_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const BackgroundGrid<dim> &grid,
-                    const Epetra_BlockMap     &map,
-                    unsigned int          &p,
+                    const BackgroundGrid<dim>                            &grid,
+                    const Epetra_BlockMap                                &map,
+                    unsigned int                                         &p,
                     Particles::ParticleHandler<dim> &particle_handler);
 
     /// GIMP weights over the 3^dim cells around the point's cell.

@@ -1,0 +1,55 @@
+#ifndef qsmpm_materials_isotropic_hyperelastic_h
+#define qsmpm_materials_isotropic_hyperelastic_h
+
+#include <qsmpm/materials/linear_elastic.h>
+#include <string>
+#include <utility>
+
+namespace qsmpm
+{
+  /**
+   * What the isotropic hyperelastic models (Hencky, NeoHookean) share: the
+   * constants E and nu with their Lame constants lambda, mu, the parameters
+   * "Young's modulus" and "Poisson's ratio" of their .prm subsection, and
+   * the small-strain interface, which is LinearElastic's with the same E,
+   * nu (sigma = sigma_old + C : d eps; plane strain in 2D), so that each
+   * model also serves Kinematics = small strain. A derived class provides
+   * the Kirchhoff stress and its consistent tangent.
+   */
+  template <int dim>
+  class IsotropicHyperelastic : public LinearElastic<dim>
+  {
+  public:
+    /// @p model_name appears in messages about bad constants.
+    IsotropicHyperelastic(const std::string &model_name,
+                          const double       young_modulus,
+                          const double       poisson_ratio);
+
+    /// "Young's modulus" and "Poisson's ratio" (no plane stress).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// The Lame constants (lambda, mu) of E and nu (3D formulas, which are
+    /// also those of plane strain), with a message naming @p model_name if
+    /// the constants are not admissible.
+    static std::pair<double, double>
+    lame_parameters(const std::string &model_name,
+                    const double       young_modulus,
+                    const double       poisson_ratio);
+
+    bool
+    supports_finite_strain() const override;
+
+
+
+  protected:
+    /// b = F F^T.
+    static SymmetricTensor<2, dim>
+    left_cauchy_green(const Tensor<2, dim> &F);
+
+    const double lambda;
+    const double mu;
+  };
+} // namespace qsmpm
+
+#endif
