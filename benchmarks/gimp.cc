@@ -3,8 +3,11 @@
 // same run.
 //
 //  1. residual cost: wall time of one residual evaluation R(du) of the
-//     block problem of benchmark_problem.h (2^dim points per cell), cpGIMP
-//     over linear, 2D 256^2 and 3D 32^3 cells;
+//     block problem of benchmark_problem.h (2^dim points per cell, Hencky
+//     elasticity: at small strain the linear-elastic update, at finite
+//     strain the Hencky update), cpGIMP over linear, 2D 256^2 and 3D 32^3
+//     cells, with the domains in their cells and with every domain crossing
+//     faces;
 //  2. GMRES iterations per Newton iteration with AMG on the block, one load
 //     step, under refinement (2D 32^2 ... 256^2, 3D 8^3 ... 32^3);
 //  3. small cut cells: the self-weight column (finite strain, Hencky,
@@ -47,7 +50,8 @@ namespace
   double
   residual_seconds(const unsigned int          n,
                    const qsmpm::ShapeFunctions shape,
-                   const bool                  crossing = false)
+                   const bool                  crossing      = false,
+                   const bool                  finite_strain = false)
   {
     qsmpm::BackgroundGrid<dim>    grid(MPI_COMM_WORLD);
     Point<dim>                    upper;
@@ -58,9 +62,11 @@ namespace
         subdivisions[d] = n;
       }
     grid.make_box(Point<dim>(), upper, subdivisions);
-    const qsmpm::LinearElastic<dim> model(1e3, 0.3);
-    qsmpm::Formulation              formulation;
+    const qsmpm::Hencky<dim> model(1e3, 0.3);
+    qsmpm::Formulation       formulation;
     formulation.shape_functions = shape;
+    if (finite_strain)
+      formulation.kinematics = qsmpm::Kinematics::finite_strain;
     qsmpm::MaterialPointSet<dim> points(grid, model, formulation);
     points.fill([](const Point<dim> &) { return true; },
                 2,
@@ -243,6 +249,18 @@ main(int argc, char *argv[])
       print("residual_ratio_3d_32_cpgimp_over_linear",
             residual_seconds<3>(32, S::cpgimp) /
               residual_seconds<3>(32, S::linear));
+      for (const bool crossing : {false, true})
+        {
+          const std::string what = crossing ? "_all_crossing" : "";
+          print("residual_ratio_finite_strain_2d_256_cpgimp" + what +
+                  "_over_linear",
+                residual_seconds<2>(256, S::cpgimp, crossing, true) /
+                  residual_seconds<2>(256, S::linear, false, true));
+          print("residual_ratio_finite_strain_3d_32_cpgimp" + what +
+                  "_over_linear",
+                residual_seconds<3>(32, S::cpgimp, crossing, true) /
+                  residual_seconds<3>(32, S::linear, false, true));
+        }
       print("residual_ratio_2d_256_cpgimp_all_crossing_over_linear",
             residual_seconds<2>(256, S::cpgimp, true) /
               residual_seconds<2>(256, S::linear));
