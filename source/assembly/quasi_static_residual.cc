@@ -183,7 +183,9 @@ namespace qsmpm
               Utils::read_symmetric<dim>(data + offsets.strain),
               Utils::read_symmetric<dim>(data + offsets.stress),
               ArrayView<const double>(data + offsets.state, n_state),
-              data[offsets.volume]};
+              data[offsets.volume],
+              static_cast<unsigned int>(data[offsets.material_id]),
+              cache.position(p)};
             ArrayView<double> new_state(state_scratch.data(), n_state);
 
             // Small strain: f_i = -volume sigma grad N_i. Finite strain:

@@ -107,7 +107,9 @@ namespace qsmpm
               Utils::read_symmetric<dim>(data + offsets.strain),
               Utils::read_symmetric<dim>(data + offsets.stress),
               ArrayView<const double>(data + offsets.state, n_state),
-              data[offsets.volume]};
+              data[offsets.volume],
+              static_cast<unsigned int>(data[offsets.material_id]),
+              cache.position(p)};
             Tensor<4, dim> C;
             double         volume;
             if (finite_strain)

@@ -28,7 +28,7 @@ namespace qsmpm
 
   /**
    * What a constitutive model may read of a material point: its committed
-   * state at the start of the load step.
+   * state at the start of the load step, its material id and its position.
    */
   template <int dim>
   struct PointState
@@ -41,6 +41,10 @@ namespace qsmpm
     ArrayView<const double> state;
     /// Volume of the point at the start of the step.
     double volume;
+    /// The point's material id (MaterialPointSet::fill()).
+    unsigned int material_id = 0;
+    /// The point's position at the start of the step.
+    Point<dim> position = Point<dim>();
   };
 
   /**
