@@ -18,6 +18,7 @@
 // @sect3{Include files}
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -354,6 +355,46 @@ namespace Column
 
 
 
+  // @sect3{The log-log plot}
+  //
+  // Next to the CSV file, a gnuplot script of the same name with ".gp", and,
+  // if gnuplot is installed, the plot itself (".png"): the L2 and maximum
+  // errors of each kind of shape functions against the number of cells.
+  void
+  write_plot(const std::string &csv_file)
+  {
+    const std::string stem =
+      std::filesystem::path(csv_file).replace_extension().string();
+    std::ofstream gp(stem + ".gp");
+    gp << "set terminal pngcairo size 800,560 noenhanced\n"
+       << "set output '" << stem << ".png'\n"
+       << "set datafile separator ','\n"
+       << "set logscale xy\n"
+       << "set xlabel 'cells over the height'\n"
+       << "set ylabel 'stress error / (rho0 g l0)'\n"
+       << "set key top right\nset grid\n"
+       << "f = '" << csv_file << "'\n"
+       << "plot f using 2:(strcol(1) eq 'linear' ? $3 : 1/0) w lp lw 2 pt 7 "
+          "t 'linear, L2', \\\n"
+       << "     f using 2:(strcol(1) eq 'linear' ? $4 : 1/0) w lp dt 2 pt 6 "
+          "t 'linear, max', \\\n"
+       << "     f using 2:(strcol(1) ne 'linear' ? $3 : 1/0) w lp lw 2 pt 5 "
+          "t 'GIMP, L2', \\\n"
+       << "     f using 2:(strcol(1) ne 'linear' ? $4 : 1/0) w lp dt 2 pt 4 "
+          "t 'GIMP, max', \\\n"
+       << "     0.03*(8.0/x)**1.5 w l lc rgb 'gray' dt 3 t 'slope 1.5'\n";
+    gp.close();
+    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
+        std::system(("gnuplot " + stem + ".gp").c_str()) == 0)
+      std::cout << "wrote " << csv_file << " and " << stem << ".png"
+                << std::endl;
+    else
+      std::cout << "wrote " << csv_file << " and " << stem
+                << ".gp (gnuplot not found: no picture)" << std::endl;
+  }
+
+
+
   // @sect3{The convergence study}
   //
   // All runs of the study, a line per run on the screen and in the CSV
@@ -425,6 +466,11 @@ namespace Column
                 << std::log(l2[i - 1] / l2[i]) /
                      std::log(double(column.cells[i]) / column.cells[i - 1])
                 << std::endl;
+      }
+    if (csv.is_open())
+      {
+        csv.close();
+        write_plot(column.output_file);
       }
   }
 } // namespace Column
