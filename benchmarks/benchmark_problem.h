@@ -5,7 +5,9 @@
 #define qsmpm_benchmarks_benchmark_problem_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <fstream>
+#include <iostream>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <string>
@@ -13,6 +15,29 @@
 namespace Benchmarks
 {
   using namespace dealii;
+
+  /// A "key,value" line on standard output, from rank 0.
+  inline void
+  print(const std::string &key, const double value)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << key << ',' << value << std::endl;
+  }
+
+  /// The unit box with n cells per direction.
+  template <int dim>
+  void
+  make_unit_box(qsmpm::BackgroundGrid<dim> &grid, const unsigned int n)
+  {
+    Point<dim>                    upper;
+    std::array<unsigned int, dim> subdivisions;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        upper[d]        = 1.;
+        subdivisions[d] = n;
+      }
+    grid.make_box(Point<dim>(), upper, subdivisions);
+  }
 
   /// Top plate: u = t (1e-4, -1e-3, 0); the sideways part is small enough
   /// that no point leaves the unit box on grids up to 512 cells across.
@@ -39,16 +64,9 @@ namespace Benchmarks
               const std::string              &preconditioner)
   {
     problem.pcout().set_condition(false);
-    Point<dim>                    upper;
-    std::array<unsigned int, dim> subdivisions;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        upper[d]        = 1.;
-        subdivisions[d] = n;
-      }
-    // Leave room above and beside the body is not needed: the body is
-    // compressed, so its points stay inside the box.
-    problem.grid().make_box(Point<dim>(), upper, subdivisions);
+    // No room is needed around the body: it is compressed, so its points
+    // stay inside the box.
+    make_unit_box(problem.grid(), n);
     problem.set_model(std::make_unique<qsmpm::LinearElastic<dim>>(1e3, 0.3));
     problem.points().fill([](const Point<dim> &) { return true; },
                           2,

@@ -32,12 +32,7 @@ namespace
   using namespace dealii;
   using VectorType = TrilinosWrappers::MPI::Vector;
 
-  void
-  print(const std::string &key, const double value)
-  {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << key << ',' << value << std::endl;
-  }
+  using Benchmarks::print;
 
   std::string
   name(const qsmpm::ShapeFunctions s)
@@ -53,15 +48,8 @@ namespace
                    const bool                  crossing      = false,
                    const bool                  finite_strain = false)
   {
-    qsmpm::BackgroundGrid<dim>    grid(MPI_COMM_WORLD);
-    Point<dim>                    upper;
-    std::array<unsigned int, dim> subdivisions;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        upper[d]        = 1.;
-        subdivisions[d] = n;
-      }
-    grid.make_box(Point<dim>(), upper, subdivisions);
+    qsmpm::BackgroundGrid<dim> grid(MPI_COMM_WORLD);
+    Benchmarks::make_unit_box(grid, n);
     const qsmpm::Hencky<dim> model(1e3, 0.3);
     qsmpm::Formulation       formulation;
     formulation.shape_functions = shape;

@@ -34,12 +34,7 @@ namespace
   using namespace dealii;
   using VectorType = TrilinosWrappers::MPI::Vector;
 
-  void
-  print(const std::string &key, const double value)
-  {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << key << ',' << value << std::endl;
-  }
+  using Benchmarks::print;
 
   template <int dim>
   void
@@ -48,15 +43,8 @@ namespace
     const std::string tag  = std::to_string(dim) + "d_" + std::to_string(n);
     const MPI_Comm    comm = MPI_COMM_WORLD;
 
-    qsmpm::BackgroundGrid<dim>    grid(comm);
-    Point<dim>                    upper;
-    std::array<unsigned int, dim> subdivisions;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        upper[d]        = 1.;
-        subdivisions[d] = n;
-      }
-    grid.make_box(Point<dim>(), upper, subdivisions);
+    qsmpm::BackgroundGrid<dim> grid(comm);
+    Benchmarks::make_unit_box(grid, n);
     const qsmpm::LinearElastic<dim> model(1e3, 0.3);
 
     const double                 rss_before = Benchmarks::resident_memory();

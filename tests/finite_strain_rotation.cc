@@ -207,7 +207,7 @@ namespace
 
     // The closed-form Hencky stress of F0 (plane strain in 2D: the
     // in-plane part of the 3D formula, ln F0_zz = 0).
-    const auto [lambda, mu] = Hencky<dim>::lame_parameters("hencky", E, nu);
+    const auto [lambda, mu] = Hencky<dim>::lame_parameters(E, nu);
     SymmetricTensor<2, dim> ln_U;
     for (unsigned int d = 0; d < dim; ++d)
       ln_U[d][d] = std::log(F0[d][d]);

@@ -289,8 +289,7 @@ namespace Column
   typename SelfWeightColumn<dim>::Errors
   SelfWeightColumn<dim>::measure_errors() const
   {
-    const auto &points =
-      const_cast<QuasiStaticProblem<dim> &>(problem).points();
+    const auto  &points  = problem.points();
     const auto  &offsets = points.get_offsets();
     const double scale   = column.weight * column.height;
     double       sum = 0, volume = 0, max = 0, initial_height = 0;

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 #include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/base/tensor_functions.h>
 #include <qsmpm/base/utilities.h>
 
 namespace qsmpm
@@ -64,11 +65,7 @@ namespace qsmpm
   double
   QuasiStaticResidual<dim>::typical_increment_norm() const
   {
-    const Tensor<1, dim> h     = grid.cell_size();
-    double               h_min = h[0];
-    for (unsigned int d = 1; d < dim; ++d)
-      h_min = std::min(h_min, h[d]);
-    return h_min *
+    return grid.min_cell_size() *
            std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
   }
 
@@ -100,36 +97,6 @@ namespace qsmpm
   {
     loop<true>(du, nullptr);
   }
-
-
-
-  namespace
-  {
-    template <int dim>
-    Tensor<2, dim>
-    read_tensor(const double *data)
-    {
-      Tensor<2, dim> T;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          T[i][j] = data[i * dim + j];
-      return T;
-    }
-
-    /// The logarithmic strain 1/2 ln(F F^T), for output.
-    template <int dim>
-    SymmetricTensor<2, dim>
-    logarithmic_strain(const Tensor<2, dim> &F)
-    {
-      const auto eigen =
-        eigenvectors(symmetrize(Tensor<2, dim>(F * transpose(F))));
-      SymmetricTensor<2, dim> eps;
-      for (unsigned int a = 0; a < dim; ++a)
-        eps += (0.5 * std::log(eigen[a].first)) *
-               symmetrize(outer_product(eigen[a].second, eigen[a].second));
-      return eps;
-    }
-  } // namespace
 
 
 
@@ -197,7 +164,7 @@ namespace qsmpm
               {
                 FiniteStrainKinematics<dim> kinematics;
                 kinematics.F_old =
-                  read_tensor<dim>(data + offsets.deformation_gradient);
+                  Utils::read_tensor<dim>(data + offsets.deformation_gradient);
                 kinematics.delta_F = unit_symmetric_tensor<dim>() + grad_du;
                 kinematics.F       = kinematics.delta_F * kinematics.F_old;
                 const double det_delta_F = determinant(kinematics.delta_F);
@@ -222,15 +189,16 @@ namespace qsmpm
                     if (write_back)
                       {
                         const double J = determinant(kinematics.F);
-                        Utils::write_symmetric<dim>(logarithmic_strain(
-                                                      kinematics.F),
-                                                    data + offsets.strain);
+                        // For output: the logarithmic strain 1/2 ln b.
+                        Utils::write_symmetric<dim>(
+                          0.5 *
+                            TensorFunctions::log(
+                              TensorFunctions::left_cauchy_green(kinematics.F)),
+                          data + offsets.strain);
                         Utils::write_symmetric<dim>(tau / J,
                                                     data + offsets.stress);
-                        for (unsigned int i = 0; i < dim; ++i)
-                          for (unsigned int j = 0; j < dim; ++j)
-                            data[offsets.deformation_gradient + i * dim + j] =
-                              kinematics.F[i][j];
+                        Utils::write_tensor<dim>(
+                          kinematics.F, data + offsets.deformation_gradient);
                         data[offsets.J]      = J;
                         data[offsets.volume] = J * data[offsets.initial_volume];
                       }
@@ -257,25 +225,24 @@ namespace qsmpm
                   }
               }
 
+            // (2.25): f_int_i = -Omega_p sigma_p . grad N_i, or its
+            // finite-strain form -Omega_0 P grad_n N_i.
+            const auto add_forces = [&](const auto &stress_measure) {
+              for (unsigned int k = 0; k < stencil; ++k)
+                {
+                  const Tensor<1, dim> f = stress_measure * grad_N[k];
+                  for (unsigned int a = 0; a < dim; ++a)
+                    f_cell[nodes[k] * dim + a] -= volume * f[a];
+                }
+            };
             if (write_back)
               std::copy(state_scratch.begin(),
                         state_scratch.end(),
                         data + offsets.state);
             else if (finite_strain)
-              for (unsigned int k = 0; k < stencil; ++k)
-                {
-                  const Tensor<1, dim> f = P * grad_N[k];
-                  for (unsigned int a = 0; a < dim; ++a)
-                    f_cell[nodes[k] * dim + a] -= volume * f[a];
-                }
+              add_forces(P);
             else
-              // (2.25): f_int_i = -Omega_p sigma_p . grad N_i.
-              for (unsigned int k = 0; k < stencil; ++k)
-                {
-                  const Tensor<1, dim> f = stress * grad_N[k];
-                  for (unsigned int a = 0; a < dim; ++a)
-                    f_cell[nodes[k] * dim + a] -= volume * f[a];
-                }
+              add_forces(stress);
           }
 
         if (!write_back)

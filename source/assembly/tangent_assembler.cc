@@ -118,10 +118,8 @@ namespace qsmpm
                 // G = grad_n d(du), on the initial volume (see
                 // QuasiStaticResidual).
                 FiniteStrainKinematics<dim> kinematics;
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    kinematics.F_old[i][j] =
-                      data[offsets.deformation_gradient + i * dim + j];
+                kinematics.F_old =
+                  Utils::read_tensor<dim>(data + offsets.deformation_gradient);
                 kinematics.delta_F = unit_symmetric_tensor<dim>();
                 kinematics.F       = kinematics.F_old;
                 C                  = model.kirchhoff_tangent(state, kinematics);

@@ -6,6 +6,20 @@ namespace qsmpm
   namespace TensorFunctions
   {
     template <int dim>
+    SymmetricTensor<2, dim>
+    left_cauchy_green(const Tensor<2, dim> &F)
+    {
+      SymmetricTensor<2, dim> b;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            b[i][j] += F[i][k] * F[j][k];
+      return b;
+    }
+
+
+
+    template <int dim>
     std::array<std::pair<double, Tensor<1, dim>>, dim>
     eigen_decomposition(const SymmetricTensor<2, dim> &b)
     {
@@ -121,6 +135,10 @@ namespace qsmpm
 
 
 
+    template SymmetricTensor<2, 2>
+    left_cauchy_green<2>(const Tensor<2, 2> &);
+    template SymmetricTensor<2, 3>
+    left_cauchy_green<3>(const Tensor<2, 3> &);
     template std::array<std::pair<double, Tensor<1, 2>>, 2>
     eigen_decomposition<2>(const SymmetricTensor<2, 2> &);
     template std::array<std::pair<double, Tensor<1, 3>>, 3>

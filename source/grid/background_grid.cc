@@ -289,6 +289,19 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  BackgroundGrid<dim>::min_cell_size() const
+  {
+    const Tensor<1, dim> h     = cell_size();
+    double               h_min = h[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      h_min = std::min(h_min, h[d]);
+    return h_min;
+  }
+
+
+
+  template <int dim>
   void
   BackgroundGrid<dim>::node_block_dofs(
     const typename DoFHandler<dim>::active_cell_iterator &cell,

@@ -8,7 +8,7 @@ namespace qsmpm
 {
   template <int dim>
   Hencky<dim>::Hencky(const double young_modulus, const double poisson_ratio)
-    : IsotropicHyperelastic<dim>("hencky", young_modulus, poisson_ratio)
+    : IsotropicHyperelastic<dim>(young_modulus, poisson_ratio)
   {
   }
 
@@ -41,7 +41,8 @@ namespace qsmpm
         return;
       }
     tau = this->stiffness() *
-          (0.5 * TensorFunctions::log(this->left_cauchy_green(kinematics.F)));
+          (0.5 * TensorFunctions::log(
+                   TensorFunctions::left_cauchy_green(kinematics.F)));
   }
 
 
@@ -52,7 +53,8 @@ namespace qsmpm
     const PointState<dim> &,
     const FiniteStrainKinematics<dim> &kinematics) const
   {
-    const SymmetricTensor<2, dim> b = this->left_cauchy_green(kinematics.F);
+    const SymmetricTensor<2, dim> b =
+      TensorFunctions::left_cauchy_green(kinematics.F);
     // M = D : d(ln b)/d b; d tau = 1/2 M : (dl b + b dl^T) and, M being
     // minor-symmetric, d tau_ij / d l_kl = sum_q M_ijkq b_ql.
     const SymmetricTensor<4, dim> M =

@@ -3,20 +3,29 @@
 namespace qsmpm
 {
   template <int dim>
+  std::pair<double, double>
+  LinearElastic<dim>::lame_parameters(const double young_modulus,
+                                      const double poisson_ratio)
+  {
+    AssertThrow(young_modulus > 0,
+                ExcMessage("Young's modulus must be positive."));
+    AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
+                ExcMessage("Poisson's ratio must lie in (-1, 0.5)."));
+    const double mu     = young_modulus / (2. * (1. + poisson_ratio));
+    const double lambda = young_modulus * poisson_ratio /
+                          ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    return {lambda, mu};
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   LinearElastic<dim>::isotropic_stiffness(const double young_modulus,
                                           const double poisson_ratio,
                                           const bool   plane_stress)
   {
-    AssertThrow(young_modulus > 0,
-                ExcMessage(
-                  "linear elastic: Young's modulus must be positive."));
-    AssertThrow(poisson_ratio > -1 && poisson_ratio < 0.5,
-                ExcMessage("linear elastic: Poisson's ratio must lie in "
-                           "(-1, 0.5)."));
-    const double mu     = young_modulus / (2. * (1. + poisson_ratio));
-    double       lambda = young_modulus * poisson_ratio /
-                    ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    auto [lambda, mu] = lame_parameters(young_modulus, poisson_ratio);
     // Plane stress: eliminating eps_zz from sigma_zz = 0 replaces lambda by
     // 2 lambda mu / (lambda + 2 mu).
     if (dim == 2 && plane_stress)
@@ -50,7 +59,7 @@ namespace qsmpm
 
   template <int dim>
   void
-  LinearElastic<dim>::declare_parameters(ParameterHandler &prm)
+  LinearElastic<dim>::declare_isotropic_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Young's modulus",
                       "1.0",
@@ -60,6 +69,15 @@ namespace qsmpm
                       "0.3",
                       Patterns::Double(-1., 0.5),
                       "Poisson's ratio nu, in (-1, 0.5).");
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    declare_isotropic_parameters(prm);
     prm.declare_entry("Plane stress",
                       "false",
                       Patterns::Bool(),

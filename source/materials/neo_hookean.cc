@@ -1,5 +1,6 @@
 #include <cmath>
 #include <limits>
+#include <qsmpm/base/tensor_functions.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/materials/neo_hookean.h>
 
@@ -8,7 +9,7 @@ namespace qsmpm
   template <int dim>
   NeoHookean<dim>::NeoHookean(const double young_modulus,
                               const double poisson_ratio)
-    : IsotropicHyperelastic<dim>("neo-Hookean", young_modulus, poisson_ratio)
+    : IsotropicHyperelastic<dim>(young_modulus, poisson_ratio)
   {
   }
 
@@ -38,7 +39,7 @@ namespace qsmpm
         tau = std::numeric_limits<double>::quiet_NaN() * I;
         return;
       }
-    tau = this->mu * (this->left_cauchy_green(kinematics.F) - I) +
+    tau = this->mu * (TensorFunctions::left_cauchy_green(kinematics.F) - I) +
           this->lambda * std::log(J) * I;
   }
 
@@ -50,8 +51,9 @@ namespace qsmpm
     const PointState<dim> &,
     const FiniteStrainKinematics<dim> &kinematics) const
   {
-    const SymmetricTensor<2, dim> b = this->left_cauchy_green(kinematics.F);
-    Tensor<4, dim>                c;
+    const SymmetricTensor<2, dim> b =
+      TensorFunctions::left_cauchy_green(kinematics.F);
+    Tensor<4, dim> c;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
         {

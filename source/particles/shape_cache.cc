@@ -190,13 +190,11 @@ namespace qsmpm
     constexpr unsigned int n_block = BackgroundGrid<dim>::n_block_nodes;
     const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
     grid.node_block_dofs(dof_cell, block_dofs);
-    const Tensor<1, dim> h     = grid.cell_size();
-    double               h_min = h[0];
-    for (unsigned int d = 1; d < dim; ++d)
-      h_min = std::min(h_min, h[d]);
-    const Point<dim>   corner      = cell->vertex(0);
-    const auto        &offsets     = points.get_offsets();
-    const Formulation &formulation = points.get_formulation();
+    const Tensor<1, dim> h           = grid.cell_size();
+    const double         h_min       = grid.min_cell_size();
+    const Point<dim>     corner      = cell->vertex(0);
+    const auto          &offsets     = points.get_offsets();
+    const Formulation   &formulation = points.get_formulation();
     const bool stretch = formulation.shape_functions == ShapeFunctions::cpgimp;
 
     // Block node of each stencil entry; compacted after all points are seen.
@@ -217,11 +215,8 @@ namespace qsmpm
             Tensor<1, dim> U;
             if (formulation.finite_strain())
               {
-                Tensor<2, dim> F;
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    F[i][j] = data[offsets.deformation_gradient + i * dim + j];
-                U = stretch_diagonal(F);
+                U = stretch_diagonal(
+                  Utils::read_tensor<dim>(data + offsets.deformation_gradient));
               }
             else
               {

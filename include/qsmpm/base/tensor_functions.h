@@ -40,6 +40,11 @@ namespace qsmpm
    */
   namespace TensorFunctions
   {
+    /// The left Cauchy-Green tensor b = F F^T.
+    template <int dim>
+    SymmetricTensor<2, dim>
+    left_cauchy_green(const Tensor<2, dim> &F);
+
     /**
      * Eigenvalues and unit eigenvectors of a symmetric tensor, eigenvalues
      * in descending order (as returned by dealii::eigenvectors()).

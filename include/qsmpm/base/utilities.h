@@ -70,6 +70,28 @@ namespace qsmpm
         data[i] = t.access_raw_entry(i);
     }
 
+    /// Read a dim x dim tensor stored row by row from @p data.
+    template <int dim>
+    inline Tensor<2, dim>
+    read_tensor(const double *data)
+    {
+      Tensor<2, dim> t;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          t[i][j] = data[i * dim + j];
+      return t;
+    }
+
+    /// Write a dim x dim tensor to @p data row by row.
+    template <int dim>
+    inline void
+    write_tensor(const Tensor<2, dim> &t, double *data)
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          data[i * dim + j] = t[i][j];
+    }
+
     /// Names of the unrolled components ("xx", "yy", "xy" in 2D).
     template <int dim>
     std::vector<std::string>

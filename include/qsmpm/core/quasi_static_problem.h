@@ -97,6 +97,8 @@ namespace qsmpm
     /// The material points (after set_model()).
     MaterialPointSet<dim> &
     points();
+    const MaterialPointSet<dim> &
+    points() const;
 
     BoundaryConditions<dim> &
     boundary_conditions();

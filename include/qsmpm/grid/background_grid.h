@@ -147,6 +147,10 @@ namespace qsmpm
     Tensor<1, dim>
     cell_size() const;
 
+    /// The smallest of the cell's extents.
+    double
+    min_cell_size() const;
+
   private:
     MPI_Comm                                  communicator;
     parallel::distributed::Triangulation<dim> triangulation;

@@ -2,8 +2,6 @@
 #define qsmpm_materials_isotropic_hyperelastic_h
 
 #include <qsmpm/materials/linear_elastic.h>
-#include <string>
-#include <utility>
 
 namespace qsmpm
 {
@@ -20,33 +18,17 @@ namespace qsmpm
   class IsotropicHyperelastic : public LinearElastic<dim>
   {
   public:
-    /// @p model_name appears in messages about bad constants.
-    IsotropicHyperelastic(const std::string &model_name,
-                          const double       young_modulus,
-                          const double       poisson_ratio);
+    IsotropicHyperelastic(const double young_modulus,
+                          const double poisson_ratio);
 
     /// "Young's modulus" and "Poisson's ratio" (no plane stress).
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// The Lame constants (lambda, mu) of E and nu (3D formulas, which are
-    /// also those of plane strain), with a message naming @p model_name if
-    /// the constants are not admissible.
-    static std::pair<double, double>
-    lame_parameters(const std::string &model_name,
-                    const double       young_modulus,
-                    const double       poisson_ratio);
-
     bool
     supports_finite_strain() const override;
 
-
-
   protected:
-    /// b = F F^T.
-    static SymmetricTensor<2, dim>
-    left_cauchy_green(const Tensor<2, dim> &F);
-
     const double lambda;
     const double mu;
   };

@@ -2,6 +2,7 @@
 #define qsmpm_materials_linear_elastic_h
 
 #include <qsmpm/materials/constitutive_model.h>
+#include <utility>
 
 namespace qsmpm
 {
@@ -45,6 +46,18 @@ namespace qsmpm
     /// The elastic stiffness.
     const SymmetricTensor<4, dim> &
     stiffness() const;
+
+    /**
+     * The Lame constants (lambda, mu) of E and nu (3D formulas, which are
+     * also those of plane strain); throws if E <= 0 or nu is outside
+     * (-1, 0.5).
+     */
+    static std::pair<double, double>
+    lame_parameters(const double young_modulus, const double poisson_ratio);
+
+    /// The entries "Young's modulus" and "Poisson's ratio".
+    static void
+    declare_isotropic_parameters(ParameterHandler &prm);
 
     /**
      * The isotropic stiffness for E, nu; in 2D plane strain or, with

@@ -50,8 +50,10 @@ namespace qsmpm
       , du(du)
       , R_du(R_du)
       , sqrt_eps_prec(sqrt_eps_prec)
-      , du_norm(scale > 0. ? scale : du.l2_norm())
-      , increment_scale(du_norm > 0. ? du_norm : op.typical_increment_norm())
+      , increment_scale([&]() {
+        const double d = scale > 0. ? scale : du.l2_norm();
+        return d > 0. ? d : op.typical_increment_norm();
+      }())
     {
       Assert(increment_scale > 0., ExcInternalError());
     }
@@ -88,7 +90,6 @@ namespace qsmpm
     const VectorType    &du;
     const VectorType    &R_du;
     const double         sqrt_eps_prec;
-    const double         du_norm;
     const double         increment_scale;
     mutable VectorType   perturbed;
     mutable unsigned int n_products = 0;
