@@ -110,6 +110,7 @@ namespace qsmpm
     const auto            &offsets  = points.get_offsets();
     const unsigned int     n_state  = state_scratch.size();
     const bool finite_strain        = points.get_formulation().finite_strain();
+    const bool fbar                 = points.get_formulation().fbar();
 
     du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
                                         *importer,
@@ -131,20 +132,35 @@ namespace qsmpm
             f_cell[i]  = 0.;
           }
 
-        const auto &range = cache.cell(c);
+        // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e. in
+        // the configuration at the start of the step; for all points of the
+        // cell first, since F-bar needs the cell's mean volume change.
+        const auto        &range    = cache.cell(c);
+        const unsigned int n_points = range.end_point - range.first_point;
+        if (grad_du_scratch.size() < n_points)
+          grad_du_scratch.resize(n_points);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const Tensor<1, dim> *grad_N  = cache.gradients(p);
+            const unsigned int    stencil = cache.stencil_size(p);
+            const unsigned short *nodes   = cache.nodes(p);
+            Tensor<2, dim>       &grad_du = grad_du_scratch[p - range.first_point];
+            grad_du                       = 0.;
+            for (unsigned int k = 0; k < stencil; ++k)
+              for (unsigned int a = 0; a < dim; ++a)
+                grad_du[a] += du_cell[nodes[k] * dim + a] * grad_N[k];
+          }
+        const double mean_volume_change =
+          fbar ? cell_mean_volume_change(range, finite_strain) : 0.;
+
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
             double               *data    = cache.properties(p);
-
-            // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e.
-            // in the configuration at the start of the step.
-            Tensor<2, dim> grad_du;
-            for (unsigned int k = 0; k < stencil; ++k)
-              for (unsigned int a = 0; a < dim; ++a)
-                grad_du[a] += du_cell[nodes[k] * dim + a] * grad_N[k];
+            const Tensor<2, dim> &grad_du =
+              grad_du_scratch[p - range.first_point];
 
             const PointState<dim> old{
               Utils::read_symmetric<dim>(data + offsets.strain),
@@ -165,10 +181,18 @@ namespace qsmpm
                 FiniteStrainKinematics<dim> kinematics;
                 kinematics.F_old =
                   Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-                kinematics.delta_F = unit_symmetric_tensor<dim>() + grad_du;
-                kinematics.F       = kinematics.delta_F * kinematics.F_old;
-                const double det_delta_F = determinant(kinematics.delta_F);
-                if (!(det_delta_F > 0.))
+                const Tensor<2, dim> delta_F =
+                  unit_symmetric_tensor<dim>() + grad_du;
+                const double det_delta_F = determinant(delta_F);
+                // F-bar: the model sees the cell's mean volume change.
+                kinematics.delta_F =
+                  fbar ? std::pow(mean_volume_change / det_delta_F, 1. / dim) *
+                           delta_F :
+                         delta_F;
+                kinematics.F = kinematics.delta_F * kinematics.F_old;
+                const bool admissible =
+                  det_delta_F > 0. && (!fbar || mean_volume_change > 0.);
+                if (!admissible)
                   {
                     // An inverted point: no admissible residual. Newton's
                     // line search backs off from non-finite norms.
@@ -184,8 +208,7 @@ namespace qsmpm
                     // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T}
                     // grad_n N.
                     volume = data[offsets.initial_volume];
-                    P      = Tensor<2, dim>(tau) *
-                        transpose(invert(kinematics.delta_F));
+                    P      = Tensor<2, dim>(tau) * transpose(invert(delta_F));
                     if (write_back)
                       {
                         const double J = determinant(kinematics.F);
@@ -206,7 +229,10 @@ namespace qsmpm
               }
             else
               {
-                const SymmetricTensor<2, dim> d_eps = symmetrize(grad_du);
+                SymmetricTensor<2, dim> d_eps = symmetrize(grad_du);
+                if (fbar)
+                  d_eps += (mean_volume_change - trace(d_eps)) / dim *
+                           unit_symmetric_tensor<dim>();
 
                 // (2.20)-(2.21): trial stress from the committed state.
                 model.update_stress(old, d_eps, stress, new_state);
@@ -259,6 +285,30 @@ namespace qsmpm
         AssertThrow(ierr == 0, ExcTrilinosError(ierr));
         *R += f_ext;
       }
+  }
+
+
+
+  template <int dim>
+  double
+  QuasiStaticResidual<dim>::cell_mean_volume_change(
+    const typename ShapeCache<dim>::CellRange &range,
+    const bool                                 finite_strain) const
+  {
+    // Weighted with the volumes at the start of the step: the mean is then
+    // the volume change of the cell's material as a whole.
+    const unsigned int volume = points.get_offsets().volume;
+    double             sum = 0., total_volume = 0.;
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const double          omega   = cache.properties(p)[volume];
+        const Tensor<2, dim> &grad_du = grad_du_scratch[p - range.first_point];
+        sum += omega * (finite_strain ?
+                          determinant(unit_symmetric_tensor<dim>() + grad_du) :
+                          trace(grad_du));
+        total_volume += omega;
+      }
+    return sum / total_volume;
   }
 
 

@@ -25,6 +25,17 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<4, dim>
+  ConstitutiveModel<dim>::consistent_tangent(
+    const PointState<dim> &old,
+    const SymmetricTensor<2, dim> &) const
+  {
+    return tangent(old);
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::supports_finite_strain() const
   {

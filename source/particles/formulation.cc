@@ -28,4 +28,17 @@ namespace qsmpm
                                    ">: use linear, uGIMP or cpGIMP."));
     return ShapeFunctions::cpgimp;
   }
+
+
+
+  VolumetricTreatment
+  parse_volumetric_treatment(const std::string &name)
+  {
+    if (name == "none")
+      return VolumetricTreatment::none;
+    AssertThrow(name == "F-bar",
+                dealii::ExcMessage("Unknown volumetric locking treatment <" +
+                                   name + ">: use none or F-bar."));
+    return VolumetricTreatment::fbar;
+  }
 } // namespace qsmpm

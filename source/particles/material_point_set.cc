@@ -50,7 +50,7 @@ namespace qsmpm
                         "hyperelastic (or finite-strain) model, internal "
                         "force on the current volume det(F) Omega_0. Needs "
                         "a model that supports finite strain (hencky, "
-                        "neo-Hookean).");
+                        "neo-Hookean, von Mises, Drucker-Prager).");
       prm.declare_entry("Shape functions",
                         "linear",
                         Patterns::Selection("linear|uGIMP|cpGIMP"),
@@ -65,6 +65,17 @@ namespace qsmpm
                         "the point (l_d = l_d^0 U_dd, F = R U). GIMP needs "
                         "a uniform grid; a domain is at most half a cell "
                         "wide in each direction.");
+      prm.declare_entry("Volumetric locking",
+                        "none",
+                        Patterns::Selection("none|F-bar"),
+                        "none: every point uses its own kinematics (the "
+                        "paper). F-bar: the volume change of each point is "
+                        "replaced by the volume-weighted mean over the "
+                        "points of its cell (Coombs et al. 2018; at small "
+                        "strain the same on tr d eps), which removes the "
+                        "volumetric locking of plastic flow and nearly "
+                        "incompressible materials on bilinear/trilinear "
+                        "cells.");
     }
     prm.leave_subsection();
   }
@@ -84,6 +95,8 @@ namespace qsmpm
       formulation.kinematics = parse_kinematics(prm.get("Kinematics"));
       formulation.shape_functions =
         parse_shape_functions(prm.get("Shape functions"));
+      formulation.volumetric =
+        parse_volumetric_treatment(prm.get("Volumetric locking"));
       AssertThrow(update_volumes || !formulation.finite_strain(),
                   ExcMessage("Material points: <Update volumes = false> "
                              "(a geometrically linear model) contradicts "
@@ -118,7 +131,7 @@ namespace qsmpm
                            "model <" +
                            model.name() +
                            "> is small-strain only. Finite-strain models: "
-                           "hencky, neo-Hookean."));
+                           "hencky, neo-Hookean, von Mises, Drucker-Prager."));
     using Kind               = PropertyLayout::Kind;
     const unsigned int n_sym = Utils::n_symmetric_components<dim>;
     offsets.initial_volume   = layout.add("initial_volume", 1, Kind::scalar);

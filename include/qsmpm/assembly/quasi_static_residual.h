@@ -36,6 +36,12 @@ namespace qsmpm
    * (det Delta F <= 0) makes the residual non-finite, which Newton's line
    * search backs off from.
    *
+   * With VolumetricTreatment::fbar the model sees, at every point, the
+   * kinematics with the volume change replaced by the volume-weighted mean
+   * over the points of its cell (F-bar, Coombs et al. 2018; at small strain
+   * d eps + (theta_bar - tr d eps)/dim I), while the forces are integrated
+   * with the point's own Delta F (the original, non-symmetric F-bar).
+   *
    * The sums over i run over each point's stencil in the ShapeCache: the
    * 2^dim vertices of its cell (linear) or 3^dim nodes (GIMP).
    *
@@ -101,6 +107,15 @@ namespace qsmpm
     loop(const TrilinosWrappers::MPI::Vector &du,
          TrilinosWrappers::MPI::Vector       *R) const;
 
+    /**
+     * F-bar: the volume-weighted mean over the points of a cell of the
+     * volume change of the step, Delta J (finite strain) or tr d eps (small
+     * strain), from the gradients in grad_du_scratch.
+     */
+    double
+    cell_mean_volume_change(const typename ShapeCache<dim>::CellRange &range,
+                            const bool finite_strain) const;
+
     const BackgroundGrid<dim>    &grid;
     const MaterialPointSet<dim>  &points;
     const ShapeCache<dim>        &cache;
@@ -112,6 +127,8 @@ namespace qsmpm
     mutable TrilinosWrappers::MPI::Vector  du_ghosted;
     mutable std::unique_ptr<Epetra_Vector> local_force;
     mutable std::vector<double>            state_scratch;
+    /// grad du at the points of the cell being evaluated.
+    mutable std::vector<Tensor<2, dim>> grad_du_scratch;
     /// Communication plans owned -> relevant and back, built once: deal.II's
     /// vector assignment between layouts would rebuild one per evaluation.
     std::unique_ptr<Epetra_Import> importer;

@@ -112,6 +112,16 @@ namespace qsmpm
     tangent(const PointState<dim> &old) const = 0;
 
     /**
+     * The consistent (algorithmic) tangent d(sigma)/d(strain_increment) of
+     * update_stress() at the trial state reached with @p strain_increment
+     * from @p old. Path-dependent models (plasticity) override it; the
+     * default is tangent(old), exact for linear models.
+     */
+    virtual SymmetricTensor<4, dim>
+    consistent_tangent(const PointState<dim>         &old,
+                       const SymmetricTensor<2, dim> &strain_increment) const;
+
+    /**
      * Whether the model implements the finite-strain interface below
      * (update_kirchhoff_stress() and kirchhoff_tangent()).
      */

@@ -49,11 +49,50 @@ namespace qsmpm
     cpgimp
   };
 
+  /**
+   * How the volumetric part of the kinematics is treated. Plastic flow
+   * (von Mises, Drucker-Prager without dilatancy) and nearly incompressible
+   * elasticity constrain the volume change at every material point;
+   * bilinear/trilinear grid functions cannot satisfy as many constraints as
+   * a cell has points and the response locks (limit loads far too high).
+   */
+  enum class VolumetricTreatment
+  {
+    /// Every point uses its own kinematics (the paper).
+    none,
+    /**
+     * F-bar with the cell as the patch (Coombs, Charlton, Cortis, Augarde
+     * 2018, "Overcoming volumetric locking in material point methods";
+     * de Souza Neto et al. 1996): the volume change of each point is
+     * replaced by the volume-weighted average over the points of its cell,
+     *
+     *   Delta F_bar_p = (Delta J_bar / Delta J_p)^(1/dim) Delta F_p,
+     *   Delta J_bar = sum_q Omega_q Delta J_q / sum_q Omega_q,
+     *
+     * (q over the cell's points, Omega_q the volume at the start of the
+     * step), which the model sees and the point stores (F <- Delta F_bar F,
+     * volume det(F_bar) Omega_0). At small strain the same idea on the
+     * increment: d eps_bar = d eps + (theta_bar - tr d eps)/dim I, theta_bar
+     * the cell's volume-weighted mean of tr d eps. The internal force is
+     * integrated with the standard gradients (the original F-bar), so the
+     * Jacobian is not symmetric, which GMRES does not mind. In 2D (plane
+     * strain) the exponent is 1/2: only the in-plane stretches carry volume.
+     */
+    fbar
+  };
+
   /// The discretization choices that change what a point carries.
   struct Formulation
   {
-    Kinematics     kinematics      = Kinematics::small_strain;
-    ShapeFunctions shape_functions = ShapeFunctions::linear;
+    Kinematics          kinematics      = Kinematics::small_strain;
+    ShapeFunctions      shape_functions = ShapeFunctions::linear;
+    VolumetricTreatment volumetric      = VolumetricTreatment::none;
+
+    bool
+    fbar() const
+    {
+      return volumetric == VolumetricTreatment::fbar;
+    }
 
     bool
     finite_strain() const
@@ -75,6 +114,10 @@ namespace qsmpm
   /// "linear", "uGIMP" or "cpGIMP".
   ShapeFunctions
   parse_shape_functions(const std::string &name);
+
+  /// "none" or "F-bar".
+  VolumetricTreatment
+  parse_volumetric_treatment(const std::string &name);
 } // namespace qsmpm
 
 #endif

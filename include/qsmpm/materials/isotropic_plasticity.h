@@ -1,0 +1,241 @@
+#ifndef qsmpm_materials_isotropic_plasticity_h
+#define qsmpm_materials_isotropic_plasticity_h
+
+#include <qsmpm/materials/constitutive_model.h>
+
+namespace qsmpm
+{
+  /**
+   * What the isotropic elastoplastic models (VonMises, DruckerPrager) share:
+   * isotropic linear elasticity (E, nu) between the stress and the elastic
+   * strain, the per-point state, the small-strain and the finite-strain
+   * drivers of a three-dimensional return mapping, and the tangents built
+   * from it. A derived class implements the return mapping of its yield
+   * function in 3D (return_map()), its continuum elastoplastic tangent and
+   * its yield function.
+   *
+   * <h3>Three dimensions inside</h3>
+   * All computations are three-dimensional. In 2D the model is plane
+   * strain: the strain increment is embedded with eps_zz = eps_xz = eps_yz
+   * = 0 (finite strain: Delta F_zz = 1), while the out-of-plane elastic and
+   * plastic strains and the stress sigma_zz develop freely and are kept in
+   * the 3D state; the in-plane block of the stress and of the tangents is
+   * returned. The in-plane block of the 3D consistent tangent is exact for
+   * plane strain since d eps_zz = 0 (d l_zz = 0).
+   *
+   * <h3>State fields</h3>
+   * - "elastic_strain" (6 components): the elastic strain eps_e as a
+   *   SymmetricTensor<2,3> in deal.II's unrolled order (xx, yy, zz, xy, xz,
+   *   yz; Utils::read_symmetric<3>). Small strain: the stress is
+   *   sigma = D : eps_e. Finite strain: eps_e = 1/2 ln b_e is the
+   *   logarithmic elastic strain and the Kirchhoff stress is tau = D : eps_e
+   *   (b_e = exp(2 eps_e) is never stored).
+   * - "equivalent_plastic_strain" (1): the hardening variable alpha of the
+   *   derived model (see there); zero initially.
+   * - "plastic_increment" (1): the increment of alpha in the step that
+   *   produced this state, zero if the step was elastic. In output it shows
+   *   where the material is yielding; tangent() uses it to choose between
+   *   the elastic and the continuum elastoplastic tangent.
+   *
+   * All fields are zero initially (stress-free, virgin material).
+   *
+   * <h3>Small strain</h3>
+   * update_stress(): eps_e_trial = eps_e_old + d eps, then the return
+   * mapping gives the stress, the new eps_e and alpha (backward Euler,
+   * de Souza Neto, Peric & Owen, Computational Methods for Plasticity,
+   * Wiley 2008, ch. 7-8). The committed stress of the point is not used:
+   * the stress is always D : eps_e of the state. consistent_tangent() is
+   * the algorithmic tangent d sigma / d(d eps) of the same return mapping.
+   *
+   * tangent() (called at the committed state, with no increment, to build
+   * the preconditioner at the start of a step) is the elastic D. At a zero
+   * increment the algorithmic tangent of a point on the yield surface is
+   * only one-sided; the continuum elastoplastic tangent (continuum_tangent())
+   * was tried and measured worse as a preconditioner on the footing with
+   * F-bar (GMRES up to 1000 iterations, failed Newton steps), because the
+   * assembled matrix lacks the F-bar linearization and is nearly singular
+   * in the deviatoric and locked in the volumetric directions. The same
+   * rule applies to consistent_tangent() with a zero increment.
+   *
+   * <h3>Finite strain</h3>
+   * The multiplicative elastoplasticity of de Souza Neto et al., ch. 14,
+   * with the exponential map: with the increment f = Delta F (3x3, f_zz = 1
+   * in 2D),
+   *
+   *   b_e_old = exp(2 eps_e_old),   b_e_trial = f b_e_old f^T,
+   *   eps_e_trial = 1/2 ln b_e_trial,
+   *
+   * and the small-strain return mapping applied to eps_e_trial gives the
+   * Kirchhoff stress tau = D : eps_e and the new eps_e. For isotropic
+   * models this is exactly objective, and a plastically incompressible flow
+   * (von Mises) keeps det b_e = J^2. The consistent tangent (see
+   * ConstitutiveModel::kirchhoff_tangent()): with d l = d(Delta F) Delta
+   * F^{-1}, d b_e_trial = d l b_e_trial + b_e_trial d l^T and
+   *
+   *   d tau = D_alg : 1/2 L : d b_e_trial,
+   *   c_ijkl = sum_q (D_alg : L)_ijkq (b_e_trial)_ql,
+   *
+   * with L = d ln b / d b at b_e_trial (TensorFunctions::log_derivative())
+   * and D_alg the algorithmic tangent of the return mapping. At Delta F = I
+   * (the tangent at the start of a step) the rule of tangent() applies:
+   * D_alg is replaced by the elastic D. For det Delta F <= 0 or det F <= 0 (or not finite) tau is
+   * NaN, which the Newton line search treats as a failed trial.
+   *
+   * Parameters (in the derived model's subsection): "Young's modulus",
+   * "Poisson's ratio", and the model's own.
+   */
+  template <int dim>
+  class IsotropicPlasticity : public ConstitutiveModel<dim>
+  {
+  public:
+    /// The result of a 3D return mapping.
+    struct Return
+    {
+      /// Stress D : elastic_strain (Cauchy, or Kirchhoff at finite strain).
+      SymmetricTensor<2, 3> stress;
+      /// The elastic strain after the return.
+      SymmetricTensor<2, 3> elastic_strain;
+      /// The hardening variable after the return.
+      double alpha = 0.;
+      /// alpha - alpha_old (zero for an elastic step).
+      double increment = 0.;
+      /// d stress / d trial_elastic_strain (if requested).
+      SymmetricTensor<4, 3> tangent;
+    };
+
+    /// Names of the state fields.
+    static constexpr const char *elastic_strain_name = "elastic_strain";
+    static constexpr const char *alpha_name     = "equivalent_plastic_strain";
+    static constexpr const char *increment_name = "plastic_increment";
+
+    IsotropicPlasticity(const double young_modulus, const double poisson_ratio);
+
+    std::vector<StateField>
+    state_fields() const override;
+
+    void
+    initialize_state(const Point<dim> &x,
+                     ArrayView<double> state) const override;
+
+    void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const override;
+
+    /// The elastic D (the preconditioner's tangent; see the class description).
+    SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const override;
+
+    /// In-plane block of the algorithmic tangent of update_stress().
+    SymmetricTensor<4, dim>
+    consistent_tangent(
+      const PointState<dim>         &old,
+      const SymmetricTensor<2, dim> &strain_increment) const override;
+
+    bool
+    supports_finite_strain() const override;
+
+    void
+    update_kirchhoff_stress(const PointState<dim>             &old,
+                            const FiniteStrainKinematics<dim> &kinematics,
+                            SymmetricTensor<2, dim>           &tau,
+                            ArrayView<double> new_state) const override;
+
+    Tensor<4, dim>
+    kirchhoff_tangent(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const override;
+
+    /**
+     * The 3D return mapping at small strain: from the trial elastic strain
+     * and the committed hardening variable to the stress, the new elastic
+     * strain and alpha, and (if @p want_tangent) the algorithmic tangent
+     * d stress / d trial_elastic_strain.
+     */
+    virtual void
+    return_map(const SymmetricTensor<2, 3> &trial_elastic_strain,
+               const double                 alpha_old,
+               const bool                   want_tangent,
+               Return                      &r) const = 0;
+
+    /**
+     * The continuum elastoplastic tangent at a stress on the yield surface
+     * (plastic loading), for the hardening variable @p alpha.
+     */
+    virtual SymmetricTensor<4, 3>
+    continuum_tangent(const SymmetricTensor<2, 3> &stress,
+                      const double                 alpha) const = 0;
+
+    /// The yield function Phi(stress, alpha) (<= 0: admissible).
+    virtual double
+    yield_function(const SymmetricTensor<2, 3> &stress,
+                   const double                 alpha) const = 0;
+
+    /// The 3D stress D : eps_e of a point from its state (Kirchhoff at
+    /// finite strain). In 2D this includes sigma_zz.
+    SymmetricTensor<2, 3>
+    stress_3d(const ArrayView<const double> &state) const;
+
+    /// The elastic strain of a point from its state.
+    static SymmetricTensor<2, 3>
+    elastic_strain(const ArrayView<const double> &state);
+
+    /// The hardening variable alpha of a point from its state.
+    static double
+    equivalent_plastic_strain(const ArrayView<const double> &state);
+
+    /// The plastic increment of the last step of a point from its state.
+    static double
+    plastic_increment(const ArrayView<const double> &state);
+
+    /// The 3D isotropic elasticity tensor D = lambda 1 (x) 1 + 2 mu I.
+    const SymmetricTensor<4, 3> &
+    elastic_stiffness() const;
+
+    /// Bulk modulus K = lambda + 2/3 mu.
+    double
+    bulk_modulus() const;
+
+    /// Shear modulus G = mu.
+    double
+    shear_modulus() const;
+
+    /// A dim-tensor as a 3D tensor (zeros out of plane in 2D).
+    static SymmetricTensor<2, 3>
+    embed(const SymmetricTensor<2, dim> &t);
+
+    /// A dim x dim tensor as 3x3 with @p zz on the out-of-plane diagonal.
+    static Tensor<2, 3>
+    embed(const Tensor<2, dim> &t, const double zz);
+
+    /// The in-plane block of a 3D tensor.
+    static SymmetricTensor<2, dim>
+    extract(const SymmetricTensor<2, 3> &t);
+
+    /// The in-plane block of a 3D fourth-order tensor.
+    static SymmetricTensor<4, dim>
+    extract(const SymmetricTensor<4, 3> &t);
+
+    /// The in-plane block of a 3D fourth-order tensor.
+    static Tensor<4, dim>
+    extract(const Tensor<4, 3> &t);
+
+  protected:
+    /// "Young's modulus" and "Poisson's ratio".
+    static void
+    declare_elastic_parameters(ParameterHandler &prm);
+
+    const double                lambda;
+    const double                mu;
+    const double                K;
+    const SymmetricTensor<4, 3> D;
+
+  private:
+    /// The tangent used at the committed state: see the class description.
+    SymmetricTensor<4, 3>
+    committed_tangent(const ArrayView<const double> &state) const;
+  };
+} // namespace qsmpm
+
+#endif

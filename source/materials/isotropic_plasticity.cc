@@ -1,0 +1,393 @@
+#include <cmath>
+#include <limits>
+#include <qsmpm/base/tensor_functions.h>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/materials/isotropic_plasticity.h>
+#include <qsmpm/materials/linear_elastic.h>
+
+namespace qsmpm
+{
+  namespace
+  {
+    // Offsets in the state: elastic strain (6), alpha, increment.
+    constexpr unsigned int eps_offset       = 0;
+    constexpr unsigned int alpha_offset     = 6;
+    constexpr unsigned int increment_offset = 7;
+    constexpr unsigned int n_state          = 8;
+
+    /// exp(a) of a symmetric tensor, in its eigenbasis.
+    SymmetricTensor<2, 3>
+    tensor_exp(const SymmetricTensor<2, 3> &a)
+    {
+      const auto            eig = TensorFunctions::eigen_decomposition(a);
+      SymmetricTensor<2, 3> result;
+      for (const auto &e : eig)
+        result +=
+          std::exp(e.first) * symmetrize(outer_product(e.second, e.second));
+      return result;
+    }
+
+    /// f b f^T for a symmetric b.
+    SymmetricTensor<2, 3>
+    push_forward(const Tensor<2, 3> &f, const SymmetricTensor<2, 3> &b)
+    {
+      return symmetrize(
+        Tensor<2, 3>(f * static_cast<Tensor<2, 3>>(b) * transpose(f)));
+    }
+
+    template <int dim>
+    bool
+    is_identity(const Tensor<2, dim> &t)
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          if (t[i][j] != (i == j ? 1. : 0.))
+            return false;
+      return true;
+    }
+
+    template <int dim>
+    SymmetricTensor<2, dim>
+    nan_tensor()
+    {
+      return std::numeric_limits<double>::quiet_NaN() *
+             unit_symmetric_tensor<dim>();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  IsotropicPlasticity<dim>::IsotropicPlasticity(const double young_modulus,
+                                                const double poisson_ratio)
+    : lambda(
+        LinearElastic<dim>::lame_parameters(young_modulus, poisson_ratio).first)
+    , mu(LinearElastic<dim>::lame_parameters(young_modulus, poisson_ratio)
+           .second)
+    , K(lambda + 2. / 3. * mu)
+    , D(lambda * outer_product(unit_symmetric_tensor<3>(),
+                               unit_symmetric_tensor<3>()) +
+        2. * mu * identity_tensor<3>())
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::declare_elastic_parameters(ParameterHandler &prm)
+  {
+    LinearElastic<dim>::declare_isotropic_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  IsotropicPlasticity<dim>::state_fields() const
+  {
+    return {{elastic_strain_name, 6}, {alpha_name, 1}, {increment_name, 1}};
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::initialize_state(const Point<dim> &,
+                                             ArrayView<double> state) const
+  {
+    for (double &s : state)
+      s = 0.;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  IsotropicPlasticity<dim>::elastic_strain(const ArrayView<const double> &state)
+  {
+    AssertThrow(state.size() == n_state,
+                ExcMessage("plasticity: the point state has " +
+                           std::to_string(state.size()) +
+                           " components, expected 8."));
+    return Utils::read_symmetric<3>(state.data() + eps_offset);
+  }
+
+
+
+  template <int dim>
+  double
+  IsotropicPlasticity<dim>::equivalent_plastic_strain(
+    const ArrayView<const double> &state)
+  {
+    return state[alpha_offset];
+  }
+
+
+
+  template <int dim>
+  double
+  IsotropicPlasticity<dim>::plastic_increment(
+    const ArrayView<const double> &state)
+  {
+    return state[increment_offset];
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  IsotropicPlasticity<dim>::stress_3d(
+    const ArrayView<const double> &state) const
+  {
+    return D * elastic_strain(state);
+  }
+
+
+
+  template <int dim>
+  const SymmetricTensor<4, 3> &
+  IsotropicPlasticity<dim>::elastic_stiffness() const
+  {
+    return D;
+  }
+
+
+
+  template <int dim>
+  double
+  IsotropicPlasticity<dim>::bulk_modulus() const
+  {
+    return K;
+  }
+
+
+
+  template <int dim>
+  double
+  IsotropicPlasticity<dim>::shear_modulus() const
+  {
+    return mu;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  IsotropicPlasticity<dim>::embed(const SymmetricTensor<2, dim> &t)
+  {
+    SymmetricTensor<2, 3> result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        result[i][j] = t[i][j];
+    return result;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, 3>
+  IsotropicPlasticity<dim>::embed(const Tensor<2, dim> &t, const double zz)
+  {
+    Tensor<2, 3> result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        result[i][j] = t[i][j];
+    for (unsigned int i = dim; i < 3; ++i)
+      result[i][i] = zz;
+    return result;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  IsotropicPlasticity<dim>::extract(const SymmetricTensor<2, 3> &t)
+  {
+    SymmetricTensor<2, dim> result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        result[i][j] = t[i][j];
+    return result;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  IsotropicPlasticity<dim>::extract(const SymmetricTensor<4, 3> &t)
+  {
+    SymmetricTensor<4, dim> result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = k; l < dim; ++l)
+            result[i][j][k][l] = t[i][j][k][l];
+    return result;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  IsotropicPlasticity<dim>::extract(const Tensor<4, 3> &t)
+  {
+    Tensor<4, dim> result;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            result[i][j][k][l] = t[i][j][k][l];
+    return result;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, 3>
+  IsotropicPlasticity<dim>::committed_tangent(
+    const ArrayView<const double> &) const
+  {
+    // The preconditioner's matrix: the elastic stiffness. Measured on the
+    // footing (examples/footing, F-bar): the continuum elastoplastic
+    // tangent, assembled without the F-bar linearization, is nearly
+    // singular in the deviatoric directions and locks in the volumetric
+    // ones; with it GMRES needed up to 1000 iterations and Newton failed in
+    // steps that converge with the elastic matrix in 8-9 iterations.
+    return D;
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::update_stress(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    ArrayView<double>              new_state) const
+  {
+    Return r;
+    return_map(elastic_strain(old.state) + embed(strain_increment),
+               equivalent_plastic_strain(old.state),
+               false,
+               r);
+    stress = extract(r.stress);
+    Utils::write_symmetric<3>(r.elastic_strain, new_state.data() + eps_offset);
+    new_state[alpha_offset]     = r.alpha;
+    new_state[increment_offset] = r.increment;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  IsotropicPlasticity<dim>::tangent(const PointState<dim> &old) const
+  {
+    return extract(committed_tangent(old.state));
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  IsotropicPlasticity<dim>::consistent_tangent(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment) const
+  {
+    if (strain_increment.norm() == 0.)
+      return tangent(old);
+    Return r;
+    return_map(elastic_strain(old.state) + embed(strain_increment),
+               equivalent_plastic_strain(old.state),
+               true,
+               r);
+    return extract(r.tangent);
+  }
+
+
+
+  template <int dim>
+  bool
+  IsotropicPlasticity<dim>::supports_finite_strain() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::update_kirchhoff_stress(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    SymmetricTensor<2, dim>           &tau,
+    ArrayView<double>                  new_state) const
+  {
+    const double J  = determinant(kinematics.F);
+    const double Jd = determinant(kinematics.delta_F);
+    if (!(J > 0.) || !std::isfinite(J) || !(Jd > 0.) || !std::isfinite(Jd))
+      {
+        tau = nan_tensor<dim>();
+        // Keep the state well defined (a failed trial is not committed).
+        for (unsigned int i = 0; i < n_state; ++i)
+          new_state[i] = old.state[i];
+        return;
+      }
+    const Tensor<2, 3>          f = embed(kinematics.delta_F, 1.);
+    const SymmetricTensor<2, 3> b_trial =
+      push_forward(f, tensor_exp(2. * elastic_strain(old.state)));
+    Return r;
+    return_map(0.5 * TensorFunctions::log(b_trial),
+               equivalent_plastic_strain(old.state),
+               false,
+               r);
+    tau = extract(r.stress);
+    Utils::write_symmetric<3>(r.elastic_strain, new_state.data() + eps_offset);
+    new_state[alpha_offset]     = r.alpha;
+    new_state[increment_offset] = r.increment;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  IsotropicPlasticity<dim>::kirchhoff_tangent(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
+    const Tensor<2, 3>          f = embed(kinematics.delta_F, 1.);
+    const SymmetricTensor<2, 3> b_trial =
+      push_forward(f, tensor_exp(2. * elastic_strain(old.state)));
+    SymmetricTensor<4, 3> D_alg;
+    if (is_identity(kinematics.delta_F))
+      D_alg = committed_tangent(old.state);
+    else
+      {
+        Return r;
+        return_map(0.5 * TensorFunctions::log(b_trial),
+                   equivalent_plastic_strain(old.state),
+                   true,
+                   r);
+        D_alg = r.tangent;
+      }
+    // M = D_alg : d(ln b)/d b (with the factor 1/2 of eps = 1/2 ln b);
+    // d tau = 1/2 M : (dl b + b dl^T) and, M being minor-symmetric,
+    // d tau_ij / d l_kl = sum_q M_ijkq b_ql.
+    const SymmetricTensor<4, 3> M =
+      D_alg * TensorFunctions::log_derivative(b_trial);
+    Tensor<4, 3> c;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = 0; l < 3; ++l)
+            for (unsigned int q = 0; q < 3; ++q)
+              c[i][j][k][l] += M[i][j][k][q] * b_trial[q][l];
+    return extract(c);
+  }
+
+
+
+  template class IsotropicPlasticity<2>;
+  template class IsotropicPlasticity<3>;
+} // namespace qsmpm
