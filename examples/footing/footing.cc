@@ -663,7 +663,8 @@ namespace Footing
               << ", change over the last 10% of settlement = "
               << r.plateau_change << '\n';
     summary.close();
-    std::cout << "limit_pressure_over_c = " << reported.limit_pressure_over_c
+    std::cout << std::setprecision(6)
+              << "limit_pressure_over_c = " << reported.limit_pressure_over_c
               << " (Prandtl " << reference.bearing_factor << ", difference "
               << std::setprecision(3) << 100. * error << " %";
     if (footing.check)
