@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <cmath>
 #include <iomanip>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/core/step_operator.h>
@@ -187,8 +188,14 @@ namespace qsmpm
     {
       TimerOutput::Scope        scope(timer_output, "constraints and loads");
       AffineConstraints<double> constraints;
+      const double h_dim = std::pow(background_grid.min_cell_size(), dim);
       bcs.make_constraints(background_grid,
-                           cache.dofs_without_points(background_grid),
+                           cache.dofs_without_points(
+                             background_grid,
+                             points().get_offsets().volume,
+                             prm_values.material_points
+                                 .min_nodal_volume_fraction *
+                               h_dim),
                            t_old,
                            t_new,
                            constraints);

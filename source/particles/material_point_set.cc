@@ -76,6 +76,17 @@ namespace qsmpm
                         "volumetric locking of plastic flow and nearly "
                         "incompressible materials on bilinear/trilinear "
                         "cells.");
+      prm.declare_entry(
+        "Minimum nodal volume",
+        "0",
+        Patterns::Double(0., 1.),
+        "Nodes whose support holds less material than this fraction of a "
+        "cell's volume (sum_p Omega_p N_i(x_p) / h^dim) are held fixed in "
+        "the step, like the nodes without points (paper Section 2.2). 0: "
+        "only nodes without points. With GIMP a node that a point's domain "
+        "only just reaches has a nearly vanishing stiffness, which makes "
+        "Newton stall at large deformation (most of all with F-bar); a "
+        "value of about 0.01 removes those nodes.");
     }
     prm.leave_subsection();
   }
@@ -97,6 +108,7 @@ namespace qsmpm
         parse_shape_functions(prm.get("Shape functions"));
       formulation.volumetric =
         parse_volumetric_treatment(prm.get("Volumetric locking"));
+      min_nodal_volume_fraction = prm.get_double("Minimum nodal volume");
       AssertThrow(update_volumes || !formulation.finite_strain(),
                   ExcMessage("Material points: <Update volumes = false> "
                              "(a geometrically linear model) contradicts "

@@ -318,15 +318,41 @@ namespace qsmpm
 
   template <int dim>
   IndexSet
-  ShapeCache<dim>::dofs_without_points(const BackgroundGrid<dim> &grid) const
+  ShapeCache<dim>::dofs_without_points(const BackgroundGrid<dim> &grid,
+                                       const unsigned int volume_offset,
+                                       const double min_nodal_volume) const
   {
-    // Count, for every degree of freedom, the cells with points around it;
-    // the sum over ranks tells which nodes are inactive everywhere.
+    // Count, for every degree of freedom, the cells with points around it
+    // (or, with a threshold, the material volume sum_p Omega_p N_i(x_p) in
+    // its support); the sum over ranks tells which nodes are inactive
+    // everywhere.
     TrilinosWrappers::MPI::Vector count(grid.locally_owned_dofs(),
                                         grid.get_communicator());
-    std::vector<double>           ones(max_dofs_per_group, 1.);
-    for (unsigned int c = 0; c < n_cells(); ++c)
-      count.add(n_dofs(c), global_dofs(c), ones.data());
+    if (min_nodal_volume > 0.)
+      {
+        std::vector<double> volume(max_dofs_per_group);
+        for (unsigned int c = 0; c < n_cells(); ++c)
+          {
+            std::fill(volume.begin(), volume.begin() + n_dofs(c), 0.);
+            const auto &range = cell(c);
+            for (unsigned int p = range.first_point; p < range.end_point; ++p)
+              {
+                const double          omega = properties(p)[volume_offset];
+                const double         *N     = values(p);
+                const unsigned short *node  = nodes(p);
+                for (unsigned int k = 0; k < stencil_size(p); ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    volume[node[k] * dim + d] += omega * N[k];
+              }
+            count.add(n_dofs(c), global_dofs(c), volume.data());
+          }
+      }
+    else
+      {
+        std::vector<double> ones(max_dofs_per_group, 1.);
+        for (unsigned int c = 0; c < n_cells(); ++c)
+          count.add(n_dofs(c), global_dofs(c), ones.data());
+      }
     count.compress(VectorOperation::add);
     TrilinosWrappers::MPI::Vector ghosted(grid.locally_owned_dofs(),
                                           grid.locally_relevant_dofs(),
@@ -335,7 +361,7 @@ namespace qsmpm
 
     IndexSet inactive(grid.get_dof_handler().n_dofs());
     for (const auto dof : grid.locally_relevant_dofs())
-      if (ghosted(dof) == 0.)
+      if (ghosted(dof) <= min_nodal_volume)
         inactive.add_index(dof);
     inactive.compress();
     return inactive;

@@ -54,6 +54,9 @@ namespace qsmpm
       bool update_volumes = true;
       /// Small or finite strain; linear or GIMP shape functions.
       Formulation formulation;
+      /// Nodes holding less material than this fraction of a cell's volume
+      /// are held fixed in a step like nodes without points.
+      double min_nodal_volume_fraction = 0.;
 
       static void
       declare_parameters(ParameterHandler &prm);

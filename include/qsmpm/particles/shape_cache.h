@@ -161,9 +161,20 @@ namespace qsmpm
      * The locally relevant degrees of freedom whose nodes have no material
      * point in their support on any rank. They have no equation and must be
      * constrained (paper Section 2.2).
+     *
+     * With @p min_nodal_volume > 0 also the nodes whose support holds less
+     * material than that, measured as sum_p Omega_p N_i(x_p) with the point
+     * volumes at offset @p volume_offset of the point properties. A node that
+     * a GIMP domain only just reaches has a stiffness of the order of the
+     * square of the overlap; such rows make Newton's linear systems nearly
+     * singular (most of all with F-bar, which leaves one volumetric
+     * constraint per cell). Holding them fixed for one step is the
+     * inactive-node treatment of the paper applied to nearly empty nodes.
      */
     IndexSet
-    dofs_without_points(const BackgroundGrid<dim> &grid) const;
+    dofs_without_points(const BackgroundGrid<dim> &grid,
+                        const unsigned int         volume_offset    = 0,
+                        const double               min_nodal_volume = 0.) const;
 
     /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
