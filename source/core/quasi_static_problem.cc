@@ -1,8 +1,11 @@
 #include <deal.II/base/mpi.h>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/core/step_operator.h>
+#include <qsmpm/io/checkpoint.h>
 #include <sstream>
 #include <utility>
 
@@ -283,6 +286,9 @@ namespace qsmpm
   {
     LoadStepper              stepper(prm_values.load_stepping);
     OutputWriter<dim>        writer(prm_values.output, communicator);
+    const bool               from_checkpoint = resumed;
+    if (from_checkpoint)
+      restore_run_state(stepper, writer);
     std::vector<std::string> names;
     for (const auto &condition : bcs.dirichlet_conditions())
       names.push_back(condition.name);
@@ -293,8 +299,11 @@ namespace qsmpm
              << " dofs, " << points().n_global_points() << " material points, "
              << dealii::Utilities::MPI::n_mpi_processes(communicator)
              << " MPI rank(s)" << std::endl;
+    if (from_checkpoint)
+      progress << "resumed from the checkpoint of step " << stepper.step()
+               << ", t = " << stepper.current() << std::endl;
 
-    if (writer.fields_due(0))
+    if (!from_checkpoint && writer.fields_due(0))
       {
         TimerOutput::Scope scope(timer_output, "output");
         writer.write_points(points(), 0, 0.);
@@ -346,9 +355,144 @@ namespace qsmpm
           }
         if (stop)
           break;
+        const unsigned int checkpoints = prm_values.output.checkpoint_interval;
+        if (checkpoints > 0 && stepper.step() % checkpoints == 0 &&
+            !stepper.finished())
+          {
+            TimerOutput::Scope scope(timer_output, "checkpoint");
+            write_checkpoint(stepper, writer);
+          }
       }
     if (progress.is_active())
       timer_output.print_summary();
+  }
+
+
+
+  // Checkpoint and restart. Grid and points are written by Checkpoint; everything else that carries
+  // over from one step to the next goes into its text: the load stepper
+  // (load factor, increment, step count), the reports of the steps so far
+  // (summaries of a resumed run count all steps), the reactions of the
+  // last step, the output records, and the caller's own state. Doubles are
+  // written with max_digits10 digits, which reads back exactly.
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::write_checkpoint(const LoadStepper       &stepper,
+                                            const OutputWriter<dim> &writer)
+  {
+    std::ostringstream state;
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        state << std::setprecision(std::numeric_limits<double>::max_digits10);
+        state << "stepper ";
+        stepper.save(state);
+        state << "\nreactions " << last_reactions.size();
+        for (const auto &reaction : last_reactions)
+          for (unsigned int d = 0; d < dim; ++d)
+            state << ' ' << reaction[d];
+        state << "\nreports " << reports.size() << '\n';
+        for (const auto &r : reports)
+          state << r.step << ' ' << r.load_factor << ' ' << r.cut_backs << ' '
+                << r.newton.converged << ' ' << r.newton.newton_iterations
+                << ' ' << r.newton.linear_iterations << ' '
+                << r.newton.inexact_linear_solves << ' '
+                << r.newton.line_search_steps << ' '
+                << r.newton.initial_residual << ' '
+                << r.newton.final_residual << ' ' << r.wall_time << '\n';
+        state << "output ";
+        writer.save(state);
+        const std::string user = save_user_state ? save_user_state() : "";
+        state << "user " << user.size() << '\n' << user;
+      }
+    Checkpoint<dim>(prm_values.output.directory, communicator)
+      .write(stepper.step(), background_grid, points(), state.str());
+    progress << "  checkpoint of step " << stepper.step() << " written"
+             << std::endl;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  QuasiStaticProblem<dim>::resume()
+  {
+    const Checkpoint<dim> checkpoint(prm_values.output.directory,
+                                     communicator);
+    const std::string     path = checkpoint.newest();
+    AssertThrow(!path.empty(),
+                ExcMessage("Cannot resume: there is no complete checkpoint "
+                           "(checkpoint-<step>) in the output directory <" +
+                           prm_values.output.directory +
+                           ">; write them with Output/Checkpoint interval."));
+    // Residual and tangent belong to the grid's old degrees of freedom;
+    // setup_step_data() builds them anew for the loaded partition.
+    residual.reset();
+    resume_state = checkpoint.read(path, background_grid, points());
+    resumed      = true;
+    resumed_step = Checkpoint<dim>::step_of(
+      std::filesystem::path(path).filename().string());
+    return resumed_step;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::restore_run_state(LoadStepper       &stepper,
+                                             OutputWriter<dim> &writer)
+  {
+    std::istringstream in(resume_state);
+    std::string        keyword;
+    const auto         expect = [&](const std::string &word) {
+      in >> keyword;
+      AssertThrow(in && keyword == word,
+                  ExcMessage("Cannot resume: the checkpoint's state has no <" +
+                             word + "> entry."));
+    };
+    expect("stepper");
+    stepper.load(in);
+    AssertThrow(stepper.step() == resumed_step,
+                ExcMessage("Cannot resume: the checkpoint's load stepping "
+                           "state does not belong to its step."));
+    expect("reactions");
+    std::size_t n = 0;
+    in >> n;
+    last_reactions.assign(n, Tensor<1, dim>());
+    for (auto &reaction : last_reactions)
+      for (unsigned int d = 0; d < dim; ++d)
+        in >> reaction[d];
+    expect("reports");
+    in >> n;
+    reports.assign(n, StepReport());
+    for (auto &r : reports)
+      in >> r.step >> r.load_factor >> r.cut_backs >> r.newton.converged >>
+        r.newton.newton_iterations >> r.newton.linear_iterations >>
+        r.newton.inexact_linear_solves >> r.newton.line_search_steps >>
+        r.newton.initial_residual >> r.newton.final_residual >> r.wall_time;
+    expect("output");
+    writer.resume(in, resumed_step);
+    expect("user");
+    in >> n;
+    in.get();
+    std::string user(n, '\0');
+    in.read(user.data(), n);
+    AssertThrow(in, ExcMessage("Cannot resume: the checkpoint's state is "
+                               "incomplete."));
+    if (restore_user_state)
+      restore_user_state(user);
+    resumed = false;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::set_checkpoint_state(
+    const std::function<std::string()>              &save,
+    const std::function<void(const std::string &)> &restore)
+  {
+    save_user_state    = save;
+    restore_user_state = restore;
   }
 
 

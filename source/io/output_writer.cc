@@ -4,6 +4,8 @@
 #include <deal.II/particles/data_out.h>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
+#include <qsmpm/io/checkpoint.h>
 #include <qsmpm/io/output_writer.h>
 
 namespace qsmpm
@@ -29,6 +31,18 @@ namespace qsmpm
                         "true",
                         Patterns::Bool(),
                         "Also write the grid displacement increment.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "0",
+        Patterns::Integer(0),
+        "K > 0: every K accepted load steps, write a checkpoint (the grid, "
+        "all material points with all their properties, the load stepping "
+        "state) into <Directory>/checkpoint-<step>; the newest two are "
+        "kept. A checkpoint is written into <Directory>/checkpoint.tmp and "
+        "renamed only when complete, so a crash never damages the last "
+        "one. Resume with 'qsmpm --resume file.prm' (also on another number "
+        "of MPI ranks); the rows of reactions.csv after the checkpoint are "
+        "then replaced. 0: no checkpoints.");
     }
     prm.leave_subsection();
   }
@@ -44,6 +58,7 @@ namespace qsmpm
       directory       = prm.get("Directory");
       interval        = prm.get_integer("Interval");
       write_increment = prm.get_bool("Write increment");
+      checkpoint_interval = prm.get_integer("Checkpoint interval");
     }
     prm.leave_subsection();
   }
@@ -172,6 +187,70 @@ namespace qsmpm
   OutputWriter<dim>::get_parameters() const
   {
     return parameters;
+  }
+
+
+
+  // One line per record, "points|increment load_factor file name"; the
+  // file name is the rest of the line.
+  template <int dim>
+  void
+  OutputWriter<dim>::save(std::ostream &out) const
+  {
+    out << std::setprecision(std::numeric_limits<double>::max_digits10)
+        << point_records.size() + increment_records.size() << '\n';
+    for (const auto &[t, name] : point_records)
+      out << "points " << t << ' ' << name << '\n';
+    for (const auto &[t, name] : increment_records)
+      out << "increment " << t << ' ' << name << '\n';
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::resume(std::istream &in, const unsigned int step)
+  {
+    point_records.clear();
+    increment_records.clear();
+    std::size_t n = 0;
+    in >> n;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::string kind, name;
+        double      t = 0.;
+        in >> kind >> t;
+        std::getline(in >> std::ws, name);
+        AssertThrow(in && (kind == "points" || kind == "increment"),
+                    ExcMessage("Cannot read the output records of the "
+                               "checkpoint."));
+        (kind == "points" ? point_records : increment_records)
+          .emplace_back(t, name);
+      }
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+
+    // The PVD files may name steps after the checkpoint: write them anew.
+    if (!point_records.empty())
+      {
+        std::ofstream pvd(parameters.directory + "/points.pvd");
+        DataOutBase::write_pvd_record(pvd, point_records);
+      }
+    if (!increment_records.empty())
+      {
+        std::ofstream pvd(parameters.directory + "/increment.pvd");
+        DataOutBase::write_pvd_record(pvd, increment_records);
+      }
+
+    // Rows of later steps go; the next ones are appended after the header.
+    const std::string csv = parameters.directory + "/reactions.csv";
+    if (std::filesystem::exists(csv))
+      {
+        Checkpoint<dim>::truncate_csv(csv, step);
+        reactions_file =
+          std::make_unique<std::ofstream>(csv, std::ios::out | std::ios::app);
+        AssertThrow(*reactions_file, ExcMessage("Cannot write " + csv));
+      }
   }
 
 

@@ -1,6 +1,10 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <iomanip>
+#include <istream>
+#include <limits>
+#include <ostream>
 #include <qsmpm/loading/load_stepper.h>
 #include <sstream>
 
@@ -172,5 +176,29 @@ namespace qsmpm
   LoadStepper::n_cut_backs() const
   {
     return cut_backs;
+  }
+
+
+
+  // A checkpoint is written between steps, where the count of cut-backs is
+  // zero. The increment must be kept as well: with growth (or after a
+  // cut-back) it is not the nominal one, and a resumed run must take the
+  // same steps as an uninterrupted one. max_digits10 digits make the decimal
+  // text an exact copy of the doubles.
+  void
+  LoadStepper::save(std::ostream &out) const
+  {
+    out << std::setprecision(std::numeric_limits<double>::max_digits10) << t
+        << ' ' << increment << ' ' << n_steps;
+  }
+
+
+
+  void
+  LoadStepper::load(std::istream &in)
+  {
+    in >> t >> increment >> n_steps;
+    AssertThrow(in, ExcMessage("Cannot read the load stepping state."));
+    cut_backs = 0;
   }
 } // namespace qsmpm

@@ -112,6 +112,31 @@ namespace qsmpm
     run();
 
     /**
+     * Continue from the newest complete checkpoint in the output directory
+     * (written by a run with <tt>Output/Checkpoint interval</tt> > 0),
+     * possibly on another number of MPI ranks. Set the problem up exactly
+     * as for a fresh run (initialize(), or the pieces; the points are then
+     * replaced by those of the checkpoint), call this, then run(): the run
+     * continues after the checkpoint's step and writes the same output as
+     * an uninterrupted one. Throws with a message if there is no checkpoint
+     * or it belongs to another grid or body. Returns the checkpoint's
+     * step.
+     */
+    unsigned int
+    resume();
+
+    /**
+     * Include a caller's own state between steps in checkpoints (e.g. what
+     * a step callback accumulates): @p save is called on rank 0 when a
+     * checkpoint is written, @p restore on all ranks by run() after
+     * resume(), with the text that @p save returned.
+     */
+    void
+    set_checkpoint_state(
+      const std::function<std::string()>              &save,
+      const std::function<void(const std::string &)> &restore);
+
+    /**
      * One attempt at the step t_old -> t_new. If Newton converges, commit it
      * and return true; otherwise leave every point untouched and return
      * false. @p report receives the Newton statistics.
@@ -175,6 +200,18 @@ namespace qsmpm
     std::vector<Tensor<1, dim>>               last_reactions;
     std::vector<StepReport>                   reports;
     std::function<bool(const StepReport &)>   step_callback;
+
+    // Checkpoints: the text of the one resume() read (for run()), and the
+    // caller's state.
+    void
+    write_checkpoint(const LoadStepper &stepper, const OutputWriter<dim> &writer);
+    void
+    restore_run_state(LoadStepper &stepper, OutputWriter<dim> &writer);
+    bool                                      resumed = false;
+    unsigned int                              resumed_step = 0;
+    std::string                               resume_state;
+    std::function<std::string()>              save_user_state;
+    std::function<void(const std::string &)> restore_user_state;
   };
 } // namespace qsmpm
 

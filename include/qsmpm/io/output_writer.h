@@ -31,6 +31,8 @@ namespace qsmpm
       std::string  directory       = "output";
       unsigned int interval        = 1;
       bool         write_increment = true;
+      /// Write a checkpoint every this many accepted steps; 0: never.
+      unsigned int checkpoint_interval = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -66,6 +68,23 @@ namespace qsmpm
 
     const Parameters &
     get_parameters() const;
+
+    /**
+     * Write the PVD records of the steps so far to @p out (for a
+     * checkpoint; any rank).
+     */
+    void
+    save(std::ostream &out) const;
+
+    /**
+     * Continue a run from a checkpoint at @p step: read the records that
+     * save() wrote and rewrite the PVD files with them, and cut
+     * reactions.csv back to the rows of the steps up to @p step (a run
+     * that went on after the checkpoint wrote more), so that the next
+     * rows are appended to it.
+     */
+    void
+    resume(std::istream &in, const unsigned int step);
 
   private:
     const Parameters                            parameters;

@@ -2,6 +2,7 @@
 #define qsmpm_loading_load_stepper_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <iosfwd>
 
 namespace qsmpm
 {
@@ -82,6 +83,17 @@ namespace qsmpm
     /// Cut-backs of the current step so far.
     unsigned int
     n_cut_backs() const;
+
+    /**
+     * Write the state between two steps (load factor, increment, number of
+     * accepted steps) to @p out, in full precision, for a checkpoint.
+     */
+    void
+    save(std::ostream &out) const;
+
+    /// Read what save() wrote: the next step continues from there.
+    void
+    load(std::istream &in);
 
   private:
     const Parameters parameters;
