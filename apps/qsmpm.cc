@@ -1,6 +1,8 @@
 // The general driver: runs any quasi-static problem described by a .prm file.
 //
 //   qsmpm problem.prm          run it
+//   qsmpm --resume problem.prm continue from the newest checkpoint in the
+//                              output directory (Output/Checkpoint interval)
 //   qsmpm --print-parameters   every parameter, its default and documentation
 #include <deal.II/base/mpi.h>
 #include <iostream>
@@ -24,13 +26,15 @@ namespace
 
   template <int dim>
   void
-  run(const std::string &filename)
+  run(const std::string &filename, const bool resume)
   {
     ParameterHandler prm;
     declare<dim>(prm);
     prm.parse_input(filename);
     qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
     problem.initialize(prm);
+    if (resume)
+      problem.resume();
     problem.run();
   }
 } // namespace
@@ -41,11 +45,14 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string                argument = argc > 1 ? argv[1] : "";
-      if (argument.empty() || argument == "--help" || argument == "-h")
+      const bool resume = argc > 2 && std::string(argv[1]) == "--resume";
+      const std::string argument = argc > 1 ? argv[resume ? 2 : 1] : "";
+      if (argument.empty() || argument == "--help" || argument == "-h" ||
+          argument == "--resume")
         {
-          std::cout << "Usage: qsmpm <file.prm> | --print-parameters\n";
-          return argument.empty() ? 1 : 0;
+          std::cout
+            << "Usage: qsmpm [--resume] <file.prm> | --print-parameters\n";
+          return argument.empty() || argument == "--resume" ? 1 : 0;
         }
       if (argument == "--print-parameters")
         {
@@ -56,9 +63,9 @@ main(int argc, char *argv[])
           return 0;
         }
       if (qsmpm::Utils::read_dimension(argument) == 2)
-        run<2>(argument);
+        run<2>(argument, resume);
       else
-        run<3>(argument);
+        run<3>(argument, resume);
     }
   catch (std::exception &exc)
     {

@@ -10,6 +10,7 @@
  * Usage:
  *   ./compact_tension b15.prm
  *   mpirun -np 2 ./compact_tension b30.prm
+ *   ./compact_tension --resume b15.prm   (after a run with checkpoints)
  *
  * ---------------------------------------------------------------------
  */
@@ -35,7 +36,9 @@
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/compact_tension_geometry.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
+#include <qsmpm/io/checkpoint.h>
 #include <qsmpm/materials/decohesion.h>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -235,7 +238,7 @@ namespace CompactTension
   // region the centre line of this particular grid.
   template <int dim>
   void
-  run(const std::string &parameter_file)
+  run(const std::string &parameter_file, const bool resume)
   {
     const MPI_Comm   communicator = MPI_COMM_WORLD;
     ParameterHandler prm;
@@ -289,6 +292,12 @@ namespace CompactTension
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       std::filesystem::create_directories(directory);
 
+    // A run with `Output/Checkpoint interval` > 0 can be continued with
+    // `--resume` from its newest checkpoint: the library replaces the points
+    // just made by those of the checkpoint, and we restore below what this
+    // program keeps between steps.
+    const unsigned int resumed_step = resume ? problem.resume() : 0;
+
     auto &out = problem.pcout();
     out << "Compact tension " << run_parameters.plot_label
         << ": b = " << geometry.ligament() << " m, d = " << geometry.depth()
@@ -310,12 +319,51 @@ namespace CompactTension
     std::ofstream         steps_log;
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        steps_log.open(directory + "/steps.csv");
-        steps_log << "step,displacement_m,force_N,newton_iterations,"
-                     "gmres_iterations,line_search_steps,cut_backs,"
-                     "wall_time_s\n";
+        if (resume && std::filesystem::exists(directory + "/steps.csv"))
+          {
+            // Rows past the checkpoint were written by the interrupted run
+            // and come again.
+            Checkpoint<dim>::truncate_csv(directory + "/steps.csv",
+                                          resumed_step);
+            steps_log.open(directory + "/steps.csv", std::ios::app);
+          }
+        else
+          {
+            steps_log.open(directory + "/steps.csv");
+            steps_log << "step,displacement_m,force_N,newton_iterations,"
+                         "gmres_iterations,line_search_steps,cut_backs,"
+                         "wall_time_s\n";
+          }
       }
     bool        initiated = false, partially_failed = false, complete = false;
+
+    // Our state between steps, for checkpoints: the curve so far (peak and
+    // work follow from it) and which of the moments of Fig. 4 have passed.
+    problem.set_checkpoint_state(
+      [&]() {
+        std::ostringstream state;
+        state << std::setprecision(17) << initiated << ' ' << partially_failed
+              << ' ' << curve.points().size() << '\n';
+        for (const auto &point : curve.points())
+          state << point.step << ' ' << point.displacement << ' '
+                << point.force << '\n';
+        return state.str();
+      },
+      [&](const std::string &text) {
+        std::istringstream state(text);
+        std::size_t        n = 0;
+        state >> initiated >> partially_failed >> n;
+        curve = LoadDisplacementCurve();
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            LoadDisplacementCurve::Point point;
+            state >> point.step >> point.displacement >> point.force;
+            curve.add(point.step, point.displacement, point.force);
+          }
+        AssertThrow(state,
+                    ExcMessage("compact_tension: the checkpoint holds no "
+                               "load-displacement curve."));
+      });
     const auto &layout = problem.points().get_layout();
     const unsigned int opening_offset =
       layout.offset(Decohesion<dim>::crack_opening_name);
@@ -468,13 +516,15 @@ main(int argc, char *argv[])
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      AssertThrow(argc > 1,
-                  dealii::ExcMessage("Usage: compact_tension file.prm"));
-      const std::string parameter_file = argv[1];
+      const bool resume = argc > 2 && std::string(argv[1]) == "--resume";
+      AssertThrow(argc > (resume ? 2 : 1),
+                  dealii::ExcMessage(
+                    "Usage: compact_tension [--resume] file.prm"));
+      const std::string parameter_file = argv[resume ? 2 : 1];
       AssertThrow(std::filesystem::exists(parameter_file),
                   dealii::ExcMessage("Cannot find the parameter file <" +
                                      parameter_file + ">."));
-      CompactTension::run<2>(parameter_file);
+      CompactTension::run<2>(parameter_file, resume);
     }
   catch (std::exception &exc)
     {
