@@ -45,7 +45,7 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool resume = argc > 2 && std::string(argv[1]) == "--resume";
+      const bool        resume = argc > 2 && std::string(argv[1]) == "--resume";
       const std::string argument = argc > 1 ? argv[resume ? 2 : 1] : "";
       if (argument.empty() || argument == "--help" || argument == "-h" ||
           argument == "--resume")

@@ -222,8 +222,8 @@ main(int argc, char *argv[])
     }
   MPI_Barrier(world);
 
-  b.stop_after           = 0;
-  b.resume               = true;
+  b.stop_after            = 0;
+  b.resume                = true;
   const unsigned int from = run(world, b);
   check_that("resumed from the newest complete checkpoint (step 20)",
              from == 20);
@@ -245,7 +245,7 @@ main(int argc, char *argv[])
 
   // Another number of ranks: written on one, resumed on all, and the
   // reverse.
-  Options c = b;
+  Options c    = b;
   c.directory  = "C";
   c.resume     = false;
   c.stop_after = 23;
@@ -255,7 +255,7 @@ main(int argc, char *argv[])
   c.stop_after = 0;
   c.resume     = true;
   run(world, c);
-  Options d  = b;
+  Options d   = b;
   d.directory = "D";
   if (root)
     {

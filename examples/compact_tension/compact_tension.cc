@@ -345,8 +345,8 @@ namespace CompactTension
         state << std::setprecision(17) << initiated << ' ' << partially_failed
               << ' ' << curve.points().size() << '\n';
         for (const auto &point : curve.points())
-          state << point.step << ' ' << point.displacement << ' '
-                << point.force << '\n';
+          state << point.step << ' ' << point.displacement << ' ' << point.force
+                << '\n';
         return state.str();
       },
       [&](const std::string &text) {

@@ -369,8 +369,9 @@ namespace qsmpm
 
 
 
-  // Checkpoint and restart. Grid and points are written by Checkpoint; everything else that carries
-  // over from one step to the next goes into its text: the load stepper
+  // Checkpoint and restart. Grid and points are written by Checkpoint;
+  // everything else that carries over from one step to the next goes into
+  // its text: the load stepper
   // (load factor, increment, step count), the reports of the steps so far
   // (summaries of a resumed run count all steps), the reactions of the
   // last step, the output records, and the caller's own state. Doubles are
@@ -397,8 +398,8 @@ namespace qsmpm
                 << ' ' << r.newton.linear_iterations << ' '
                 << r.newton.inexact_linear_solves << ' '
                 << r.newton.line_search_steps << ' '
-                << r.newton.initial_residual << ' '
-                << r.newton.final_residual << ' ' << r.wall_time << '\n';
+                << r.newton.initial_residual << ' ' << r.newton.final_residual
+                << ' ' << r.wall_time << '\n';
         state << "output ";
         writer.save(state);
         const std::string user = save_user_state ? save_user_state() : "";
@@ -416,8 +417,7 @@ namespace qsmpm
   unsigned int
   QuasiStaticProblem<dim>::resume()
   {
-    const Checkpoint<dim> checkpoint(prm_values.output.directory,
-                                     communicator);
+    const Checkpoint<dim> checkpoint(prm_values.output.directory, communicator);
     const std::string     path = checkpoint.newest();
     AssertThrow(!path.empty(),
                 ExcMessage("Cannot resume: there is no complete checkpoint "
@@ -429,8 +429,8 @@ namespace qsmpm
     residual.reset();
     resume_state = checkpoint.read(path, background_grid, points());
     resumed      = true;
-    resumed_step = Checkpoint<dim>::step_of(
-      std::filesystem::path(path).filename().string());
+    resumed_step =
+      Checkpoint<dim>::step_of(std::filesystem::path(path).filename().string());
     return resumed_step;
   }
 
@@ -476,8 +476,9 @@ namespace qsmpm
     in.get();
     std::string user(n, '\0');
     in.read(user.data(), n);
-    AssertThrow(in, ExcMessage("Cannot resume: the checkpoint's state is "
-                               "incomplete."));
+    AssertThrow(in,
+                ExcMessage("Cannot resume: the checkpoint's state is "
+                           "incomplete."));
     if (restore_user_state)
       restore_user_state(user);
     resumed = false;
@@ -488,7 +489,7 @@ namespace qsmpm
   template <int dim>
   void
   QuasiStaticProblem<dim>::set_checkpoint_state(
-    const std::function<std::string()>              &save,
+    const std::function<std::string()>             &save,
     const std::function<void(const std::string &)> &restore)
   {
     save_user_state    = save;

@@ -19,7 +19,7 @@ namespace qsmpm
     // Run @p action on rank 0 only and throw its error on every rank, so
     // that no rank waits forever in the next collective call.
     void
-    on_rank_zero(const MPI_Comm                     communicator,
+    on_rank_zero(const MPI_Comm                      communicator,
                  const std::function<std::string()> &action)
     {
       std::string error;
@@ -71,8 +71,7 @@ namespace qsmpm
     out << "\ngrid upper corner";
     for (unsigned int d = 0; d < dim; ++d)
       out << ' ' << grid.upper_corner()[d];
-    out << "\ngrid cells "
-        << grid.get_triangulation().n_global_active_cells();
+    out << "\ngrid cells " << grid.get_triangulation().n_global_active_cells();
     out << "\nperiodic directions";
     for (const unsigned int d : grid.periodic_directions())
       out << ' ' << d;
@@ -221,10 +220,24 @@ namespace qsmpm
     while (std::getline(in, line) && line != "end")
       {
         std::getline(expected, here);
-        AssertThrow(line == here,
+        if (line == here)
+          continue;
+        // The list of property names is long; count them instead.
+        const std::string properties = "point properties";
+        if (line.rfind(properties, 0) == 0 && here.rfind(properties, 0) == 0)
+          {
+            const auto count = [](const std::string &names) {
+              return std::to_string(
+                       std::count(names.begin(), names.end(), ' ') - 1) +
+                     " property components per point";
+            };
+            line = count(line) + " (another material model or formulation?)";
+            here = count(here);
+          }
+        AssertThrow(false,
                     ExcMessage("Cannot resume from " + path +
-                               ": it was written for another problem (" +
-                               line + " in the checkpoint, " + here +
+                               ": it was written for another problem (" + line +
+                               " in the checkpoint, " + here +
                                " in this run)."));
       }
     AssertThrow(line == "end" && !std::getline(expected, here),

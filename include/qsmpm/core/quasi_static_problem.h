@@ -133,7 +133,7 @@ namespace qsmpm
      */
     void
     set_checkpoint_state(
-      const std::function<std::string()>              &save,
+      const std::function<std::string()>             &save,
       const std::function<void(const std::string &)> &restore);
 
     /**
@@ -201,16 +201,17 @@ namespace qsmpm
     std::vector<StepReport>                   reports;
     std::function<bool(const StepReport &)>   step_callback;
 
-    // Checkpoints: the text of the one resume() read (for run()), and the
-    // caller's state.
+    // Checkpoints: what resume() read, for run(), and the caller's state.
     void
-    write_checkpoint(const LoadStepper &stepper, const OutputWriter<dim> &writer);
+    write_checkpoint(const LoadStepper       &stepper,
+                     const OutputWriter<dim> &writer);
     void
     restore_run_state(LoadStepper &stepper, OutputWriter<dim> &writer);
-    bool                                      resumed = false;
-    unsigned int                              resumed_step = 0;
-    std::string                               resume_state;
-    std::function<std::string()>              save_user_state;
+
+    bool                                     resumed      = false;
+    unsigned int                             resumed_step = 0;
+    std::string                              resume_state;
+    std::function<std::string()>             save_user_state;
     std::function<void(const std::string &)> restore_user_state;
   };
 } // namespace qsmpm
