@@ -1,15 +1,45 @@
 // The general driver: runs any quasi-static problem described by a .prm file.
 //
-//   qsmpm problem.prm          run it
-//   qsmpm --print-parameters   every parameter, its default and documentation
+//   qsmpm problem.prm                       run it
+//   qsmpm --plugin libmodel.so problem.prm  load user models first
+//   qsmpm --print-parameters                every parameter, its default and
+//                                           documentation
+//   qsmpm --version                         qsmpm and deal.II versions
+//
+// Plugins are shared libraries with user-defined constitutive models (see
+// doc/user_models.md): dlopen() runs their static initializers, which
+// register the models (QSMPM_REGISTER_CONSTITUTIVE_MODEL), so they must be
+// loaded before the parameters are declared. --plugin may be repeated and
+// may come before or after the options above.
+#include <deal.II/base/config.h>
+
 #include <deal.II/base/mpi.h>
+
+#include <dlfcn.h>
+#include <filesystem>
 #include <iostream>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/base/version.h>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <string>
+#include <vector>
 
 namespace
 {
   using namespace dealii;
+
+  const char *const usage =
+    "Usage: qsmpm [--plugin <library.so>]... <file.prm>\n"
+    "       qsmpm [--plugin <library.so>]... --print-parameters\n"
+    "       qsmpm --version | --help\n"
+    "\n"
+    "  <file.prm>            run the problem described by the parameter "
+    "file\n"
+    "  --plugin <lib.so>     load a shared library with user-defined models\n"
+    "                        before reading parameters (repeatable)\n"
+    "  --print-parameters    print every parameter with its default and\n"
+    "                        documentation (with the plugins' models)\n"
+    "  --version             print the versions of qsmpm and deal.II\n";
 
   template <int dim>
   void
@@ -33,6 +63,30 @@ namespace
     problem.initialize(prm);
     problem.run();
   }
+
+  /**
+   * dlopen() a plugin with RTLD_NOW | RTLD_GLOBAL (all symbols resolved now,
+   * so that a missing one is reported here and not in the middle of a run).
+   * A name that exists as a file is opened as that file (dlopen() alone
+   * would search only the library path for a name without a '/'); any
+   * other name is left to the library search (LD_LIBRARY_PATH, RPATH).
+   * The library is never closed: the registry keeps its factory functions.
+   */
+  void
+  load_plugin(const std::string &name)
+  {
+    std::string path = name;
+    if (name.find('/') == std::string::npos && std::filesystem::exists(name))
+      path = "./" + name;
+    dlerror();
+    if (dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL) == nullptr)
+      {
+        const char *reason = dlerror();
+        AssertThrow(false,
+                    ExcMessage("Cannot load the plugin <" + name + ">: " +
+                               (reason != nullptr ? reason : "unknown error")));
+      }
+  }
 } // namespace
 
 int
@@ -41,24 +95,75 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string                argument = argc > 1 ? argv[1] : "";
-      if (argument.empty() || argument == "--help" || argument == "-h")
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+      // The command line: options and at most one parameter file.
+      std::vector<std::string> plugins;
+      std::string              action, filename;
+      for (int i = 1; i < argc; ++i)
         {
-          std::cout << "Usage: qsmpm <file.prm> | --print-parameters\n";
-          return argument.empty() ? 1 : 0;
+          const std::string argument = argv[i];
+          if (argument == "--plugin")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--plugin needs a library name."));
+              plugins.emplace_back(argv[++i]);
+            }
+          else if (argument.rfind("--plugin=", 0) == 0)
+            plugins.push_back(argument.substr(9));
+          else if (argument == "--help" || argument == "-h" ||
+                   argument == "--version" ||
+                   argument == "--print-parameters")
+            action = argument;
+          else if (!argument.empty() && argument[0] == '-')
+            {
+              if (root)
+                std::cerr << "qsmpm: unknown option <" << argument << ">\n"
+                          << usage;
+              return 1;
+            }
+          else if (filename.empty())
+            filename = argument;
+          else
+            {
+              if (root)
+                std::cerr << "qsmpm: more than one parameter file (<"
+                          << filename << ">, <" << argument << ">)\n"
+                          << usage;
+              return 1;
+            }
         }
-      if (argument == "--print-parameters")
+
+      if (action == "--help" || action == "-h" ||
+          (action.empty() && filename.empty()))
+        {
+          if (root)
+            std::cout << usage;
+          return action.empty() ? 1 : 0;
+        }
+      if (action == "--version")
+        {
+          if (root)
+            std::cout << "qsmpm " << QSMPM_VERSION << " (deal.II "
+                      << DEAL_II_PACKAGE_VERSION << ")" << std::endl;
+          return 0;
+        }
+
+      for (const auto &plugin : plugins)
+        load_plugin(plugin);
+
+      if (action == "--print-parameters")
         {
           ParameterHandler prm;
           declare<2>(prm);
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          if (root)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
-      if (qsmpm::Utils::read_dimension(argument) == 2)
-        run<2>(argument);
+      if (qsmpm::Utils::read_dimension(filename) == 2)
+        run<2>(filename);
       else
-        run<3>(argument);
+        run<3>(filename);
     }
   catch (std::exception &exc)
     {
