@@ -92,15 +92,27 @@ namespace
     return result;
   }
 
-  /// Text on one line, for a Markdown list item.
+  /**
+   * Text on one line, for a Markdown list item, with the characters that
+   * Markdown would interpret (emphasis, code, HTML tags, links) escaped.
+   */
   std::string
-  one_line(std::string text)
+  markdown_text(const std::string &text)
   {
-    for (auto &c : text)
+    std::string result;
+    for (const char c : text)
       if (c == '\n' || c == '\t')
-        c = ' ';
-    return text;
+        result.push_back(' ');
+      else
+        {
+          if (std::string("\\`*_<>[]|").find(c) != std::string::npos)
+            result.push_back('\\');
+          result.push_back(c);
+        }
+    return result;
   }
+
+
 
   /**
    * Write the entries of @p node (a subsection of the XML tree printed by
@@ -123,13 +135,15 @@ namespace
                   << "\n\n";
               heading = true;
             }
-          out << "- **" << demangle(key) << "** = `"
-              << child.get<std::string>("default_value") << "`  \n"
-              << "  *" << one_line(child.get<std::string>("pattern_description"))
+          const auto value = child.get<std::string>("default_value");
+          out << "- **" << markdown_text(demangle(key)) << "** = "
+              << (value.empty() ? "*(empty)*" : "`" + value + "`") << "  \n"
+              << "  *"
+              << markdown_text(child.get<std::string>("pattern_description"))
               << "*";
           const auto documentation = child.get<std::string>("documentation");
           if (!documentation.empty())
-            out << "  \n  " << one_line(documentation);
+            out << "  \n  " << markdown_text(documentation);
           out << '\n';
         }
     for (const auto &[key, child] : node)
