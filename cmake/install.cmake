@@ -24,8 +24,13 @@ set(QSMPM_INSTALL_CMAKE_DIR lib/cmake/qsmpm)
 # The installed driver finds libqsmpm.so next to it, wherever the prefix is
 # (the prefix is chosen only by `cmake --install --prefix`, after
 # configuring); in the build tree CMake's build RPATH does the same.
+# Both keep the directories of the libraries they link outside the system
+# directories (a deal.II, MPI or HDF5 elsewhere) in their installed RPATH.
 set_target_properties(qsmpm_driver PROPERTIES
-  INSTALL_RPATH "$ORIGIN/../lib")
+  INSTALL_RPATH "$ORIGIN/../lib"
+  INSTALL_RPATH_USE_LINK_PATH TRUE)
+set_target_properties(qsmpm PROPERTIES
+  INSTALL_RPATH_USE_LINK_PATH TRUE)
 set_target_properties(qsmpm PROPERTIES EXPORT_NAME qsmpm)
 set_target_properties(qsmpm_driver PROPERTIES EXPORT_NAME driver)
 
