@@ -13,20 +13,17 @@
 // register the models (QSMPM_REGISTER_CONSTITUTIVE_MODEL), so they must be
 // loaded before the parameters are declared. --plugin may be repeated and
 // may come before or after the options above.
-#include <deal.II/base/config.h>
-
-#include <deal.II/base/mpi.h>
-
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
-
+#include <deal.II/base/config.h>
+#include <deal.II/base/mpi.h>
 #include <dlfcn.h>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/base/version.h>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -136,8 +133,9 @@ namespace
               heading = true;
             }
           const auto value = child.get<std::string>("default_value");
-          out << "- **" << markdown_text(demangle(key)) << "** = "
-              << (value.empty() ? "*(empty)*" : "`" + value + "`") << "  \n"
+          out << "- **" << markdown_text(demangle(key))
+              << "** = " << (value.empty() ? "*(empty)*" : "`" + value + "`")
+              << "  \n"
               << "  *"
               << markdown_text(child.get<std::string>("pattern_description"))
               << "*";

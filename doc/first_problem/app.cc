@@ -5,7 +5,6 @@
 // It prints the plate force and the analytical value E/(1-nu^2) delta/H W.
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
-
 #include <iostream>
 #include <memory>
 #include <qsmpm/base/utilities.h>

@@ -14,12 +14,11 @@
 //    the solver tolerance),
 //  - the version macros of qsmpm/base/version.h.
 // It prints PASS/FAIL lines and exits non-zero on any failure.
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <iomanip>
 #include <iostream>
 #include <qsmpm/base/utilities.h>
@@ -78,11 +77,11 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      ConditionalOStream out(std::cout,
-                             Utilities::MPI::this_mpi_process(
-                               MPI_COMM_WORLD) == 0);
+      ConditionalOStream               out(std::cout,
+                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                               0);
       AssertThrow(argc > 1, ExcMessage("Usage: app kg.prm"));
-      bool ok = true;
+      bool ok    = true;
       auto check = [&](const std::string &what, const bool passed) {
         out << (passed ? "PASS: " : "FAIL: ") << what << std::endl;
         ok = ok && passed;
