@@ -1,17 +1,56 @@
 // The general driver: runs any quasi-static problem described by a .prm file.
 //
-//   qsmpm problem.prm          run it
-//   qsmpm --resume problem.prm continue from the newest checkpoint in the
-//                              output directory (Output/Checkpoint interval)
-//   qsmpm --print-parameters   every parameter, its default and documentation
+//   qsmpm problem.prm                       run it
+//   qsmpm --resume problem.prm              continue from the newest
+//                                           checkpoint in the output
+//                                           directory (Output/Checkpoint
+//                                           interval, doc/restart.md)
+//   qsmpm --plugin libmodel.so problem.prm  load user models first
+//   qsmpm --print-parameters                every parameter, its default and
+//                                           documentation
+//   qsmpm --print-parameters-markdown       the same as Markdown (the
+//                                           source of doc/parameters.md)
+//   qsmpm --version                         qsmpm and deal.II versions
+//
+// Plugins are shared libraries with user-defined constitutive models (see
+// doc/user_models.md): dlopen() runs their static initializers, which
+// register the models (QSMPM_REGISTER_CONSTITUTIVE_MODEL), so they must be
+// loaded before the parameters are declared. --plugin may be repeated and
+// may come before or after the options above.
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+#include <deal.II/base/config.h>
 #include <deal.II/base/mpi.h>
+#include <dlfcn.h>
+#include <filesystem>
 #include <iostream>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/base/version.h>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace
 {
   using namespace dealii;
+
+  const char *const usage =
+    "Usage: qsmpm [--plugin <library.so>]... [--resume] <file.prm>\n"
+    "       qsmpm [--plugin <library.so>]... --print-parameters\n"
+    "       qsmpm --version | --help\n"
+    "\n"
+    "  <file.prm>            run the problem described by the parameter "
+    "file\n"
+    "  --resume              continue from the newest checkpoint in the\n"
+    "                        output directory (doc/restart.md)\n"
+    "  --plugin <lib.so>     load a shared library with user-defined models\n"
+    "                        before reading parameters (repeatable)\n"
+    "  --print-parameters    print every parameter with its default and\n"
+    "                        documentation (with the plugins' models)\n"
+    "  --print-parameters-markdown\n"
+    "                        the same as a Markdown page (doc/parameters.md)\n"
+    "  --version             print the versions of qsmpm and deal.II\n";
 
   template <int dim>
   void
@@ -37,6 +76,135 @@ namespace
       problem.resume();
     problem.run();
   }
+
+  /**
+   * The inverse of the name mangling of ParameterHandler's XML output,
+   * which writes every character other than [a-zA-Z0-9] as _xx (hex).
+   */
+  std::string
+  demangle(const std::string &name)
+  {
+    std::string result;
+    for (std::size_t i = 0; i < name.size(); ++i)
+      if (name[i] == '_' && i + 2 < name.size())
+        {
+          result.push_back(
+            static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16)));
+          i += 2;
+        }
+      else
+        result.push_back(name[i]);
+    return result;
+  }
+
+  /**
+   * Text on one line, for a Markdown list item, with the characters that
+   * Markdown would interpret (emphasis, code, HTML tags, links) escaped.
+   */
+  std::string
+  markdown_text(const std::string &text)
+  {
+    std::string result;
+    for (const char c : text)
+      if (c == '\n' || c == '\t')
+        result.push_back(' ');
+      else
+        {
+          if (std::string("\\`*_<>[]|").find(c) != std::string::npos)
+            result.push_back('\\');
+          result.push_back(c);
+        }
+    return result;
+  }
+
+
+
+  /**
+   * Write the entries of @p node (a subsection of the XML tree printed by
+   * ParameterHandler) and then, recursively, its subsections, each under a
+   * heading with its full path.
+   */
+  void
+  write_markdown(const boost::property_tree::ptree &node,
+                 const std::string                 &path,
+                 std::ostream                      &out)
+  {
+    bool heading = false;
+    for (const auto &[key, child] : node)
+      if (child.get_child_optional("value"))
+        {
+          if (!heading)
+            {
+              out << '\n'
+                  << (path.empty() ? "## Top level" : "## `" + path + "`")
+                  << "\n\n";
+              heading = true;
+            }
+          const auto value = child.get<std::string>("default_value");
+          out << "- **" << markdown_text(demangle(key))
+              << "** = " << (value.empty() ? "*(empty)*" : "`" + value + "`")
+              << "  \n"
+              << "  *"
+              << markdown_text(child.get<std::string>("pattern_description"))
+              << "*";
+          const auto documentation = child.get<std::string>("documentation");
+          if (!documentation.empty())
+            out << "  \n  " << markdown_text(documentation);
+          out << '\n';
+        }
+    for (const auto &[key, child] : node)
+      if (!child.get_child_optional("value"))
+        write_markdown(child,
+                       (path.empty() ? "" : path + "/") + demangle(key),
+                       out);
+  }
+
+  /// The parameter reference doc/parameters.md (2D, the registered models).
+  void
+  print_markdown(ParameterHandler &prm, std::ostream &out)
+  {
+    std::stringstream xml;
+    prm.print_parameters(xml, ParameterHandler::XML);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_xml(xml, tree);
+    out << "# Parameter reference\n\n"
+        << "Every entry of a qsmpm parameter file, by subsection: its "
+           "default value, the\nvalues it accepts and its documentation, "
+           "for `set Dimension = 2` (in 3D\nlists of coordinates have three "
+           "components) and the models built into\nqsmpm "
+        << QSMPM_VERSION
+        << " (with `--plugin`, the driver also lists the plugins' "
+           "models).\n\n"
+        << "Generated by `qsmpm --print-parameters-markdown`; do not edit, "
+           "run\n`make parameter_reference` in the build directory after "
+           "changing a\ndeclaration (the test `parameter_reference` "
+           "checks that this page is\nup to date).\n";
+    write_markdown(tree.get_child("ParameterHandler"), "", out);
+  }
+
+  /**
+   * dlopen() a plugin with RTLD_NOW | RTLD_GLOBAL (all symbols resolved now,
+   * so that a missing one is reported here and not in the middle of a run).
+   * A name that exists as a file is opened as that file (dlopen() alone
+   * would search only the library path for a name without a '/'); any
+   * other name is left to the library search (LD_LIBRARY_PATH, RPATH).
+   * The library is never closed: the registry keeps its factory functions.
+   */
+  void
+  load_plugin(const std::string &name)
+  {
+    std::string path = name;
+    if (name.find('/') == std::string::npos && std::filesystem::exists(name))
+      path = "./" + name;
+    dlerror();
+    if (dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL) == nullptr)
+      {
+        const char *reason = dlerror();
+        AssertThrow(false,
+                    ExcMessage("Cannot load the plugin <" + name + ">: " +
+                               (reason != nullptr ? reason : "unknown error")));
+      }
+  }
 } // namespace
 
 int
@@ -45,27 +213,87 @@ main(int argc, char *argv[])
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool        resume = argc > 2 && std::string(argv[1]) == "--resume";
-      const std::string argument = argc > 1 ? argv[resume ? 2 : 1] : "";
-      if (argument.empty() || argument == "--help" || argument == "-h" ||
-          argument == "--resume")
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+      // The command line: options and at most one parameter file.
+      std::vector<std::string> plugins;
+      std::string              action, filename;
+      bool                     resume = false;
+      for (int i = 1; i < argc; ++i)
         {
-          std::cout
-            << "Usage: qsmpm [--resume] <file.prm> | --print-parameters\n";
-          return argument.empty() || argument == "--resume" ? 1 : 0;
+          const std::string argument = argv[i];
+          if (argument == "--plugin")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--plugin needs a library name."));
+              plugins.emplace_back(argv[++i]);
+            }
+          else if (argument == "--resume")
+            resume = true;
+          else if (argument.rfind("--plugin=", 0) == 0)
+            plugins.push_back(argument.substr(9));
+          else if (argument == "--help" || argument == "-h" ||
+                   argument == "--version" ||
+                   argument == "--print-parameters" ||
+                   argument == "--print-parameters-markdown")
+            action = argument;
+          else if (!argument.empty() && argument[0] == '-')
+            {
+              if (root)
+                std::cerr << "qsmpm: unknown option <" << argument << ">\n"
+                          << usage;
+              return 1;
+            }
+          else if (filename.empty())
+            filename = argument;
+          else
+            {
+              if (root)
+                std::cerr << "qsmpm: more than one parameter file (<"
+                          << filename << ">, <" << argument << ">)\n"
+                          << usage;
+              return 1;
+            }
         }
-      if (argument == "--print-parameters")
+
+      if (action == "--help" || action == "-h" ||
+          (action.empty() && filename.empty()))
+        {
+          if (root)
+            std::cout << usage;
+          return action.empty() ? 1 : 0;
+        }
+      if (action == "--version")
+        {
+          if (root)
+            std::cout << "qsmpm " << QSMPM_VERSION << " (deal.II "
+                      << DEAL_II_PACKAGE_VERSION << ")" << std::endl;
+          return 0;
+        }
+
+      for (const auto &plugin : plugins)
+        load_plugin(plugin);
+
+      if (action == "--print-parameters")
         {
           ParameterHandler prm;
           declare<2>(prm);
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          if (root)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
-      if (qsmpm::Utils::read_dimension(argument) == 2)
-        run<2>(argument, resume);
+      if (action == "--print-parameters-markdown")
+        {
+          ParameterHandler prm;
+          declare<2>(prm);
+          if (root)
+            print_markdown(prm, std::cout);
+          return 0;
+        }
+      if (qsmpm::Utils::read_dimension(filename) == 2)
+        run<2>(filename, resume);
       else
-        run<3>(argument, resume);
+        run<3>(filename, resume);
     }
   catch (std::exception &exc)
     {

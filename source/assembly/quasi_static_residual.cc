@@ -118,7 +118,10 @@ namespace qsmpm
     const double *du_values = du_ghosted.trilinos_vector()[0];
     double       *force     = local_force->Values();
     if (!write_back)
-      local_force->PutScalar(0.);
+      {
+        local_force->PutScalar(0.);
+        min_volume_ratio = std::numeric_limits<double>::infinity();
+      }
 
     double du_cell[max_dofs];
     double f_cell[max_dofs];
@@ -209,6 +212,10 @@ namespace qsmpm
                     // grad_n N.
                     volume = data[offsets.initial_volume];
                     P      = Tensor<2, dim>(tau) * transpose(invert(delta_F));
+                    if (!write_back)
+                      min_volume_ratio =
+                        std::min(min_volume_ratio,
+                                 det_delta_F * data[offsets.J]);
                     if (write_back)
                       {
                         const double J = determinant(kinematics.F);
@@ -241,6 +248,8 @@ namespace qsmpm
                 const double J = (1. + trace(d_eps)) * data[offsets.J];
                 volume = update_volumes ? J * data[offsets.initial_volume] :
                                           data[offsets.initial_volume];
+                if (!write_back)
+                  min_volume_ratio = std::min(min_volume_ratio, J);
                 if (write_back)
                   {
                     Utils::write_symmetric<dim>(old.strain + d_eps,
@@ -309,6 +318,15 @@ namespace qsmpm
         total_volume += omega;
       }
     return sum / total_volume;
+  }
+
+
+
+  template <int dim>
+  double
+  QuasiStaticResidual<dim>::minimum_volume_ratio() const
+  {
+    return min_volume_ratio;
   }
 
 

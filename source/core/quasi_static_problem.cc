@@ -240,6 +240,27 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
+
+      // A converged increment may still have turned a point inside out: at
+      // small strain J = (1 + tr d eps) J_old can pass zero while the
+      // residual stays finite. Such a step is rejected (and cut back) like
+      // one that did not converge. The residual is evaluated once more at
+      // du: the J it records must be that of the accepted increment, not of
+      // whatever trial Newton evaluated last (R itself is unchanged).
+      if (report.converged)
+        {
+          op.residual(du, R);
+          const double min_J = dealii::Utilities::MPI::min(
+            residual->minimum_volume_ratio(), communicator);
+          if (!(min_J > 0.))
+            {
+              std::ostringstream message;
+              message << "a material point was turned inside out (J = "
+                      << std::setprecision(3) << min_J << " <= 0)";
+              report.converged = false;
+              report.failure   = message.str();
+            }
+        }
     }
     if (!report.converged)
       return false;

@@ -2,8 +2,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <map>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/constraint_checks.h>
 #include <unordered_map>
 
 namespace qsmpm
@@ -271,8 +273,17 @@ namespace qsmpm
     const IndexSet &owned = grid.locally_owned_dofs();
     Vector<double>  g_old(dim), g_new(dim);
 
-    // Constrain component c of a vertex with global dof index `dof`.
+    // Per condition: this rank's held nodes that carry material, and the
+    // largest prescribed increment; and all held degrees of freedom with
+    // material (for the rigid-body check).
+    std::vector<unsigned int> n_active(dirichlet.size(), 0);
+    std::vector<double>       largest_increment(dirichlet.size(), 0.);
+    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>>
+      held;
+
+    // Constrain component c of vertex x with global dof index `dof`.
     auto constrain = [&](const unsigned int            condition,
+                         const Point<dim>             &x,
                          const types::global_dof_index dof,
                          const unsigned int            c,
                          const double                  increment) {
@@ -282,7 +293,13 @@ namespace qsmpm
           constraints.set_inhomogeneity(dof, increment);
         }
       if (owned.is_element(dof))
-        constrained_dofs[condition].emplace_back(dof, c);
+        {
+          constrained_dofs[condition].emplace_back(dof, c);
+          largest_increment[condition] =
+            std::max(largest_increment[condition], std::abs(increment));
+          if (!inactive_dofs.is_element(dof))
+            held.emplace(dof, std::make_pair(x, c));
+        }
     };
 
     for (unsigned int k = 0; k < dirichlet.size(); ++k)
@@ -318,6 +335,7 @@ namespace qsmpm
                           for (unsigned int c = 0; c < dim; ++c)
                             if (mask[c])
                               constrain(k,
+                                        face->vertex(v),
                                         face->vertex_dof_index(v, c),
                                         c,
                                         g_new[c] - g_old[c]);
@@ -332,6 +350,7 @@ namespace qsmpm
                     for (unsigned int c = 0; c < dim; ++c)
                       if (condition.components[c])
                         constrain(k,
+                                  cell->vertex(v),
                                   cell->vertex_dof_index(v, c),
                                   c,
                                   g_new[c] - g_old[c]);
@@ -345,6 +364,30 @@ namespace qsmpm
                                                 grid.get_communicator()) > 0,
                     ExcMessage("The displacement condition <" + condition.name +
                                "> does not select any grid node."));
+        for (const auto &[dof, c] : dofs)
+          n_active[k] += !inactive_dofs.is_element(dof);
+        ConstraintChecks::assert_condition_acts(condition.name,
+                                                n_active[k],
+                                                largest_increment[k],
+                                                t_old,
+                                                t_new,
+                                                grid.get_communicator());
+      }
+
+    // Without periodicity (which holds the body itself) the conditions on
+    // nodes with material must prevent every rigid-body motion, or the
+    // step's linear systems are singular.
+    if (grid.periodic_directions().empty())
+      {
+        std::vector<std::pair<Point<dim>, unsigned int>> held_nodes;
+        held_nodes.reserve(held.size());
+        for (const auto &entry : held)
+          held_nodes.push_back(entry.second);
+        ConstraintChecks::assert_no_rigid_body_motion<dim>(
+          held_nodes,
+          grid.lower_corner() + 0.5 * (grid.upper_corner() - grid.lower_corner()),
+          grid.lower_corner().distance(grid.upper_corner()),
+          grid.get_communicator());
       }
 
     // Nodes with no point in their support have no equation: fix their

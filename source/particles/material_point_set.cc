@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <iostream>
 #include <numeric>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -309,6 +310,31 @@ namespace qsmpm
   MaterialPointSet<dim>::fill(const Parameters &parameters)
   {
     const Parameters p = parameters;
+    if (p.restrict_to_box)
+      {
+        // A box reaching beyond the grid is clipped to it; say so, since a
+        // body smaller than intended changes every result.
+        const Point<dim> &lower = grid.lower_corner(),
+                         &upper = grid.upper_corner();
+        const double      tolerance = 1e-12 * lower.distance(upper);
+        bool              outside   = false;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            AssertThrow(p.region_lower[d] < p.region_upper[d],
+                        ExcMessage("Material points: <Region lower corner> "
+                                   "must lie below <Region upper corner> in "
+                                   "every direction."));
+            outside = outside || p.region_lower[d] < lower[d] - tolerance ||
+                      p.region_upper[d] > upper[d] + tolerance;
+          }
+        if (outside &&
+            Utilities::MPI::this_mpi_process(grid.get_communicator()) == 0)
+          std::cerr << "Warning: Material points: the region box ("
+                    << p.region_lower << ") - (" << p.region_upper
+                    << ") reaches beyond the grid (" << lower << ") - ("
+                    << upper << "); points are created only inside the grid."
+                    << std::endl;
+      }
     fill(
       [p](const Point<dim> &x) {
         if (!p.restrict_to_box)

@@ -100,6 +100,16 @@ namespace qsmpm
     unsigned long
     n_evaluations() const;
 
+    /**
+     * The smallest J = det F (finite strain) or J = (1 + tr d eps) J_old
+     * (small strain) of this rank's points at the increment of the last
+     * evaluate(); +infinity on a rank without points. A converged increment
+     * with J <= 0 somewhere has turned a point inside out (possible at small
+     * strain, where the residual stays finite) and must be rejected.
+     */
+    double
+    minimum_volume_ratio() const;
+
   private:
     /// The loop over cells and points shared by evaluate() and commit().
     template <bool write_back>
@@ -134,6 +144,7 @@ namespace qsmpm
     std::unique_ptr<Epetra_Import> importer;
     std::unique_ptr<Epetra_Export> exporter;
     mutable unsigned long          evaluation_count = 0;
+    mutable double                 min_volume_ratio = 0.;
   };
 } // namespace qsmpm
 

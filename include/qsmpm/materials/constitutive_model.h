@@ -206,11 +206,19 @@ namespace qsmpm
 } // namespace qsmpm
 
 /**
- * Register a model class for dim = 2 and 3 (use inside namespace qsmpm).
- * The class must provide
- * `static void declare_parameters(ParameterHandler &)` (entries of its own
- * subsection) and a constructor taking the ParameterHandler positioned in
- * that subsection.
+ * Register a model class for dim = 2 and 3. Use it at namespace scope in
+ * the namespace of the class (qsmpm, or a user's own namespace: everything
+ * of qsmpm is fully qualified here), in a .cc file, once per class. The
+ * class template `classname<dim>` must provide
+ * `static void declare_parameters(dealii::ParameterHandler &)` (entries of
+ * its own subsection, which is named @p name) and a constructor taking the
+ * ParameterHandler positioned in that subsection. @p name is what
+ * `set Model = ...` selects; it must be unique among all models.
+ *
+ * The registration runs during static initialization: of libqsmpm.so for
+ * the built-in models, of the user's executable for a model compiled into
+ * it, and of a plugin library when the driver loads it with
+ * `qsmpm --plugin` (see doc/user_models.md).
  */
 #define QSMPM_REGISTER_CONSTITUTIVE_MODEL(classname, name, description) \
   namespace                                                             \
@@ -218,14 +226,14 @@ namespace qsmpm
     template <int dim>                                                  \
     bool register_##classname()                                         \
     {                                                                   \
-      return ConstitutiveModelFactory<dim>::register_model(             \
+      return ::qsmpm::ConstitutiveModelFactory<dim>::register_model(    \
         name,                                                           \
         description,                                                    \
-        [](dealii::ParameterHandler &prm) {                             \
+        [](::dealii::ParameterHandler &prm) {                           \
           classname<dim>::declare_parameters(prm);                      \
         },                                                              \
-        [](dealii::ParameterHandler &prm) {                             \
-          return std::unique_ptr<ConstitutiveModel<dim>>(               \
+        [](::dealii::ParameterHandler &prm) {                           \
+          return std::unique_ptr<::qsmpm::ConstitutiveModel<dim>>(      \
             new classname<dim>(prm));                                   \
         });                                                             \
     }                                                                   \

@@ -1,0 +1,88 @@
+## ---------------------------------------------------------------------
+## Installation and the CMake package qsmpm (included by the top-level
+## CMakeLists.txt).
+##
+##   cmake --install build --prefix P
+##
+## installs
+##   P/include/qsmpm/...                  the headers (with base/version.h)
+##   P/lib/libqsmpm.so                    the library
+##   P/bin/qsmpm                          the general driver
+##   P/lib/cmake/qsmpm/qsmpmConfig.cmake  the package (+ ConfigVersion, Targets)
+##   P/share/qsmpm/examples/<name>/       the examples' sources, .prm and data
+##                                        files, each with a CMakeLists.txt
+##   P/share/doc/qsmpm/                   doc/
+##
+## A user project then needs find_package(qsmpm) and
+## target_link_libraries(app qsmpm::qsmpm); see doc/first_problem.md. The
+## build tree is a package, too: -Dqsmpm_DIR=<this build directory>.
+## ---------------------------------------------------------------------
+include(CMakePackageConfigHelpers)
+
+set(QSMPM_INSTALL_CMAKE_DIR lib/cmake/qsmpm)
+
+# The installed driver finds libqsmpm.so next to it, wherever the prefix is
+# (the prefix is chosen only by `cmake --install --prefix`, after
+# configuring); in the build tree CMake's build RPATH does the same.
+# Both keep the directories of the libraries they link outside the system
+# directories (a deal.II, MPI or HDF5 elsewhere) in their installed RPATH.
+set_target_properties(qsmpm_driver PROPERTIES
+  INSTALL_RPATH "$ORIGIN/../lib"
+  INSTALL_RPATH_USE_LINK_PATH TRUE)
+set_target_properties(qsmpm PROPERTIES
+  INSTALL_RPATH_USE_LINK_PATH TRUE)
+set_target_properties(qsmpm PROPERTIES EXPORT_NAME qsmpm)
+set_target_properties(qsmpm_driver PROPERTIES EXPORT_NAME driver)
+
+install(TARGETS qsmpm qsmpm_driver
+  EXPORT qsmpmTargets
+  LIBRARY DESTINATION lib
+  ARCHIVE DESTINATION lib
+  RUNTIME DESTINATION bin)
+
+# Headers: the sources' and the generated version.h.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/include/ ${CMAKE_BINARY_DIR}/include/
+  DESTINATION include
+  FILES_MATCHING PATTERN "*.h")
+
+# Examples, as deal.II installs its tutorial programs: every file of
+# examples/<name>/ (sources, .prm files, plot scripts, the odf data of
+# polycrystal) plus a CMakeLists.txt that builds the example against the
+# installed package.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/examples/
+  DESTINATION share/qsmpm/examples
+  PATTERN "output*" EXCLUDE)
+foreach(_example ${QSMPM_EXAMPLES})
+  if(EXISTS ${CMAKE_SOURCE_DIR}/examples/${_example}/${_example}.cc)
+    set(QSMPM_EXAMPLE_NAME ${_example})
+    configure_file(${CMAKE_SOURCE_DIR}/cmake/example_CMakeLists.txt.in
+      ${CMAKE_BINARY_DIR}/example_cmake/${_example}/CMakeLists.txt @ONLY)
+    install(FILES ${CMAKE_BINARY_DIR}/example_cmake/${_example}/CMakeLists.txt
+      DESTINATION share/qsmpm/examples/${_example})
+  endif()
+endforeach()
+
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/doc/ DESTINATION share/doc/qsmpm)
+
+# The package. qsmpmConfig.cmake is the same file in the build tree and in
+# the installation: it finds deal.II (the installation used here first),
+# then includes qsmpmTargets.cmake next to it.
+set(QSMPM_DEAL_II_DIR "${deal.II_DIR}")
+configure_file(${CMAKE_SOURCE_DIR}/cmake/qsmpmConfig.cmake.in
+  ${CMAKE_BINARY_DIR}/qsmpmConfig.cmake @ONLY)
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/qsmpmConfigVersion.cmake
+  VERSION ${PROJECT_VERSION}
+  COMPATIBILITY SameMajorVersion)
+
+install(EXPORT qsmpmTargets
+  NAMESPACE qsmpm::
+  DESTINATION ${QSMPM_INSTALL_CMAKE_DIR})
+install(FILES
+  ${CMAKE_BINARY_DIR}/qsmpmConfig.cmake
+  ${CMAKE_BINARY_DIR}/qsmpmConfigVersion.cmake
+  DESTINATION ${QSMPM_INSTALL_CMAKE_DIR})
+
+# The build tree as a package: -Dqsmpm_DIR=<build directory>.
+export(EXPORT qsmpmTargets
+  NAMESPACE qsmpm::
+  FILE ${CMAKE_BINARY_DIR}/qsmpmTargets.cmake)
