@@ -42,11 +42,14 @@ namespace qsmpm
                         "(paper A.4); about 1e-7 for double precision.");
       prm.declare_entry("Preconditioner",
                         "amg",
-                        Patterns::Selection("none|jacobi|amg"),
+                        Patterns::Selection("none|jacobi|amg|direct"),
                         "Preconditioner of GMRES, built once per load step "
                         "from the stiffness at the points: none (the "
-                        "paper's solver), jacobi, or amg (algebraic "
-                        "multigrid with the rigid-body near-null space).");
+                        "paper's solver), jacobi, amg (algebraic "
+                        "multigrid with the rigid-body near-null space), or "
+                        "direct (a sparse LU factorization by Amesos KLU on "
+                        "one rank: for small problems, up to a few 10^4 "
+                        "dofs).");
       prm.declare_entry("Forcing term",
                         "constant",
                         Patterns::Selection("constant|eisenstat-walker"),

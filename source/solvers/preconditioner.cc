@@ -61,9 +61,11 @@ namespace qsmpm
       return Type::none;
     if (name == "jacobi")
       return Type::jacobi;
+    if (name == "direct")
+      return Type::direct;
     AssertThrow(name == "amg",
                 ExcMessage("Unknown preconditioner <" + name +
-                           ">: use none, jacobi or amg."));
+                           ">: use none, jacobi, amg or direct."));
     return Type::amg;
   }
 
@@ -126,6 +128,13 @@ namespace qsmpm
         parameters.set("null space: vectors", rigid_body_modes->Values());
         amg.initialize(K, parameters);
       }
+    else if (preconditioner_type == Type::direct)
+      {
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          direct_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+        direct->initialize(K);
+      }
   }
 
 
@@ -145,6 +154,9 @@ namespace qsmpm
           break;
         case Type::amg:
           amg.vmult(dst, src);
+          break;
+        case Type::direct:
+          direct->solve(dst, src);
           break;
       }
     // J ~ -K.
