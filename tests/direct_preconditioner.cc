@@ -34,11 +34,15 @@ struct Result
 {
   double                        gmres_per_newton;
   Tensor<1, 2>                  reaction;
+  unsigned int                  steps;
+  unsigned int                  builds;
   TrilinosWrappers::MPI::Vector increment;
 };
 
 Result
-solve(const std::string &preconditioner, const bool plastic)
+solve(const std::string &preconditioner,
+      const bool         plastic,
+      const unsigned int reuse_steps = 1)
 {
   constexpr int                dim = 2;
   qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
@@ -75,7 +79,8 @@ solve(const std::string &preconditioner, const bool plastic)
   prm.nonlinear_solver.linear_tolerance      = 1e-8;
   prm.nonlinear_solver.max_linear_iterations = 2000;
   prm.nonlinear_solver.gmres_restart         = 200;
-  prm.load_stepping.n_steps                  = plastic ? 4 : 1;
+  prm.load_stepping.n_steps                  = plastic ? 8 : 1;
+  prm.nonlinear_solver.preconditioner_reuse_steps = reuse_steps;
   prm.output.directory                       = "results";
   prm.output.interval                        = 0;
   problem.run();
@@ -87,6 +92,8 @@ solve(const std::string &preconditioner, const bool plastic)
     }
   return {double(gmres) / newton,
           problem.reactions()[0],
+          static_cast<unsigned int>(problem.step_reports().size()),
+          problem.n_preconditioner_builds(),
           problem.increment()};
 }
 
@@ -116,7 +123,7 @@ main(int argc, char *argv[])
         difference.l2_norm() / amg.increment.l2_norm(),
         1e-6);
 
-  deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain in 4 steps"
+  deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain in 8 steps"
           << std::endl;
   const Result direct_plastic = solve("direct", true);
   const Result amg_plastic    = solve("amg", true);
@@ -129,4 +136,17 @@ main(int argc, char *argv[])
   check_at_least("  |R_y| / (elastic response E eps width = 1)",
                  1. - std::abs(amg_plastic.reaction[1]),
                  0.5);
+
+  deallog << "the same with Preconditioner reuse steps = 4" << std::endl;
+  for (const std::string preconditioner : {"direct", "amg"})
+    {
+      const Result reused = solve(preconditioner, true, 4);
+      check_that("  " + preconditioner + ": builds < steps and >= steps / 4",
+                 reused.builds < reused.steps &&
+                   4 * reused.builds >= reused.steps);
+      check("  " + preconditioner + ": |R_y(reused) - R_y(every step)| / |R_y|",
+            std::abs(reused.reaction[1] - amg_plastic.reaction[1]) /
+              std::abs(amg_plastic.reaction[1]),
+            1e-6);
+    }
 }

@@ -165,6 +165,7 @@ namespace qsmpm
           prm_values.material_points.update_volumes);
         preconditioner = Preconditioner<dim>(Preconditioner<dim>::parse_type(
           prm_values.nonlinear_solver.preconditioner));
+        preconditioner_age = 0;
         if (preconditioner.needs_matrix())
           tangent.reinit(background_grid, points().get_formulation().gimp());
       }
@@ -217,8 +218,19 @@ namespace qsmpm
                                   f_ext);
       residual->set_external_force(f_ext);
     }
-    if (preconditioner.needs_matrix())
+    // The stiffness and its preconditioner, unless the one of an earlier
+    // step may serve again: it stays an approximate inverse of the tangent
+    // as long as the points and their state change little, and GMRES, which
+    // works with the exact Jacobian-vector products, only needs a few more
+    // iterations. K is not reassembled either (with GIMP its pattern may
+    // change, and AMG and KLU refer to it).
+    const auto &solver_prm = prm_values.nonlinear_solver;
+    if (preconditioner.needs_matrix() &&
+        (preconditioner_age == 0 ||
+         preconditioner_age >= solver_prm.preconditioner_reuse_steps))
       {
+        preconditioner_age = 0;
+        ++preconditioner_builds;
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
           tangent.assemble(background_grid,
@@ -240,6 +252,18 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
+
+      // Reuse bookkeeping: a failed step, or one in which GMRES slowed down
+      // by more than the growth factor, gets a new preconditioner next time.
+      const double rate =
+        double(report.linear_iterations) /
+        std::max<unsigned int>(1, report.newton_iterations);
+      if (preconditioner_age == 0)
+        preconditioner_rate = std::max(rate, 1.);
+      ++preconditioner_age;
+      if (!report.converged ||
+          rate > solver_prm.preconditioner_reuse_growth * preconditioner_rate)
+        preconditioner_age = 0;
 
       // A converged increment may still have turned a point inside out: at
       // small strain J = (1 + tr d eps) J_old can pass zero while the
@@ -515,6 +539,15 @@ namespace qsmpm
   {
     save_user_state    = save;
     restore_user_state = restore;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  QuasiStaticProblem<dim>::n_preconditioner_builds() const
+  {
+    return preconditioner_builds;
   }
 
 

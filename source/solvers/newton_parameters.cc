@@ -50,6 +50,24 @@ namespace qsmpm
                         "direct (a sparse LU factorization by Amesos KLU on "
                         "one rank: for small problems, up to a few 10^4 "
                         "dofs).");
+      prm.declare_entry(
+        "Preconditioner reuse steps",
+        "1",
+        Patterns::Integer(1),
+        "The preconditioner (AMG hierarchy or LU factors) may serve up to "
+        "this many load steps before it is built anew from the stiffness of "
+        "the current step. 1: a new one every step (the default). Larger "
+        "values save the set-up where the stiffness changes slowly; a "
+        "preconditioner is always rebuilt after a failed step and when "
+        "GMRES slows down (Preconditioner reuse growth).");
+      prm.declare_entry(
+        "Preconditioner reuse growth",
+        "2",
+        Patterns::Double(1.),
+        "With reuse: the preconditioner is rebuilt before the next step "
+        "once a step needed more than this factor times the GMRES "
+        "iterations per Newton iteration of the first step after the last "
+        "rebuild.");
       prm.declare_entry("Forcing term",
                         "constant",
                         Patterns::Selection("constant|eisenstat-walker"),
@@ -100,6 +118,10 @@ namespace qsmpm
       sqrt_eps_prec         = prm.get_double("Finite difference parameter");
       max_line_search_steps = prm.get_integer("Line search steps");
       preconditioner        = prm.get("Preconditioner");
+      preconditioner_reuse_steps =
+        prm.get_integer("Preconditioner reuse steps");
+      preconditioner_reuse_growth =
+        prm.get_double("Preconditioner reuse growth");
       eisenstat_walker      = prm.get("Forcing term") == "eisenstat-walker";
       verbose               = prm.get_bool("Verbose");
       linear_predictor      = prm.get("Initial guess") == "linear predictor";

@@ -157,6 +157,11 @@ namespace qsmpm
     void
     set_step_callback(const std::function<bool(const StepReport &)> &callback);
 
+    /// How many times the preconditioner has been built in this run (once
+    /// per load step unless Nonlinear solver/Preconditioner reuse steps > 1).
+    unsigned int
+    n_preconditioner_builds() const;
+
     /// Reaction forces of the last accepted step, per displacement condition.
     const std::vector<Tensor<1, dim>> &
     reactions() const;
@@ -193,6 +198,12 @@ namespace qsmpm
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
     Preconditioner<dim>                       preconditioner;
+    /// Load steps the preconditioner has served (0: build one before the
+    /// next step), and its GMRES iterations per Newton iteration in the
+    /// first of them (see Nonlinear solver/Preconditioner reuse steps).
+    unsigned int preconditioner_age    = 0;
+    double       preconditioner_rate   = 0.;
+    unsigned int preconditioner_builds = 0;
     StepConstraints                           step_constraints;
     VectorType                                du;
     VectorType                                R;

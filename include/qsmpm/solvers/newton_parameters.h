@@ -25,8 +25,14 @@ namespace qsmpm
     unsigned int gmres_restart         = 50;
     /// sqrt(eps_prec) of Kelley's difference parameter (A.4).
     double sqrt_eps_prec = 1e-7;
-    /// none, jacobi or amg (see Preconditioner).
+    /// none, jacobi, amg or direct (see Preconditioner).
     std::string preconditioner = "amg";
+    /// Load steps a preconditioner may serve before it is rebuilt (1 = a
+    /// new one every step, the default).
+    unsigned int preconditioner_reuse_steps = 1;
+    /// Rebuild early once GMRES needs this many times more iterations per
+    /// Newton iteration than in the first step after the last rebuild.
+    double preconditioner_reuse_growth = 2.;
     /// Eisenstat-Walker forcing terms instead of the fixed linear tolerance.
     bool eisenstat_walker = false;
     /// Backtracking line search on ||R|| (halving, at most this many times).
