@@ -63,17 +63,18 @@ namespace qsmpm
         Patterns::Selection("displacement|dissipation"),
         "displacement: the load factor of every step is prescribed (the "
         "paper's method; snap-backs are jumped over). dissipation: path "
-        "following, the load factor of a step is an unknown and each step "
-        "dissipates <Dissipation increment> (Gutierrez 2004), so that "
+        "following, the load factor of a step is an unknown and the "
+        "material points dissipate <Dissipation increment> in each step "
+        "(Gutierrez 2004; Verhoosel, Remmers and Gutierrez 2009), so that "
         "snap-backs are traced; steps that would need more than <Maximum "
-        "increment> are displacement-controlled. Needs displacement "
-        "conditions proportional to t and no other loads.");
+        "increment> are displacement-controlled. Needs a model that "
+        "computes its dissipation (decohesion), displacement conditions "
+        "proportional to t and no other loads.");
       prm.declare_entry("Dissipation increment",
                         "0.0",
                         Patterns::Double(0.),
-                        "With <Control> = dissipation: the energy each step "
-                        "dissipates, Delta tau = (P_0 Delta t - Delta P "
-                        "t_0) / 2 (P the force conjugate to t; in 2D per "
+                        "With <Control> = dissipation: the energy the "
+                        "material points dissipate in each step (in 2D per "
                         "unit thickness, J/m).");
     }
     prm.leave_subsection();
