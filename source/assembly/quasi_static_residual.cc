@@ -121,6 +121,7 @@ namespace qsmpm
       {
         local_force->PutScalar(0.);
         min_volume_ratio = std::numeric_limits<double>::infinity();
+        dissipated       = 0.;
       }
 
     double du_cell[max_dofs];
@@ -147,8 +148,8 @@ namespace qsmpm
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
-            Tensor<2, dim>       &grad_du = grad_du_scratch[p - range.first_point];
-            grad_du                       = 0.;
+            Tensor<2, dim> &grad_du = grad_du_scratch[p - range.first_point];
+            grad_du                 = 0.;
             for (unsigned int k = 0; k < stencil; ++k)
               for (unsigned int a = 0; a < dim; ++a)
                 grad_du[a] += du_cell[nodes[k] * dim + a] * grad_N[k];
@@ -260,6 +261,13 @@ namespace qsmpm
                   }
               }
 
+            if (!write_back)
+              dissipated +=
+                data[offsets.volume] *
+                model.dissipation(old,
+                                  ArrayView<const double>(state_scratch.data(),
+                                                          n_state));
+
             // (2.25): f_int_i = -Omega_p sigma_p . grad N_i, or its
             // finite-strain form -Omega_0 P grad_n N_i.
             const auto add_forces = [&](const auto &stress_measure) {
@@ -327,6 +335,15 @@ namespace qsmpm
   QuasiStaticResidual<dim>::minimum_volume_ratio() const
   {
     return min_volume_ratio;
+  }
+
+
+
+  template <int dim>
+  double
+  QuasiStaticResidual<dim>::dissipation() const
+  {
+    return dissipated;
   }
 
 

@@ -1,11 +1,12 @@
-#include <deal.II/base/mpi.h>
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/io/checkpoint.h>
+#include <qsmpm/solvers/path_following_newton.h>
 #include <sstream>
 #include <utility>
 
@@ -177,10 +178,21 @@ namespace qsmpm
 
 
   template <int dim>
-  bool
-  QuasiStaticProblem<dim>::advance(const double  t_old,
-                                   const double  t_new,
-                                   NewtonReport &report)
+  IndexSet
+  QuasiStaticProblem<dim>::inactive_dofs() const
+  {
+    const double h_dim = std::pow(background_grid.min_cell_size(), dim);
+    return cache.dofs_without_points(
+      background_grid,
+      points().get_offsets().volume,
+      prm_values.material_points.min_nodal_volume_fraction * h_dim);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::prepare_step(const double t_old, const double t_new)
   {
     setup_step_data();
 
@@ -192,17 +204,8 @@ namespace qsmpm
     {
       TimerOutput::Scope        scope(timer_output, "constraints and loads");
       AffineConstraints<double> constraints;
-      const double h_dim = std::pow(background_grid.min_cell_size(), dim);
-      bcs.make_constraints(background_grid,
-                           cache.dofs_without_points(
-                             background_grid,
-                             points().get_offsets().volume,
-                             prm_values.material_points
-                                 .min_nodal_volume_fraction *
-                               h_dim),
-                           t_old,
-                           t_new,
-                           constraints);
+      bcs.make_constraints(
+        background_grid, inactive_dofs(), t_old, t_new, constraints);
       step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
                               communicator);
@@ -241,6 +244,66 @@ namespace qsmpm
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(), background_grid);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::count_preconditioner_use(const NewtonReport &report)
+  {
+    // Reuse bookkeeping: a failed step, or one in which GMRES slowed down
+    // by more than the growth factor, gets a new preconditioner next time.
+    const double rate = double(report.linear_iterations) /
+                        std::max<unsigned int>(1, report.newton_iterations);
+    if (preconditioner_age == 0)
+      preconditioner_rate = std::max(rate, 1.);
+    ++preconditioner_age;
+    if (!report.converged ||
+        rate > prm_values.nonlinear_solver.preconditioner_reuse_growth *
+                 preconditioner_rate)
+      preconditioner_age = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::check_volume_ratios(const StepOperator<dim> &op,
+                                               NewtonReport            &report)
+  {
+    // A converged increment may still have turned a point inside out: at
+    // small strain J = (1 + tr d eps) J_old can pass zero while the
+    // residual stays finite. Such a step is rejected (and cut back) like
+    // one that did not converge. The residual is evaluated once more at
+    // du: the J it records must be that of the accepted increment, not of
+    // whatever trial Newton evaluated last (R itself is unchanged).
+    if (report.converged)
+      {
+        op.residual(du, R);
+        const double min_J =
+          dealii::Utilities::MPI::min(residual->minimum_volume_ratio(),
+                                      communicator);
+        if (!(min_J > 0.))
+          {
+            std::ostringstream message;
+            message << "a material point was turned inside out (J = "
+                    << std::setprecision(3) << min_J << " <= 0)";
+            report.converged = false;
+            report.failure   = message.str();
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::advance(const double  t_old,
+                                   const double  t_new,
+                                   NewtonReport &report)
+  {
+    prepare_step(t_old, t_new);
 
     // A.1 step 1: zero initial guess but for the prescribed increments.
     du = 0.;
@@ -252,75 +315,131 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
-
-      // Reuse bookkeeping: a failed step, or one in which GMRES slowed down
-      // by more than the growth factor, gets a new preconditioner next time.
-      const double rate =
-        double(report.linear_iterations) /
-        std::max<unsigned int>(1, report.newton_iterations);
-      if (preconditioner_age == 0)
-        preconditioner_rate = std::max(rate, 1.);
-      ++preconditioner_age;
-      if (!report.converged ||
-          rate > solver_prm.preconditioner_reuse_growth * preconditioner_rate)
-        preconditioner_age = 0;
-
-      // A converged increment may still have turned a point inside out: at
-      // small strain J = (1 + tr d eps) J_old can pass zero while the
-      // residual stays finite. Such a step is rejected (and cut back) like
-      // one that did not converge. The residual is evaluated once more at
-      // du: the J it records must be that of the accepted increment, not of
-      // whatever trial Newton evaluated last (R itself is unchanged).
-      if (report.converged)
-        {
-          op.residual(du, R);
-          const double min_J = dealii::Utilities::MPI::min(
-            residual->minimum_volume_ratio(), communicator);
-          if (!(min_J > 0.))
-            {
-              std::ostringstream message;
-              message << "a material point was turned inside out (J = "
-                      << std::setprecision(3) << min_J << " <= 0)";
-              report.converged = false;
-              report.failure   = message.str();
-            }
-        }
+      count_preconditioner_use(report);
+      check_volume_ratios(op, report);
     }
     if (!report.converged)
       return false;
-
-    {
-      TimerOutput::Scope scope(timer_output, "commit and move points");
-      residual->commit(du);
-      VectorType du_ghosted(background_grid.locally_owned_dofs(),
-                            background_grid.locally_relevant_dofs(),
-                            communicator);
-      du_ghosted         = du;
-      const double moved = points().advect(cache, du_ghosted);
-      last_reactions     = bcs.reactions(R, communicator);
-      const auto lost    = points().sort_into_cells();
-      // In parallel, deal.II finds a point's new cell only among the
-      // neighbours of its old one (the ghost layer).
-      if (lost > 0 &&
-          dealii::Utilities::MPI::n_mpi_processes(communicator) > 1 &&
-          moved >= background_grid.min_cell_size())
-        {
-          std::ostringstream message;
-          message << lost
-                  << " material points were lost: in a parallel run a point "
-                     "may move at most one cell per load step, and in this "
-                     "step a point moved "
-                  << std::setprecision(3)
-                  << moved / background_grid.min_cell_size()
-                  << " cells. Use more load steps.";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-      AssertThrow(lost == 0,
-                  ExcMessage(std::to_string(lost) +
-                             " material points left the background grid. "
-                             "Enlarge the grid around the body."));
-    }
+    commit_step();
     return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::advance_path_following(const double  t_old,
+                                                  const bool    allow_limit,
+                                                  const double  dissipation,
+                                                  const double  limit,
+                                                  NewtonReport &report,
+                                                  double       &t_new,
+                                                  double       &force_new)
+  {
+    // Path following scales the prescribed displacements with the unknown
+    // load factor; loads that are functions of t would need their own
+    // scaling, and the dissipation formula assumes that the prescribed
+    // displacements are the only work-conjugate of the load factor.
+    AssertThrow(!bcs.has_loads() && !bcs.has_macroscopic_gradient(),
+                ExcMessage("Load stepping: Control = dissipation needs a "
+                           "problem loaded by prescribed displacements only "
+                           "(no body force, traction, point load or "
+                           "macroscopic displacement gradient)."));
+
+    AssertThrow(model->computes_dissipation(),
+                ExcMessage("Load stepping: Control = dissipation needs a "
+                           "material model that computes its dissipation; <" +
+                           model->name() + "> does not."));
+
+    // The constraints of a unit load-factor increment: their
+    // inhomogeneities are the direction g of the prescribed increments.
+    prepare_step(t_old, t_old + 1.);
+    VectorType g(du);
+    g = 0.;
+    step_constraints.distribute(g);
+    AssertThrow(g.linfty_norm() > 0.,
+                ExcMessage("Load stepping: Control = dissipation needs a "
+                           "displacement condition that changes with the "
+                           "load factor; none does."));
+    if (!proportionality_checked)
+      {
+        // Delta D = (F_0 Delta t - Delta F t_0) / 2 holds for prescribed
+        // displacements t g; with another dependence on t the dissipation
+        // would be wrong without any sign of it.
+        AffineConstraints<double> doubled;
+        bcs.make_constraints(
+          background_grid, inactive_dofs(), t_old, t_old + 2., doubled);
+        double mismatch = 0.;
+        for (const auto i : background_grid.locally_owned_dofs())
+          if (doubled.is_constrained(i))
+            mismatch =
+              std::max(mismatch,
+                       std::abs(doubled.get_inhomogeneity(i) - 2. * g[i]));
+        mismatch = dealii::Utilities::MPI::max(mismatch, communicator);
+        AssertThrow(mismatch <= 1e-10 * g.linfty_norm(),
+                    ExcMessage("Load stepping: Control = dissipation needs "
+                               "prescribed displacements proportional to "
+                               "the load factor t (u = t g(x))."));
+        // (make_constraints() also recorded the dofs of the reactions
+        // again: the same ones.)
+        proportionality_checked = true;
+      }
+
+    double delta_lambda = 0.;
+    {
+      TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
+      const StepOperator<dim> op(*residual, step_constraints, preconditioner);
+      using Solver = PathFollowingNewton<StepOperator<dim>, VectorType>;
+      const Solver newton(prm_values.nonlinear_solver, &progress);
+      // The energy the points dissipate in the step (see
+      // PathFollowingNewton for why not the global formula of Gutierrez).
+      const typename Solver::Constraint constraint{0., 0., 1., dissipation};
+      report = newton.solve(
+        op, g, constraint, limit, allow_limit, du, delta_lambda, R, force_new);
+      count_preconditioner_use(report);
+      check_volume_ratios(op, report);
+    }
+    t_new = t_old + delta_lambda;
+    if (!report.converged)
+      return false;
+    commit_step();
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::commit_step()
+  {
+    TimerOutput::Scope scope(timer_output, "commit and move points");
+    residual->commit(du);
+    VectorType du_ghosted(background_grid.locally_owned_dofs(),
+                          background_grid.locally_relevant_dofs(),
+                          communicator);
+    du_ghosted         = du;
+    const double moved = points().advect(cache, du_ghosted);
+    last_reactions     = bcs.reactions(R, communicator);
+    const auto lost    = points().sort_into_cells();
+    // In parallel, deal.II finds a point's new cell only among the
+    // neighbours of its old one (the ghost layer).
+    if (lost > 0 && dealii::Utilities::MPI::n_mpi_processes(communicator) > 1 &&
+        moved >= background_grid.min_cell_size())
+      {
+        std::ostringstream message;
+        message << lost
+                << " material points were lost: in a parallel run a point "
+                   "may move at most one cell per load step, and in this "
+                   "step a point moved "
+                << std::setprecision(3)
+                << moved / background_grid.min_cell_size()
+                << " cells. Use more load steps.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    AssertThrow(lost == 0,
+                ExcMessage(std::to_string(lost) +
+                           " material points left the background grid. "
+                           "Enlarge the grid around the body."));
   }
 
 
@@ -329,9 +448,9 @@ namespace qsmpm
   void
   QuasiStaticProblem<dim>::run()
   {
-    LoadStepper              stepper(prm_values.load_stepping);
-    OutputWriter<dim>        writer(prm_values.output, communicator);
-    const bool               from_checkpoint = resumed;
+    LoadStepper       stepper(prm_values.load_stepping);
+    OutputWriter<dim> writer(prm_values.output, communicator);
+    const bool        from_checkpoint = resumed;
     if (from_checkpoint)
       restore_run_state(stepper, writer);
     std::vector<std::string> names;
@@ -354,21 +473,48 @@ namespace qsmpm
         writer.write_points(points(), 0, 0.);
       }
 
+    bool going_back = false;
     while (!stepper.finished())
       {
         Timer        wall_timer;
         NewtonReport newton;
-        const double t_old = stepper.current(), t_new = stepper.target();
-        if (!advance(t_old, t_new, newton))
+        const double t_old = stepper.current();
+        double       t_new = stepper.target(), force_new = 0.;
+        const bool   allow_limit =
+          !going_back ||
+          stepper.n_cut_backs() == prm_values.load_stepping.max_cut_backs;
+        const bool converged =
+          stepper.path_following() ?
+            advance_path_following(t_old,
+                                   allow_limit,
+                                   stepper.dissipation_target(),
+                                   stepper.increment_limit(),
+                                   newton,
+                                   t_new,
+                                   force_new) :
+            advance(t_old, t_new, newton);
+        if (!converged)
           {
-            progress << "  step " << stepper.step() + 1 << ": t = " << t_old
-                     << " -> " << t_new << " failed (" << newton.failure
-                     << "), cutting back" << std::endl;
+            progress << "  step " << stepper.step() + 1 << ": t = " << t_old;
+            if (stepper.path_following())
+              progress << ", dissipation " << stepper.dissipation_target();
+            else
+              progress << " -> " << t_new;
+            progress << " failed (" << newton.failure << "), cutting back"
+                     << std::endl;
             stepper.reject(newton.failure);
             continue;
           }
         const unsigned int cut_backs = stepper.n_cut_backs();
-        stepper.accept();
+        // After a step back on a snap-back, a step forward at the limit
+        // would leave the path (e.g. reload the softening zone elastically
+        // instead of finishing the snap-back): such a step is tried only
+        // as the last of the cut-backs.
+        going_back = t_new < t_old;
+        if (stepper.path_following())
+          stepper.accept(t_new, force_new);
+        else
+          stepper.accept();
         wall_timer.stop();
         reports.push_back(
           {stepper.step(), t_new, cut_backs, newton, wall_timer.wall_time()});

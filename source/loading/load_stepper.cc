@@ -53,7 +53,29 @@ namespace qsmpm
                         "0.0",
                         Patterns::Double(0.),
                         "Largest |increment| reached by growth; 0: no "
-                        "limit but the final load factor.");
+                        "limit but the final load factor. With <Control> = "
+                        "dissipation: the largest increment of a step (an "
+                        "elastic step takes it under displacement control); "
+                        "0: the nominal increment final / K.");
+      prm.declare_entry(
+        "Control",
+        "displacement",
+        Patterns::Selection("displacement|dissipation"),
+        "displacement: the load factor of every step is prescribed (the "
+        "paper's method; snap-backs are jumped over). dissipation: path "
+        "following, the load factor of a step is an unknown and the "
+        "material points dissipate <Dissipation increment> in each step "
+        "(Gutierrez 2004; Verhoosel, Remmers and Gutierrez 2009), so that "
+        "snap-backs are traced; steps that would need more than <Maximum "
+        "increment> are displacement-controlled. Needs a model that "
+        "computes its dissipation (decohesion), displacement conditions "
+        "proportional to t and no other loads.");
+      prm.declare_entry("Dissipation increment",
+                        "0.0",
+                        Patterns::Double(0.),
+                        "With <Control> = dissipation: the energy the "
+                        "material points dissipate in each step (in 2D per "
+                        "unit thickness, J/m).");
     }
     prm.leave_subsection();
   }
@@ -65,13 +87,15 @@ namespace qsmpm
   {
     prm.enter_subsection("Load stepping");
     {
-      n_steps           = prm.get_integer("Number of steps");
-      final_load_factor = prm.get_double("Final load factor");
-      max_cut_backs     = prm.get_integer("Maximum cut-backs");
-      cut_back_factor   = prm.get_double("Cut-back factor");
-      growth_factor     = prm.get_double("Increment growth factor");
-      growth_start      = prm.get_double("Growth from load factor");
-      max_increment     = prm.get_double("Maximum increment");
+      n_steps               = prm.get_integer("Number of steps");
+      final_load_factor     = prm.get_double("Final load factor");
+      max_cut_backs         = prm.get_integer("Maximum cut-backs");
+      cut_back_factor       = prm.get_double("Cut-back factor");
+      growth_factor         = prm.get_double("Increment growth factor");
+      growth_start          = prm.get_double("Growth from load factor");
+      max_increment         = prm.get_double("Maximum increment");
+      control               = prm.get("Control");
+      dissipation_increment = prm.get_double("Dissipation increment");
     }
     prm.leave_subsection();
   }
@@ -88,6 +112,79 @@ namespace qsmpm
     AssertThrow(parameters.growth_factor >= 1.,
                 ExcMessage("Load stepping: <Increment growth factor> must be "
                            ">= 1."));
+    if (path_following())
+      {
+        AssertThrow(parameters.dissipation_increment > 0.,
+                    ExcMessage("Load stepping: <Dissipation increment> must "
+                               "be > 0 with Control = dissipation."));
+        AssertThrow(parameters.growth_factor == 1.,
+                    ExcMessage("Load stepping: <Increment growth factor> "
+                               "must be 1 with Control = dissipation (the "
+                               "step size follows from the dissipation)."));
+        AssertThrow(parameters.final_load_factor > 0.,
+                    ExcMessage("Load stepping: <Final load factor> must be "
+                               "> 0 with Control = dissipation."));
+        AssertThrow(parameters.control == "dissipation",
+                    ExcMessage("Load stepping: unknown <Control> = " +
+                               parameters.control + "."));
+        increment   = increment_cap();
+        dissipation = parameters.dissipation_increment;
+      }
+  }
+
+
+
+  bool
+  LoadStepper::path_following() const
+  {
+    return parameters.control != "displacement";
+  }
+
+
+
+  double
+  LoadStepper::increment_cap() const
+  {
+    return parameters.max_increment > 0. ? parameters.max_increment :
+                                           nominal_increment;
+  }
+
+
+
+  double
+  LoadStepper::dissipation_target() const
+  {
+    return dissipation;
+  }
+
+
+
+  double
+  LoadStepper::increment_limit() const
+  {
+    return increment;
+  }
+
+
+
+  double
+  LoadStepper::force() const
+  {
+    return F;
+  }
+
+
+
+  void
+  LoadStepper::accept(const double t_new, const double force_new)
+  {
+    Assert(path_following(), ExcInternalError());
+    t = t_new;
+    F = force_new;
+    ++n_steps;
+    cut_backs   = 0;
+    increment   = increment_cap();
+    dissipation = parameters.dissipation_increment;
   }
 
 
@@ -95,6 +192,10 @@ namespace qsmpm
   bool
   LoadStepper::finished() const
   {
+    // With path following the load factor is not prescribed; the run ends
+    // once it has reached the final value.
+    if (path_following())
+      return t >= parameters.final_load_factor * (1. - 1e-12);
     return std::abs(t - parameters.final_load_factor) <=
            1e-12 * std::abs(parameters.final_load_factor);
   }
@@ -168,6 +269,7 @@ namespace qsmpm
       }
     ++cut_backs;
     increment *= parameters.cut_back_factor;
+    dissipation *= parameters.cut_back_factor;
   }
 
 
@@ -190,6 +292,10 @@ namespace qsmpm
   {
     out << std::setprecision(std::numeric_limits<double>::max_digits10) << t
         << ' ' << increment << ' ' << n_steps;
+    // Path following needs the force of the last step for the dissipation
+    // of the next one.
+    if (path_following())
+      out << ' ' << F;
   }
 
 
@@ -198,6 +304,8 @@ namespace qsmpm
   LoadStepper::load(std::istream &in)
   {
     in >> t >> increment >> n_steps;
+    if (path_following())
+      in >> F;
     AssertThrow(in, ExcMessage("Cannot read the load stepping state."));
     cut_backs = 0;
   }

@@ -8,7 +8,8 @@ namespace qsmpm
                           const IndexSet             &owned,
                           const MPI_Comm              communicator)
   {
-    constraints = std::move(new_constraints);
+    constraints      = std::move(new_constraints);
+    mpi_communicator = communicator;
 
     coupled.clear();
     IndexSet masters(owned.size());
@@ -36,6 +37,14 @@ namespace qsmpm
   StepConstraints::get() const
   {
     return constraints;
+  }
+
+
+
+  MPI_Comm
+  StepConstraints::get_communicator() const
+  {
+    return mpi_communicator;
   }
 
 

@@ -36,6 +36,25 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  ConstitutiveModel<dim>::dissipation(const PointState<dim> &,
+                                      ArrayView<const double>) const
+  {
+    return 0.;
+  }
+
+
+
+  template <int dim>
+  bool
+  ConstitutiveModel<dim>::computes_dissipation() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::supports_finite_strain() const
   {

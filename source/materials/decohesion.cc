@@ -344,6 +344,28 @@ namespace qsmpm
 
 
 
+  template <int dim>
+  double
+  Decohesion<dim>::dissipation(const PointState<dim>  &old,
+                               ArrayView<const double> new_state) const
+  {
+    const double w_old = old.state[opening_offset],
+                 w_new = new_state[opening_offset];
+    if (!(w_new > w_old))
+      return 0.;
+    Tensor<1, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      n[d] = new_state[normal_offset + d];
+    // The area under the softening law up to w (beyond u0 nothing more).
+    const auto work = [this](const double w) {
+      const double v = std::min(w, u0);
+      return tau_nf * (v - 0.5 * v * v / u0);
+    };
+    return (work(w_new) - work(w_old)) / smearing_length(n);
+  }
+
+
+
   template class Decohesion<2>;
   template class Decohesion<3>;
 

@@ -110,6 +110,14 @@ namespace qsmpm
     double
     minimum_volume_ratio() const;
 
+    /**
+     * The energy the points of this rank dissipate in the trial state of
+     * the last evaluate() (ConstitutiveModel::dissipation() times the
+     * point volume at the start of the step).
+     */
+    double
+    dissipation() const;
+
   private:
     /// The loop over cells and points shared by evaluate() and commit().
     template <bool write_back>
@@ -145,6 +153,7 @@ namespace qsmpm
     std::unique_ptr<Epetra_Export> exporter;
     mutable unsigned long          evaluation_count = 0;
     mutable double                 min_volume_ratio = 0.;
+    mutable double                 dissipated       = 0.;
   };
 } // namespace qsmpm
 

@@ -10,6 +10,7 @@
 #include <memory>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
+#include <qsmpm/core/step_operator.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/loading/boundary_conditions.h>
@@ -144,6 +145,25 @@ namespace qsmpm
     bool
     advance(const double t_old, const double t_new, NewtonReport &report);
 
+    /**
+     * One attempt at a step of path following (Load stepping/Control =
+     * dissipation) from load factor @p t_old: the load factor is an
+     * unknown, and the step dissipates @p dissipation, or, if that needs a
+     * larger increment and @p allow_limit, goes to t_old + @p limit (see
+     * PathFollowingNewton). If Newton converges, commit it, set @p t_new
+     * and @p force_new (the generalized force, the work-conjugate of the
+     * load factor) and return true; otherwise leave every point untouched
+     * and return false.
+     */
+    bool
+    advance_path_following(const double  t_old,
+                           const bool    allow_limit,
+                           const double  dissipation,
+                           const double  limit,
+                           NewtonReport &report,
+                           double       &t_new,
+                           double       &force_new);
+
     /// Reports of the accepted steps of run().
     const std::vector<StepReport> &
     step_reports() const;
@@ -185,6 +205,32 @@ namespace qsmpm
   private:
     void
     setup_step_data();
+
+    /// The degrees of freedom without enough material (no equation).
+    IndexSet
+    inactive_dofs() const;
+
+    /// Shape functions, constraints of t_old -> t_new, loads and the
+    /// preconditioner of a step.
+    void
+    prepare_step(const double t_old, const double t_new);
+
+    /// Count a step of the current preconditioner; mark it for a rebuild
+    /// after a failure or when GMRES slowed down (reuse growth).
+    void
+    count_preconditioner_use(const NewtonReport &report);
+
+    /// Reject a converged step that turned a point inside out.
+    void
+    check_volume_ratios(const StepOperator<dim> &op, NewtonReport &report);
+
+    /// Commit du: point state, positions, reactions.
+    void
+    commit_step();
+
+    /// Whether path following has checked that the prescribed
+    /// displacements are proportional to the load factor.
+    bool proportionality_checked = false;
 
     MPI_Comm                                  communicator;
     ConditionalOStream                        progress;

@@ -1,6 +1,7 @@
 #ifndef qsmpm_core_step_operator_h
 #define qsmpm_core_step_operator_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/step_constraints.h>
@@ -61,6 +62,17 @@ namespace qsmpm
     typical_increment_norm() const
     {
       return residual_evaluator.typical_increment_norm();
+    }
+
+    /**
+     * The energy all points dissipate in the trial state of the last
+     * residual() (summed over the ranks), for path following.
+     */
+    double
+    dissipation() const
+    {
+      return dealii::Utilities::MPI::sum(residual_evaluator.dissipation(),
+                                         constraints.get_communicator());
     }
 
     void

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <iosfwd>
+#include <string>
 
 namespace qsmpm
 {
@@ -25,6 +26,18 @@ namespace qsmpm
    * steps. A cut-back in that stage lowers the increment, which then grows
    * again from the lowered value (but restarts at no less than the nominal
    * increment).
+   *
+   * With <tt>Control = dissipation</tt> the load factor of a step is not
+   * prescribed but an unknown of the step (path following, see
+   * PathFollowingNewton): each step dissipates a prescribed energy
+   * "Dissipation increment" (Gutierrez 2004; Verhoosel, Remmers and
+   * Gutierrez 2009), and the load factor may decrease, so that snap-backs
+   * are traced. A step that would need a load-factor increment larger than
+   * "Maximum increment" (or, if that is 0, the nominal increment) to
+   * dissipate that energy, e.g. an elastic one, takes that increment under
+   * displacement control instead. The stepper then hands out the target
+   * dissipation and the largest increment, both cut back by a failed
+   * attempt, and accept(t, force) records where the step ended.
    */
   class LoadStepper
   {
@@ -42,8 +55,13 @@ namespace qsmpm
       double growth_factor = 1.;
       /// |t| from which the increment grows.
       double growth_start = 0.;
-      /// Largest |increment| when growing; 0 = no limit.
+      /// Largest |increment| when growing; 0 = no limit. With dissipation
+      /// control: largest increment of a step, 0 = the nominal one.
       double max_increment = 0.;
+      /// "displacement" (the paper's) or "dissipation" (path following).
+      std::string control = "displacement";
+      /// Energy dissipated per step with dissipation control.
+      double dissipation_increment = 0.;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -80,6 +98,32 @@ namespace qsmpm
     void
     reject(const std::string &reason);
 
+    /// Whether the load factor is an unknown of each step (Control =
+    /// dissipation).
+    bool
+    path_following() const;
+
+    /// With path following: the energy the next attempt must dissipate.
+    double
+    dissipation_target() const;
+
+    /// With path following: the largest load-factor increment of the next
+    /// attempt.
+    double
+    increment_limit() const;
+
+    /**
+     * With path following: the generalized force (the work-conjugate of
+     * the load factor) at the load factor of the last accepted step.
+     */
+    double
+    force() const;
+
+    /// With path following: the attempt converged and ended at load factor
+    /// @p t_new with generalized force @p force_new.
+    void
+    accept(const double t_new, const double force_new);
+
     /// Cut-backs of the current step so far.
     unsigned int
     n_cut_backs() const;
@@ -96,12 +140,19 @@ namespace qsmpm
     load(std::istream &in);
 
   private:
+    /// With path following: the largest increment without cut-backs.
+    double
+    increment_cap() const;
+
     const Parameters parameters;
     const double     nominal_increment;
     double           t         = 0.;
     double           increment = 0.;
     unsigned int     n_steps   = 0;
     unsigned int     cut_backs = 0;
+    /// Path following: the cut-back target dissipation and the force.
+    double dissipation = 0.;
+    double F           = 0.;
   };
 } // namespace qsmpm
 

@@ -47,6 +47,10 @@ namespace qsmpm
     const AffineConstraints<double> &
     get() const;
 
+    /// The communicator of the step's vectors.
+    MPI_Comm
+    get_communicator() const;
+
     /// Whether any rank has a coupled (periodic) degree of freedom.
     bool
     has_couplings() const;
@@ -78,7 +82,8 @@ namespace qsmpm
     mutable VectorType master_forces;
     /// Scratch vector with the values of every master dof (ghosted).
     mutable VectorType master_values;
-    bool               any_coupling = false;
+    bool               any_coupling     = false;
+    MPI_Comm           mpi_communicator = MPI_COMM_SELF;
   };
 } // namespace qsmpm
 

@@ -122,6 +122,23 @@ namespace qsmpm
                        const SymmetricTensor<2, dim> &strain_increment) const;
 
     /**
+     * The energy per unit volume dissipated between the committed state
+     * @p old and the trial history @p new_state that update_stress() (or
+     * update_kirchhoff_stress()) returned. Path following by dissipation
+     * (Load stepping/Control = dissipation) prescribes its sum over the
+     * points per step. The default is 0: an elastic model dissipates
+     * nothing, and a model without this function cannot be used with
+     * dissipation control.
+     */
+    virtual double
+    dissipation(const PointState<dim>  &old,
+                ArrayView<const double> new_state) const;
+
+    /// Whether the model overrides dissipation() (false by default).
+    virtual bool
+    computes_dissipation() const;
+
+    /**
      * Whether the model implements the finite-strain interface below
      * (update_kirchhoff_stress() and kirchhoff_tangent()).
      */

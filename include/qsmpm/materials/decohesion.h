@@ -129,6 +129,21 @@ namespace qsmpm
                   ArrayView<double>              new_state) const override;
 
     /**
+     * The work of the crack traction over the opening increment per unit
+     * volume, (1 / L_c) int tau_nf max(0, 1 - w / u0) dw from the committed
+     * to the trial opening: G_f / L_c once a point has failed completely.
+     */
+    double
+    dissipation(const PointState<dim>  &old,
+                ArrayView<const double> new_state) const override;
+
+    bool
+    computes_dissipation() const override
+    {
+      return true;
+    }
+
+    /**
      * The elastic stiffness, but with no normal stiffness across completely
      * failed cracks (C - C:nn (x) nn:C / M), for preconditioning.
      */
