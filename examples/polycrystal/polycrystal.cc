@@ -212,6 +212,21 @@ namespace Polycrystal
     prm.leave_subsection();
     AssertThrow(!boundary_conditions.empty(),
                 ExcMessage("Polycrystal: <Boundary conditions> is empty."));
+    AssertThrow(side_length > 0,
+                ExcMessage("Polycrystal: <Side length> must be positive, "
+                           "got " +
+                           std::to_string(side_length) + "."));
+    // A periodic direction needs two cells across (BackgroundGrid); say so
+    // in this program's entries rather than in the library's
+    // <Subdivisions>.
+    for (const auto &bc : boundary_conditions)
+      AssertThrow(bc != "periodic" ||
+                    (cells_in_plane >= 2 && cells_through_thickness >= 2),
+                  ExcMessage("Polycrystal: <Boundary conditions> = periodic "
+                             "needs <Cells in plane> and <Cells through "
+                             "thickness> of at least 2, got " +
+                             std::to_string(cells_in_plane) + " and " +
+                             std::to_string(cells_through_thickness) + "."));
     AssertThrow(strain > 0 && strain < 0.05,
                 ExcMessage("Polycrystal: <Strain> must lie in (0, 0.05): the "
                            "model is small-strain elasticity."));
@@ -837,9 +852,10 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "\n----------------------------------------------------\n"
-                << "polycrystal stopped: " << exc.what() << std::endl
-                << "----------------------------------------------------"
+      // One line that names the cause (the entry, the file), as in the
+      // other qsmpm programs: what() would add deal.II's banner with file,
+      // line and the violated condition, which is of no use to a user.
+      std::cerr << "polycrystal stopped: " << qsmpm::Utils::error_message(exc)
                 << std::endl;
       return 1;
     }
