@@ -36,6 +36,7 @@
 #include <memory>
 #include <numeric>
 #include <qsmpm/base/rotation.h>
+#include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/homogenization/columnar_voronoi.h>
 #include <qsmpm/homogenization/orientation_distribution.h>
@@ -845,9 +846,9 @@ main(int argc, char *argv[])
           std::string(argv[1]) :
           (std::filesystem::path(argv[0]).parent_path() / "polycrystal.prm")
             .string();
-      AssertThrow(std::filesystem::exists(parameter_file),
-                  dealii::ExcMessage("Cannot find the parameter file <" +
-                                     parameter_file + ">."));
+      // A missing file, a directory or an unreadable file: one line that
+      // names it.
+      qsmpm::Utils::check_parameter_file(parameter_file);
       Polycrystal::run(parameter_file);
     }
   catch (std::exception &exc)

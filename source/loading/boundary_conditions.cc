@@ -209,7 +209,25 @@ namespace qsmpm
         Tensor<2, dim> H;
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            H[i][j] = dealii::Utilities::string_to_double(entries[i * dim + j]);
+            {
+              const std::string &entry = entries[i * dim + j];
+              // string_to_double() would not name the entry.
+              try
+                {
+                  H[i][j] = dealii::Utilities::string_to_double(entry);
+                }
+              catch (const std::exception &)
+                {
+                  AssertThrow(false,
+                              ExcMessage("Boundary conditions: <" + entry +
+                                         "> in <Macroscopic displacement "
+                                         "gradient> is not a number."));
+                }
+              AssertThrow(std::isfinite(H[i][j]),
+                          ExcMessage("Boundary conditions: <" + entry +
+                                     "> in <Macroscopic displacement "
+                                     "gradient> is not a finite number."));
+            }
         set_macroscopic_displacement_gradient(
           [H](const double t) { return t * H; });
       }
