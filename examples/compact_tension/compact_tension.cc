@@ -529,8 +529,11 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "compact_tension stopped: "
-                << qsmpm::Utils::error_message(exc) << std::endl;
+      // One write of the whole line, so that the lines of several MPI ranks
+      // do not interleave.
+      std::cerr << "compact_tension stopped: " +
+                     qsmpm::Utils::error_message(exc) + "\n"
+                << std::flush;
       return 1;
     }
   catch (...)

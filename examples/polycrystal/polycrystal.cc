@@ -35,8 +35,8 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
-#include <qsmpm/base/rotation.h>
 #include <qsmpm/base/parameter_file.h>
+#include <qsmpm/base/rotation.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/homogenization/columnar_voronoi.h>
 #include <qsmpm/homogenization/orientation_distribution.h>
@@ -856,8 +856,11 @@ main(int argc, char *argv[])
       // One line that names the cause (the entry, the file), as in the
       // other qsmpm programs: what() would add deal.II's banner with file,
       // line and the violated condition, which is of no use to a user.
-      std::cerr << "polycrystal stopped: " << qsmpm::Utils::error_message(exc)
-                << std::endl;
+      // Written at once, so that the lines of several MPI ranks do not
+      // interleave.
+      std::cerr << "polycrystal stopped: " + qsmpm::Utils::error_message(exc) +
+                     "\n"
+                << std::flush;
       return 1;
     }
   catch (...)

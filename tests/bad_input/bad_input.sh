@@ -25,9 +25,10 @@
 # script prints one "PASS|FAIL <case> [<keyword>]" line per case, compares
 # them with bad_input.output and exits non-zero on any difference.
 set -u
-qsmpm=$1
-compact_tension=$2
-polycrystal=$3
+# Absolute paths: every case runs in a directory of its own.
+qsmpm=$(realpath "$1")
+compact_tension=$(realpath "$2")
+polycrystal=$(realpath "$3")
 source_dir=$(cd "$4" && pwd)
 examples=$source_dir/../../examples
 work=$(pwd)/bad_input.work
@@ -265,8 +266,9 @@ ct_case ct_fraction_out_of_range "Stop below fraction of peak" 1 \
   $'subsection Run\n set Stop below fraction of peak = 1.5\nend'
 ct_case ct_not_converging "Maximum cut-backs" 1 "$noconv"
 ct_case ct_not_converging_2_ranks "Maximum cut-backs" 2 "$noconv"
+# Cut in the middle of a line of subsection Material/decohesion.
 mkdir -p "$work/ct_truncated_file"
-head -c 400 "$examples/compact_tension/b15.prm" > "$work/ct_truncated_file/b15.prm"
+head -c 1200 "$examples/compact_tension/b15.prm" > "$work/ct_truncated_file/b15.prm"
 run_case ct_truncated_file "b15.prm" 1 "$compact_tension" b15.prm
 mkdir -p "$work/ct_missing_file"
 run_case ct_missing_file "no-such-file.prm" 1 "$compact_tension" no-such-file.prm
