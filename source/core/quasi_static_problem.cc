@@ -84,8 +84,8 @@ namespace qsmpm
     // number, after every cut-back of the first step. Check the functions at
     // the vertices of the coarse grid, which every rank holds (so that all
     // ranks stop together), at the start and at the end of the loading.
-    const auto        &triangulation = background_grid.get_triangulation();
-    std::vector<bool>  seen(triangulation.n_vertices(), false);
+    const auto             &triangulation = background_grid.get_triangulation();
+    std::vector<bool>       seen(triangulation.n_vertices(), false);
     std::vector<Point<dim>> vertices;
     for (const auto &cell : triangulation.cell_iterators_on_level(0))
       for (const unsigned int v : cell->vertex_indices())
@@ -94,8 +94,9 @@ namespace qsmpm
             seen[cell->vertex_index(v)] = true;
             vertices.push_back(cell->vertex(v));
           }
-    bcs.check_parsed_functions(
-      vertices, {0., prm_values.load_stepping.final_load_factor});
+    bcs.check_parsed_functions(vertices,
+                               {0.,
+                                prm_values.load_stepping.final_load_factor});
   }
 
 

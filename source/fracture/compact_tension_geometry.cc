@@ -165,10 +165,11 @@ namespace qsmpm
                   "Compact tension: <Load plate width> = " +
                   std::to_string(parameters.plate_cells) +
                   " cells is wider than an appendage allows (" +
-                  std::to_string(static_cast<unsigned int>(std::round(
-                    2 * std::min(load_point_x() - 0.5 * h,
-                                 0.5 * width() - load_point_x()) /
-                    h))) +
+                  std::to_string(static_cast<unsigned int>(
+                    std::round(2 *
+                               std::min(load_point_x() - 0.5 * h,
+                                        0.5 * width() - load_point_x()) /
+                               h))) +
                   " cells at most for this <Width over ligament> and <Cell "
                   "size>): the pin would reach across the notch or beyond "
                   "the specimen."));

@@ -146,12 +146,11 @@ namespace qsmpm
         catch (const std::exception &exc)
           {
             AssertThrow(false,
-                        ExcMessage(entries + ": " +
-                                   Utils::error_message(exc) +
-                                   " (a function needs " +
-                                   std::to_string(dim) +
+                        ExcMessage(entries + ": " + Utils::error_message(exc) +
+                                   " (a function needs " + std::to_string(dim) +
                                    " expressions separated by ';' in the "
-                                   "variables of <Variable names>)."));
+                                   "variables of <Variable names>, and "
+                                   "constants as name=value, ...)."));
           }
         prm.leave_subsection();
       }
@@ -743,13 +742,13 @@ namespace qsmpm
                       {
                         functions[i]->set_time(time);
                         std::ostringstream where;
-                        where << "Boundary conditions/"
-                              << function_subsections[i]
-                              << ": <Function expression> = <"
-                              << parsed_expressions[i] << "> gives "
-                              << values[c] << " in component " << c
-                              << " at x = (" << point << "), t = " << t
-                              << "; every value must be a finite number.";
+                        where
+                          << "Boundary conditions/" << function_subsections[i]
+                          << ": <Function expression> = <"
+                          << parsed_expressions[i] << "> gives " << values[c]
+                          << " in component " << c << " at x = (" << point
+                          << "), t = " << t
+                          << "; every value must be a finite number.";
                         AssertThrow(false, ExcMessage(where.str()));
                       }
                 }

@@ -203,9 +203,9 @@ driver_case periodic_one_cell "Subdivisions" 1 \
   $'subsection Geometry\n set Subdivisions = 1,4\n set Periodic directions = x\nend'
 # Functions.
 driver_case function_nan "Body force" 1 \
-  $'subsection Boundary conditions\n subsection Body force\n  set Function expression = 0; sqrt(x-2)\n end\nend'
+  $'subsection Boundary conditions\n subsection Body force\n  set Function expression = 0; sqrt(x-0.5)\n end\nend'
 driver_case function_nan_2_ranks "Body force" 2 \
-  $'subsection Boundary conditions\n subsection Body force\n  set Function expression = 0; sqrt(x-2)\n end\nend'
+  $'subsection Boundary conditions\n subsection Body force\n  set Function expression = 0; sqrt(x-0.5)\n end\nend'
 driver_case function_infinite_at_end "Displacement" 1 \
   $'subsection Boundary conditions\n subsection Displacement\n  set Function expression = 0; 1/(1-t)\n end\nend'
 driver_case function_three_components "Body force" 1 \
