@@ -67,8 +67,10 @@ run_case()
   [ "$n_lines" -ne 1 ] && why="$why $n_lines distinct 'stopped:' lines;"
   printf '%s' "$stopped" | grep -qF -- "$keyword" ||
     why="$why message does not name <$keyword>;"
-  grep -qE "Stacktrace|An error occurred in line|Signal:|terminate called|Segmentation" \
-    stderr.txt stdout.txt && why="$why stack trace or signal report;"
+  # deal.II's exception banner, a signal, and (in a -DQSMPM_SANITIZE=ON
+  # build, doc/sanitizers.md) a sanitizer's report.
+  grep -qE "Stacktrace|An error occurred in line|Signal:|terminate called|Segmentation|Sanitizer|runtime error:" \
+    stderr.txt stdout.txt && why="$why stack trace, signal or sanitizer report;"
   # Anything written as converged.
   local file
   for file in $(find . -name reactions.csv -o -name steps.csv); do
