@@ -297,8 +297,11 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "qsmpm stopped: " << qsmpm::Utils::error_message(exc)
-                << std::endl;
+      // One write of the whole line: on several MPI ranks each rank prints
+      // it, and pieces written separately interleave ("qsmpm stopped: qsmpm
+      // stopped: ...").
+      std::cerr << "qsmpm stopped: " + qsmpm::Utils::error_message(exc) + "\n"
+                << std::flush;
       return 1;
     }
   catch (...)

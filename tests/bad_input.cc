@@ -7,6 +7,12 @@
 //    GIMP with a macroscopic displacement gradient,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points.
+//
+// The output records, per case, whether the input was refused and whether
+// the message contains a keyword (the entry or file to fix), not the
+// message itself: the wording of deal.II's messages (patterns, parser
+// errors) changes between releases. A failing case prints the message.
+// tests/bad_input/bad_input.sh runs the programs on many more inputs.
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -14,21 +20,22 @@
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 
-// The message a user sees (Utils::error_message), with the list of models
-// in a Selection pattern cut: it grows with every registered model, and the
-// message names the entry and the value, which is what counts.
-std::string
-user_message(const std::exception &exc)
+void
+report(const std::string &what,
+       const std::string &keyword,
+       const std::string &message)
 {
-  std::string text      = qsmpm::Utils::error_message(exc);
-  const auto  selection = text.find("[Selection");
-  if (selection != std::string::npos)
-    text = text.substr(0, selection) + "[Selection ...]";
-  return text;
+  if (message.find(keyword) != std::string::npos)
+    deallog << what << ": stopped, names <" << keyword << ">: PASS"
+            << std::endl;
+  else
+    deallog << what << ": stopped, but does not name <" << keyword
+            << ">: FAIL (" << message << ")" << std::endl;
 }
 
 void
 try_input(const std::string &what,
+          const std::string &keyword,
           const std::string &input,
           const bool         run = false)
 {
@@ -42,13 +49,15 @@ try_input(const std::string &what,
       problem.initialize(prm);
       if (run)
         problem.run();
-      deallog << what << ": accepted (FAIL)" << std::endl;
+      deallog << what << ": accepted: FAIL" << std::endl;
     }
   catch (const std::exception &exc)
     {
-      deallog << what << ": stopped (PASS): " << user_message(exc) << std::endl;
+      report(what, keyword, qsmpm::Utils::error_message(exc));
     }
 }
+
+
 
 int
 main(int argc, char *argv[])
@@ -57,50 +66,61 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
 
   try_input("out-of-range value",
+            "Poisson's ratio",
             "subsection Material\n"
             "  subsection linear elastic\n"
             "    set Poisson's ratio = 0.7\n"
             "  end\n"
             "end\n");
   try_input("unknown entry",
+            "Youngs modulus",
             "subsection Material\n"
             "  set Youngs modulus = 1\n"
             "end\n");
   try_input("unknown model",
+            "Model",
             "subsection Material\n"
             "  set Model = plasticity\n"
             "end\n");
   try_input("boundary id that does not exist",
+            "Dirichlet boundaries",
             "subsection Boundary conditions\n"
             "  set Dirichlet boundaries = 7:xy\n"
             "end\n");
   try_input("unknown component",
+            "Dirichlet boundaries",
             "subsection Boundary conditions\n"
             "  set Dirichlet boundaries = 0:xw\n"
             "end\n");
   try_input("wrong number of coordinates",
+            "Upper corner",
             "subsection Geometry\n"
             "  set Upper corner = 1,1,1\n"
             "end\n");
 
   try_input("periodic direction that is not a letter x, y",
+            "Periodic directions",
             "subsection Geometry\n"
             "  set Periodic directions = xq\n"
             "end\n");
   try_input("periodic direction with one cell across",
+            "Subdivisions",
             "subsection Geometry\n"
             "  set Subdivisions = 1, 4\n"
             "  set Periodic directions = x\n"
             "end\n");
   try_input("macroscopic gradient with the wrong number of entries",
+            "Macroscopic displacement gradient",
             "subsection Boundary conditions\n"
             "  set Macroscopic displacement gradient = 1e-3, 0, 0\n"
             "end\n");
   try_input("finite strain with a small-strain model",
+            "Kinematics",
             "subsection Material points\n"
             "  set Kinematics = finite strain\n"
             "end\n");
   try_input("finite strain without volume updates",
+            "Update volumes",
             "subsection Material points\n"
             "  set Kinematics = finite strain\n"
             "  set Update volumes = false\n"
@@ -109,6 +129,7 @@ main(int argc, char *argv[])
             "  set Model = hencky\n"
             "end\n");
   try_input("GIMP with a macroscopic displacement gradient",
+            "Shape functions",
             "subsection Geometry\n"
             "  set Periodic directions = xy\n"
             "  set Subdivisions = 4, 4\n"
@@ -125,7 +146,7 @@ main(int argc, char *argv[])
             "end\n",
             /*run=*/true);
 
-  // A missing file.
+  // A missing file: deal.II's message names it.
   try
     {
       ParameterHandler prm;
@@ -135,7 +156,7 @@ main(int argc, char *argv[])
     }
   catch (const std::exception &exc)
     {
-      deallog << "missing file: stopped (PASS)" << std::endl;
+      report("missing file", "no-such-file.prm", exc.what());
     }
 
   // A step that cannot converge: one Newton iteration allowed, a tolerance
@@ -169,8 +190,9 @@ main(int argc, char *argv[])
       }
     catch (const std::exception &exc)
       {
-        deallog << "non-converging step: stopped (PASS): " << user_message(exc)
-                << std::endl;
+        report("non-converging step",
+               "Maximum cut-backs",
+               qsmpm::Utils::error_message(exc));
       }
     double max_u = 0;
     for (const auto &particle : problem.points().get_particle_handler())

@@ -32,6 +32,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/compact_tension_geometry.h>
@@ -521,15 +522,18 @@ main(int argc, char *argv[])
                   dealii::ExcMessage(
                     "Usage: compact_tension [--resume] file.prm"));
       const std::string parameter_file = argv[resume ? 2 : 1];
-      AssertThrow(std::filesystem::exists(parameter_file),
-                  dealii::ExcMessage("Cannot find the parameter file <" +
-                                     parameter_file + ">."));
+      // A missing file, a directory or an unreadable file: one line that
+      // names it.
+      qsmpm::Utils::check_parameter_file(parameter_file);
       CompactTension::run<2>(parameter_file, resume);
     }
   catch (std::exception &exc)
     {
-      std::cerr << "compact_tension stopped: "
-                << qsmpm::Utils::error_message(exc) << std::endl;
+      // One write of the whole line, so that the lines of several MPI ranks
+      // do not interleave.
+      std::cerr << "compact_tension stopped: " +
+                     qsmpm::Utils::error_message(exc) + "\n"
+                << std::flush;
       return 1;
     }
   catch (...)

@@ -35,6 +35,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/rotation.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/homogenization/columnar_voronoi.h>
@@ -212,6 +213,21 @@ namespace Polycrystal
     prm.leave_subsection();
     AssertThrow(!boundary_conditions.empty(),
                 ExcMessage("Polycrystal: <Boundary conditions> is empty."));
+    AssertThrow(side_length > 0,
+                ExcMessage("Polycrystal: <Side length> must be positive, "
+                           "got " +
+                           std::to_string(side_length) + "."));
+    // A periodic direction needs two cells across (BackgroundGrid); say so
+    // in this program's entries rather than in the library's
+    // <Subdivisions>.
+    for (const auto &bc : boundary_conditions)
+      AssertThrow(bc != "periodic" ||
+                    (cells_in_plane >= 2 && cells_through_thickness >= 2),
+                  ExcMessage("Polycrystal: <Boundary conditions> = periodic "
+                             "needs <Cells in plane> and <Cells through "
+                             "thickness> of at least 2, got " +
+                             std::to_string(cells_in_plane) + " and " +
+                             std::to_string(cells_through_thickness) + "."));
     AssertThrow(strain > 0 && strain < 0.05,
                 ExcMessage("Polycrystal: <Strain> must lie in (0, 0.05): the "
                            "model is small-strain elasticity."));
@@ -830,17 +846,21 @@ main(int argc, char *argv[])
           std::string(argv[1]) :
           (std::filesystem::path(argv[0]).parent_path() / "polycrystal.prm")
             .string();
-      AssertThrow(std::filesystem::exists(parameter_file),
-                  dealii::ExcMessage("Cannot find the parameter file <" +
-                                     parameter_file + ">."));
+      // A missing file, a directory or an unreadable file: one line that
+      // names it.
+      qsmpm::Utils::check_parameter_file(parameter_file);
       Polycrystal::run(parameter_file);
     }
   catch (std::exception &exc)
     {
-      std::cerr << "\n----------------------------------------------------\n"
-                << "polycrystal stopped: " << exc.what() << std::endl
-                << "----------------------------------------------------"
-                << std::endl;
+      // One line that names the cause (the entry, the file), as in the
+      // other qsmpm programs: what() would add deal.II's banner with file,
+      // line and the violated condition, which is of no use to a user.
+      // Written at once, so that the lines of several MPI ranks do not
+      // interleave.
+      std::cerr << "polycrystal stopped: " + qsmpm::Utils::error_message(exc) +
+                     "\n"
+                << std::flush;
       return 1;
     }
   catch (...)

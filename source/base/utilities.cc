@@ -2,6 +2,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fstream>
+#include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 
 namespace qsmpm
@@ -158,9 +161,25 @@ namespace qsmpm
     }
 
 
+    void
+    check_parameter_file(const std::string &filename)
+    {
+      AssertThrow(std::filesystem::exists(filename),
+                  ExcMessage("Cannot find the parameter file <" + filename +
+                             ">."));
+      AssertThrow(!std::filesystem::is_directory(filename),
+                  ExcMessage("The parameter file <" + filename +
+                             "> is a directory."));
+      AssertThrow(std::ifstream(filename).good(),
+                  ExcMessage("Cannot read the parameter file <" + filename +
+                             ">."));
+    }
+
+
     unsigned int
     read_dimension(const std::string &filename)
     {
+      check_parameter_file(filename);
       ParameterHandler prm;
       prm.declare_entry("Dimension",
                         "2",

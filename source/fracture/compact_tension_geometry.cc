@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deal.II/base/function.h>
@@ -120,9 +121,14 @@ namespace qsmpm
     : parameters(parameters)
   {
     const double h = parameters.cell_size;
-    AssertThrow(h > 0 && parameters.ligament >= 2 * h,
-                ExcMessage("Compact tension: the ligament must span at least "
-                           "two cells (Ligament length >= 2 Cell size)."));
+    AssertThrow(h > 0,
+                ExcMessage("Compact tension: <Cell size> must be positive."));
+    AssertThrow(parameters.ligament >= 2 * h,
+                ExcMessage("Compact tension: <Ligament length> = " +
+                           std::to_string(parameters.ligament) +
+                           " m must span at least two cells of <Cell size> "
+                           "= " +
+                           std::to_string(h) + " m."));
     n_ligament = static_cast<unsigned int>(std::round(parameters.ligament / h));
     n_notch    = static_cast<unsigned int>(
       std::round(parameters.notch_ratio * parameters.ligament / h));
@@ -131,10 +137,42 @@ namespace qsmpm
       2 * static_cast<unsigned int>(std::round(
             0.5 * (parameters.width_ratio * parameters.ligament / h - 1.))) +
       1;
-    AssertThrow(n_notch >= 1 && n_x >= 5,
-                ExcMessage("Compact tension: the notch must be at least one "
-                           "cell deep and the specimen at least five cells "
-                           "wide."));
+    // Each check names the entry to change; the patterns of the entries
+    // only exclude negative numbers.
+    AssertThrow(parameters.depth > 0,
+                ExcMessage("Compact tension: <Depth> must be positive, got " +
+                           std::to_string(parameters.depth) +
+                           " (the load is the reaction per unit depth times "
+                           "the depth)."));
+    AssertThrow(n_notch >= 1,
+                ExcMessage("Compact tension: <Notch depth over ligament> = " +
+                           std::to_string(parameters.notch_ratio) +
+                           " gives a notch less than one cell (<Cell size>) "
+                           "deep."));
+    AssertThrow(n_x >= 5,
+                ExcMessage("Compact tension: <Width over ligament> = " +
+                           std::to_string(parameters.width_ratio) +
+                           " gives a specimen less than five cells wide."));
+    // The pins must lie on the top of their appendage: a plate wider than
+    // an appendage would reach across the notch (tying both appendages
+    // together) or beyond the specimen. The appendage on the right spans
+    // [h/2, W/2], the plate half its width on either side of the load
+    // point.
+    const double half_plate = 0.5 * parameters.plate_cells * h;
+    AssertThrow(load_point_x() - half_plate > 0.5 * h - 1e-6 * h &&
+                  load_point_x() + half_plate < 0.5 * width() + 1e-6 * h,
+                ExcMessage(
+                  "Compact tension: <Load plate width> = " +
+                  std::to_string(parameters.plate_cells) +
+                  " cells is wider than an appendage allows (" +
+                  std::to_string(static_cast<unsigned int>(
+                    std::round(2 *
+                               std::min(load_point_x() - 0.5 * h,
+                                        0.5 * width() - load_point_x()) /
+                               h))) +
+                  " cells at most for this <Width over ligament> and <Cell "
+                  "size>): the pin would reach across the notch or beyond "
+                  "the specimen."));
   }
 
 

@@ -141,8 +141,11 @@ namespace qsmpm
         // A periodic direction needs two cells across the period, or a
         // node would be tied to itself.
         AssertThrow(box_subdivisions[d] >= 2,
-                    ExcMessage("A periodic direction needs at least two "
-                               "cells across the box."));
+                    ExcMessage("Geometry: the periodic direction " +
+                               std::string(1, "xyz"[d]) +
+                               " needs at least two cells across the box "
+                               "(<Subdivisions>), got " +
+                               std::to_string(box_subdivisions[d]) + "."));
         GridTools::collect_periodic_faces(
           triangulation, 2 * d, 2 * d + 1, d, pairs);
         periodic.push_back(d);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <qsmpm/base/rotation.h>
@@ -28,6 +29,11 @@ namespace qsmpm
 
   OrientationDistribution::OrientationDistribution(const std::string &filename)
   {
+    // An ifstream opens a directory without complaint (and then reads
+    // nothing), so say what is wrong before "found 0 grid nodes".
+    AssertThrow(!std::filesystem::is_directory(filename),
+                ExcMessage("ODF file <" + filename +
+                           ">: is a directory, not a file."));
     std::ifstream in(filename);
     AssertThrow(in,
                 ExcMessage("ODF file <" + filename +
@@ -48,8 +54,13 @@ namespace qsmpm
         double             a[3], value;
         if (!(s >> a[0] >> a[1] >> a[2] >> value))
           {
-            // A header line before the data is allowed.
-            AssertThrow(n_read == 0,
+            // A header line before the data is allowed, but not a line that
+            // starts with a number: that is a data line with a bad value
+            // (e.g. "0 0 0 nan", which operator>> does not read), and
+            // skipping it would only be reported as a missing node.
+            std::istringstream first_word(line);
+            double             number;
+            AssertThrow(n_read == 0 && !(first_word >> number),
                         ExcMessage("ODF file <" + filename + ">, line " +
                                    std::to_string(line_number) +
                                    ": expected \"phi1 Phi phi2 value\" "

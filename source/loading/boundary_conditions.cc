@@ -1,15 +1,53 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <iostream>
 #include <map>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/boundary_conditions.h>
 #include <qsmpm/loading/constraint_checks.h>
+#include <sstream>
 #include <unordered_map>
 
 namespace qsmpm
 {
+  namespace
+  {
+    // The subsections of the three functions of "Boundary conditions", in
+    // the order of BoundaryConditions::parsed_expressions.
+    const std::array<std::string, 3> function_subsections = {
+      {"Displacement", "Traction", "Body force"}};
+
+    // Evaluate @p f at @p point with std::cerr silenced. deal.II compiles an
+    // expression at its first evaluation and, for a syntax error or an
+    // unknown variable, prints a five-line description to std::cerr before
+    // it throws; the exception already holds the reason, and the user should
+    // see one line that names the entry (see check_parsed_functions()).
+    template <int dim>
+    void
+    evaluate_quietly(const Function<dim> &f,
+                     const Point<dim>    &point,
+                     Vector<double>      &values)
+    {
+      std::ostringstream    swallowed;
+      std::streambuf *const original = std::cerr.rdbuf(swallowed.rdbuf());
+      try
+        {
+          f.vector_value(point, values);
+        }
+      catch (...)
+        {
+          std::cerr.rdbuf(original);
+          throw;
+        }
+      std::cerr.rdbuf(original);
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   BoundaryConditions<dim>::Parameters::declare_parameters(ParameterHandler &prm)
@@ -74,21 +112,50 @@ namespace qsmpm
     Parameters parameters;
     parameters.parse_parameters(prm);
 
+    // The three functions. deal.II's own messages for a wrong number of
+    // expressions ("The number of components (2) is not equal to the number
+    // of expressions (3).") or a malformed constant ("Invalid format") do
+    // not say which of the three functions is meant, so we add the
+    // subsection and the entries. A first evaluation (at the origin, t = 0)
+    // finds syntax errors and unknown variables now rather than in the
+    // middle of the first load step.
     prm.enter_subsection("Boundary conditions");
     parsed_displacement = std::make_shared<Functions::ParsedFunction<dim>>(dim);
     parsed_traction     = std::make_shared<Functions::ParsedFunction<dim>>(dim);
     parsed_body_force   = std::make_shared<Functions::ParsedFunction<dim>>(dim);
-    prm.enter_subsection("Displacement");
-    parsed_displacement->parse_parameters(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Traction");
-    parsed_traction->parse_parameters(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Body force");
-    parsed_body_force->parse_parameters(prm);
+    const std::array<Functions::ParsedFunction<dim> *, 3> functions = {
+      {parsed_displacement.get(),
+       parsed_traction.get(),
+       parsed_body_force.get()}};
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        prm.enter_subsection(function_subsections[i]);
+        parsed_expressions[i] = prm.get("Function expression");
+        const std::string entries =
+          "Boundary conditions/" + function_subsections[i] +
+          ": <Function expression> = <" + parsed_expressions[i] +
+          "> with <Variable names> = <" + prm.get("Variable names") +
+          "> and <Function constants> = <" + prm.get("Function constants") +
+          ">";
+        try
+          {
+            functions[i]->parse_parameters(prm);
+            Vector<double> values(dim);
+            evaluate_quietly<dim>(*functions[i], Point<dim>(), values);
+          }
+        catch (const std::exception &exc)
+          {
+            AssertThrow(false,
+                        ExcMessage(entries + ": " + Utils::error_message(exc) +
+                                   " (a function needs " + std::to_string(dim) +
+                                   " expressions separated by ';' in the "
+                                   "variables of <Variable names>, and "
+                                   "constants as name=value, ...)."));
+          }
+        prm.leave_subsection();
+      }
     const bool has_body_force =
-      prm.get("Function expression") != (dim == 2 ? "0; 0" : "0; 0; 0");
-    prm.leave_subsection();
+      parsed_expressions[2] != (dim == 2 ? "0; 0" : "0; 0; 0");
     prm.leave_subsection();
 
     for (const auto &entry : Utils::split(parameters.dirichlet, ','))
@@ -99,7 +166,22 @@ namespace qsmpm
                                "boundaries> expects <id>:<components> items, "
                                "got <" +
                                entry + ">."));
-        const int id = dealii::Utilities::string_to_int(parts[0]);
+        // string_to_int() would stop with "Can't convert <two> to an
+        // integer.", which does not name the entry.
+        int id = -1;
+        try
+          {
+            id = dealii::Utilities::string_to_int(parts[0]);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage("Boundary conditions: <" + parts[0] +
+                                   "> in <Dirichlet boundaries> = <" + entry +
+                                   "> is not a boundary id (a box has ids 0 "
+                                   "to " +
+                                   std::to_string(2 * dim - 1) + ")."));
+          }
         AssertThrow(id >= 0 && id < 2 * dim,
                     ExcMessage("Boundary conditions: boundary id <" + parts[0] +
                                "> in <Dirichlet boundaries> does "
@@ -126,12 +208,40 @@ namespace qsmpm
         Tensor<2, dim> H;
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            H[i][j] = dealii::Utilities::string_to_double(entries[i * dim + j]);
+            {
+              const std::string &entry = entries[i * dim + j];
+              // string_to_double() would not name the entry.
+              try
+                {
+                  H[i][j] = dealii::Utilities::string_to_double(entry);
+                }
+              catch (const std::exception &)
+                {
+                  AssertThrow(false,
+                              ExcMessage("Boundary conditions: <" + entry +
+                                         "> in <Macroscopic displacement "
+                                         "gradient> is not a number."));
+                }
+              AssertThrow(std::isfinite(H[i][j]),
+                          ExcMessage("Boundary conditions: <" + entry +
+                                     "> in <Macroscopic displacement "
+                                     "gradient> is not a finite number."));
+            }
         set_macroscopic_displacement_gradient(
           [H](const double t) { return t * H; });
       }
+    // The pattern of the entry admits only non-negative integers, but not
+    // only the ids a box has: a traction on id 9 would load nothing.
     for (const auto &entry : Utils::split(parameters.traction, ','))
-      add_traction(dealii::Utilities::string_to_int(entry), parsed_traction);
+      {
+        const int id = dealii::Utilities::string_to_int(entry);
+        AssertThrow(id >= 0 && id < 2 * dim,
+                    ExcMessage("Boundary conditions: boundary id <" + entry +
+                               "> in <Traction boundaries> does not exist; a "
+                               "box has ids 0 to " +
+                               std::to_string(2 * dim - 1) + "."));
+        add_traction(id, parsed_traction);
+      }
     if (has_body_force)
       set_body_force(parsed_body_force);
   }
@@ -602,6 +712,49 @@ namespace qsmpm
   BoundaryConditions<dim>::dirichlet_conditions() const
   {
     return dirichlet;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_parsed_functions(
+    const std::vector<Point<dim>> &points,
+    const std::vector<double>     &load_factors) const
+  {
+    const std::array<Functions::ParsedFunction<dim> *, 3> functions = {
+      {parsed_displacement.get(),
+       parsed_traction.get(),
+       parsed_body_force.get()}};
+    Vector<double> values(dim);
+    for (unsigned int i = 0; i < 3; ++i)
+      if (functions[i] != nullptr)
+        {
+          const double time = functions[i]->get_time();
+          for (const double t : load_factors)
+            {
+              functions[i]->set_time(t);
+              for (const auto &point : points)
+                {
+                  evaluate_quietly<dim>(*functions[i], point, values);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    if (!std::isfinite(values[c]))
+                      {
+                        functions[i]->set_time(time);
+                        std::ostringstream where;
+                        where
+                          << "Boundary conditions/" << function_subsections[i]
+                          << ": <Function expression> = <"
+                          << parsed_expressions[i] << "> gives " << values[c]
+                          << " in component " << c << " at x = (" << point
+                          << "), t = " << t
+                          << "; every value must be a finite number.";
+                        AssertThrow(false, ExcMessage(where.str()));
+                      }
+                }
+            }
+          functions[i]->set_time(time);
+        }
   }
 
 

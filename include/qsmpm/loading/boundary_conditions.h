@@ -170,6 +170,22 @@ namespace qsmpm
     bool
     has_loads() const;
 
+    /**
+     * Evaluate the three functions read by parse_parameters() (subsections
+     * Displacement, Traction and Body force) at each of @p points for each
+     * load factor in @p load_factors, and throw an exception that names the
+     * subsection, the expression, the point and t if one of them gives a
+     * value that is not a finite number (e.g. sqrt(-1), 1/0). Without this
+     * check a NaN in a load only shows up as a residual that is not a number,
+     * after every cut-back of the first load step. The caller passes the
+     * same points on every MPI rank (e.g. the vertices of the coarse grid,
+     * which every rank holds), so that all ranks stop together. Does nothing
+     * for functions that did not come from parse_parameters().
+     */
+    void
+    check_parsed_functions(const std::vector<Point<dim>> &points,
+                           const std::vector<double>     &load_factors) const;
+
   private:
     /// The periodicity lines of make_constraints(), not closed.
     void
@@ -194,6 +210,8 @@ namespace qsmpm
     std::shared_ptr<Functions::ParsedFunction<dim>> parsed_displacement;
     std::shared_ptr<Functions::ParsedFunction<dim>> parsed_traction;
     std::shared_ptr<Functions::ParsedFunction<dim>> parsed_body_force;
+    /// Their subsections and expressions, for messages.
+    std::array<std::string, 3> parsed_expressions;
   };
 } // namespace qsmpm
 
