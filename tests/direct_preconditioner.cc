@@ -22,7 +22,8 @@ class Press : public Function<2>
 public:
   Press()
     : Function<2>(2)
-  {}
+  {
+  }
   double
   value(const Point<2> &, const unsigned int component) const override
   {
@@ -71,18 +72,18 @@ solve(const std::string &preconditioner,
       std::make_shared<Functions::ConstantFunction<dim>>(
         std::vector<double>{0., -1e-3}));
 
-  auto &prm                                  = problem.parameters();
-  prm.material_points.update_volumes         = false;
-  prm.nonlinear_solver.preconditioner        = preconditioner;
-  prm.nonlinear_solver.tolerance             = 1e-10;
-  prm.nonlinear_solver.residual_floor        = 0.;
-  prm.nonlinear_solver.linear_tolerance      = 1e-8;
-  prm.nonlinear_solver.max_linear_iterations = 2000;
-  prm.nonlinear_solver.gmres_restart         = 200;
-  prm.load_stepping.n_steps                  = plastic ? 8 : 1;
+  auto &prm                                       = problem.parameters();
+  prm.material_points.update_volumes              = false;
+  prm.nonlinear_solver.preconditioner             = preconditioner;
+  prm.nonlinear_solver.tolerance                  = 1e-10;
+  prm.nonlinear_solver.residual_floor             = 0.;
+  prm.nonlinear_solver.linear_tolerance           = 1e-8;
+  prm.nonlinear_solver.max_linear_iterations      = 2000;
+  prm.nonlinear_solver.gmres_restart              = 200;
+  prm.load_stepping.n_steps                       = plastic ? 8 : 1;
   prm.nonlinear_solver.preconditioner_reuse_steps = reuse_steps;
-  prm.output.directory                       = "results";
-  prm.output.interval                        = 0;
+  prm.output.directory                            = "results";
+  prm.output.interval                             = 0;
   problem.run();
   unsigned int newton = 0, gmres = 0;
   for (const auto &report : problem.step_reports())
@@ -123,7 +124,8 @@ main(int argc, char *argv[])
         difference.l2_norm() / amg.increment.l2_norm(),
         1e-6);
 
-  deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain in 8 steps"
+  deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain "
+             "in 8 steps"
           << std::endl;
   const Result direct_plastic = solve("direct", true);
   const Result amg_plastic    = solve("amg", true);

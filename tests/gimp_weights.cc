@@ -18,9 +18,8 @@
 // |d_x| < h + l_x in each direction). Tolerance 1e-13: round-off only.
 #include "tests.h"
 
-#include <deal.II/dofs/dof_tools.h>
-
 #include <algorithm>
+#include <deal.II/dofs/dof_tools.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/linear_elastic.h>
@@ -96,7 +95,7 @@ namespace
     // The material volume in each node's support, sum_p Omega_p S_i(x_p),
     // from the closed form (per dof, all components alike).
     std::vector<double> nodal_volume(grid.get_dof_handler().n_dofs(), 0.);
-    double value_error = 0, gradient_error = 0, unity_error = 0,
+    double              value_error = 0, gradient_error = 0, unity_error = 0,
            gradient_sum_error = 0;
     unsigned int missing = 0, n_points = 0;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
@@ -193,7 +192,7 @@ namespace
     Utilities::MPI::sum(nodal_volume, comm, nodal_volume);
     const auto [smallest, largest] =
       std::minmax_element(nodal_volume.begin(), nodal_volume.end());
-    const double threshold = 0.5 * (*smallest + *largest);
+    const double   threshold = 0.5 * (*smallest + *largest);
     const IndexSet inactive =
       cache.dofs_without_points(grid, o.volume, threshold);
     unsigned int wrong = 0, n_inactive = 0;

@@ -89,7 +89,8 @@ namespace
               << message << std::endl;
     else
       deallog << what << ": "
-              << (stopped && message.find(expected_phrase) != std::string::npos ?
+              << (stopped &&
+                      message.find(expected_phrase) != std::string::npos ?
                     "stopped, names it (PASS): " :
                     "(FAIL): ")
               << message << std::endl;
@@ -118,7 +119,8 @@ main(int argc, char *argv[])
                "  end\n"
                "end\n"),
          "translation in x, translation in y, rotation about z");
-  run<2>("frictionless plates only", block("2:n, 3:n", "0; -0.01*t*y"),
+  run<2>("frictionless plates only",
+         block("2:n, 3:n", "0; -0.01*t*y"),
          "prevents translation in x");
   run<3>("3D: a frictionless floor only",
          "subsection Geometry\n"

@@ -336,7 +336,7 @@ namespace CompactTension
                          "wall_time_s\n";
           }
       }
-    bool        initiated = false, partially_failed = false, complete = false;
+    bool initiated = false, partially_failed = false, complete = false;
 
     // Our state between steps, for checkpoints: the curve so far (peak and
     // work follow from it) and which of the moments of Fig. 4 have passed.
@@ -365,7 +365,7 @@ namespace CompactTension
                     ExcMessage("compact_tension: the checkpoint holds no "
                                "load-displacement curve."));
       });
-    const auto &layout = problem.points().get_layout();
+    const auto        &layout = problem.points().get_layout();
     const unsigned int opening_offset =
       layout.offset(Decohesion<dim>::crack_opening_name);
     problem.set_step_callback(

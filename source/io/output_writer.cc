@@ -55,9 +55,9 @@ namespace qsmpm
   {
     prm.enter_subsection("Output");
     {
-      directory       = prm.get("Directory");
-      interval        = prm.get_integer("Interval");
-      write_increment = prm.get_bool("Write increment");
+      directory           = prm.get("Directory");
+      interval            = prm.get_integer("Interval");
+      write_increment     = prm.get_bool("Write increment");
       checkpoint_interval = prm.get_integer("Checkpoint interval");
     }
     prm.leave_subsection();

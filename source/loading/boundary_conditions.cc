@@ -388,8 +388,7 @@ namespace qsmpm
     // material (for the rigid-body check).
     std::vector<unsigned int> n_active(dirichlet.size(), 0);
     std::vector<double>       largest_increment(dirichlet.size(), 0.);
-    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>>
-      held;
+    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> held;
 
     // Constrain component c of vertex x with global dof index `dof`.
     auto constrain = [&](const unsigned int            condition,
@@ -495,7 +494,8 @@ namespace qsmpm
           held_nodes.push_back(entry.second);
         ConstraintChecks::assert_no_rigid_body_motion<dim>(
           held_nodes,
-          grid.lower_corner() + 0.5 * (grid.upper_corner() - grid.lower_corner()),
+          grid.lower_corner() +
+            0.5 * (grid.upper_corner() - grid.lower_corner()),
           grid.lower_corner().distance(grid.upper_corner()),
           grid.get_communicator());
       }

@@ -1,8 +1,8 @@
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
-#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <qsmpm/loading/constraint_checks.h>
@@ -22,7 +22,9 @@ namespace qsmpm
       /// Component @p c of mode @p m at the (centred, scaled) position x.
       template <int dim>
       double
-      mode_value(const unsigned int m, const unsigned int c, const Point<dim> &x)
+      mode_value(const unsigned int m,
+                 const unsigned int c,
+                 const Point<dim>  &x)
       {
         if (m < dim)
           return m == c ? 1. : 0.;
@@ -46,7 +48,8 @@ namespace qsmpm
         const char *axis = "xyz";
         if (m < dim)
           return std::string("translation in ") + axis[m];
-        return std::string("rotation about ") + (dim == 2 ? 'z' : axis[m - dim]);
+        return std::string("rotation about ") +
+               (dim == 2 ? 'z' : axis[m - dim]);
       }
     } // namespace
 
@@ -84,8 +87,8 @@ namespace qsmpm
         }
       Vector<double>     eigenvalues;
       FullMatrix<double> eigenvectors;
-      G.compute_eigenvalues_symmetric(-1., 2. * trace + 1., 0., eigenvalues,
-                                      eigenvectors);
+      G.compute_eigenvalues_symmetric(
+        -1., 2. * trace + 1., 0., eigenvalues, eigenvectors);
 
       // Eigenvalues come in ascending order; a free motion has (up to
       // round-off) a zero one.
@@ -169,15 +172,17 @@ namespace qsmpm
 
 
     template std::vector<std::string>
-    free_rigid_body_motions<2>(const std::vector<std::pair<Point<2>, unsigned int>> &,
-                               const Point<2> &,
-                               const double,
-                               const MPI_Comm);
+    free_rigid_body_motions<2>(
+      const std::vector<std::pair<Point<2>, unsigned int>> &,
+      const Point<2> &,
+      const double,
+      const MPI_Comm);
     template std::vector<std::string>
-    free_rigid_body_motions<3>(const std::vector<std::pair<Point<3>, unsigned int>> &,
-                               const Point<3> &,
-                               const double,
-                               const MPI_Comm);
+    free_rigid_body_motions<3>(
+      const std::vector<std::pair<Point<3>, unsigned int>> &,
+      const Point<3> &,
+      const double,
+      const MPI_Comm);
     template void
     assert_no_rigid_body_motion<2>(
       const std::vector<std::pair<Point<2>, unsigned int>> &,

@@ -316,8 +316,8 @@ namespace qsmpm
         // body smaller than intended changes every result.
         const Point<dim> &lower = grid.lower_corner(),
                          &upper = grid.upper_corner();
-        const double      tolerance = 1e-12 * lower.distance(upper);
-        bool              outside   = false;
+        const double tolerance  = 1e-12 * lower.distance(upper);
+        bool         outside    = false;
         for (unsigned int d = 0; d < dim; ++d)
           {
             AssertThrow(p.region_lower[d] < p.region_upper[d],

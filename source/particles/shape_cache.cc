@@ -319,7 +319,7 @@ namespace qsmpm
   template <int dim>
   IndexSet
   ShapeCache<dim>::dofs_without_points(const BackgroundGrid<dim> &grid,
-                                       const unsigned int volume_offset,
+                                       const unsigned int         volume_offset,
                                        const double min_nodal_volume) const
   {
     // Count, for every degree of freedom, the cells with points around it

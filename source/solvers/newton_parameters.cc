@@ -122,9 +122,9 @@ namespace qsmpm
         prm.get_integer("Preconditioner reuse steps");
       preconditioner_reuse_growth =
         prm.get_double("Preconditioner reuse growth");
-      eisenstat_walker      = prm.get("Forcing term") == "eisenstat-walker";
-      verbose               = prm.get_bool("Verbose");
-      linear_predictor      = prm.get("Initial guess") == "linear predictor";
+      eisenstat_walker = prm.get("Forcing term") == "eisenstat-walker";
+      verbose          = prm.get_bool("Verbose");
+      linear_predictor = prm.get("Initial guess") == "linear predictor";
     }
     prm.leave_subsection();
   }

@@ -36,6 +36,39 @@ namespace qsmpm
 
 
 
+  namespace internal
+  {
+    /**
+     * An operator's preconditioner as deal.II's solvers want it (a vmult()),
+     * mapping residual-like Krylov vectors to admissible corrections; shared
+     * by the Newton solvers.
+     */
+    template <typename Operator>
+    struct AdmissiblePreconditioner
+    {
+      const Operator &op;
+      template <typename VectorType>
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        op.precondition(dst, src);
+        op.make_admissible(dst);
+      }
+    };
+
+    /// ||R|| over the unconstrained components (the rows with an equation).
+    template <typename Operator, typename VectorType>
+    double
+    free_norm(const Operator &op, const VectorType &R, VectorType &scratch)
+    {
+      scratch = R;
+      op.set_constrained_to_zero(scratch);
+      return scratch.l2_norm();
+    }
+  } // namespace internal
+
+
+
   /**
    * The Jacobian-free Newton-Krylov method of paper Appendix A: Newton's
    * method (A.1) whose linear systems J(du_n) s = -R(du_n) are solved by
@@ -108,7 +141,7 @@ namespace qsmpm
       trial.reinit(du);
 
       op.residual(du, R);
-      double norm             = free_norm(op, R, rhs);
+      double norm             = internal::free_norm(op, R, rhs);
       report.initial_residual = norm;
       report.residual_history.push_back(norm);
       const double target =
@@ -163,7 +196,7 @@ namespace qsmpm
               trial = du;
               trial.add(alpha, s);
               op.residual(trial, R);
-              const double trial_norm = free_norm(op, R, rhs);
+              const double trial_norm = internal::free_norm(op, R, rhs);
               if (k == parameters.max_line_search_steps ||
                   (std::isfinite(trial_norm) &&
                    trial_norm <= (1. - 1e-4 * alpha) * norm))
@@ -228,7 +261,7 @@ namespace qsmpm
         solve_linear(op, J, rhs, parameters.linear_tolerance, s, report);
       du += s;
       op.residual(du, R);
-      const double norm        = free_norm(op, R, rhs);
+      const double norm        = internal::free_norm(op, R, rhs);
       report.newton_iterations = 1;
       report.residual_history.push_back(norm);
       print_iteration(report, norm, linear, 1.);
@@ -268,7 +301,10 @@ namespace qsmpm
       SolverGMRES<VectorType> gmres(control, data);
       try
         {
-          gmres.solve(J, s, rhs, Preconditioner{op});
+          gmres.solve(J,
+                      s,
+                      rhs,
+                      internal::AdmissiblePreconditioner<Operator>{op});
         }
       catch (const SolverControl::NoConvergence &)
         {
@@ -295,27 +331,6 @@ namespace qsmpm
              << "  gmres " << std::setw(4) << linear.iterations
              << "  reduction " << linear.reduction << "  step "
              << std::defaultfloat << alpha << std::endl;
-    }
-
-    /// The preconditioner as deal.II's solvers want it: a vmult().
-    struct Preconditioner
-    {
-      const Operator &op;
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        op.precondition(dst, src);
-        op.make_admissible(dst);
-      }
-    };
-
-    /// ||R|| over the unconstrained components (the rows with an equation).
-    static double
-    free_norm(const Operator &op, const VectorType &R, VectorType &scratch)
-    {
-      scratch = R;
-      op.set_constrained_to_zero(scratch);
-      return scratch.l2_norm();
     }
 
     const NewtonParameters    parameters;

@@ -120,7 +120,7 @@ namespace qsmpm
 
       op.residual(du, R);
       force       = -(g * R);
-      double norm = free_norm(op, R, rhs);
+      double norm = internal::free_norm(op, R, rhs);
       double phi  = constraint_value(constraint, delta_lambda, force, op);
       report.initial_residual = norm;
       report.residual_history.push_back(norm);
@@ -231,7 +231,7 @@ namespace qsmpm
               trial = du;
               trial.add(alpha, step);
               op.residual(trial, R);
-              const double trial_norm = free_norm(op, R, rhs);
+              const double trial_norm = internal::free_norm(op, R, rhs);
               if (k == parameters.max_line_search_steps || n == 0 ||
                   (std::isfinite(trial_norm) &&
                    trial_norm <= (1. - 1e-4 * alpha) * std::max(norm, target)))
@@ -255,7 +255,7 @@ namespace qsmpm
               trial = g;
               trial *= delta_lambda;
               op.residual(trial, rhs);
-              const double reference  = free_norm(op, rhs, rhs);
+              const double reference  = internal::free_norm(op, rhs, rhs);
               report.initial_residual = reference;
               target                  = parameters.tolerance *
                        std::max(parameters.residual_floor, reference);
@@ -361,7 +361,10 @@ namespace qsmpm
       SolverGMRES<VectorType> gmres(control, data);
       try
         {
-          gmres.solve(J, s, rhs, Preconditioner{op});
+          gmres.solve(J,
+                      s,
+                      rhs,
+                      internal::AdmissiblePreconditioner<Operator>{op});
         }
       catch (const SolverControl::NoConvergence &)
         {
@@ -370,25 +373,6 @@ namespace qsmpm
       op.make_admissible(s);
       report.linear_iterations += control.last_step();
       return control.last_step();
-    }
-
-    struct Preconditioner
-    {
-      const Operator &op;
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        op.precondition(dst, src);
-        op.make_admissible(dst);
-      }
-    };
-
-    static double
-    free_norm(const Operator &op, const VectorType &R, VectorType &scratch)
-    {
-      scratch = R;
-      op.set_constrained_to_zero(scratch);
-      return scratch.l2_norm();
     }
 
     const NewtonParameters    parameters;
