@@ -6,9 +6,19 @@
 // - a cut-back in the growth stage halves the increment, which then grows
 //   again from the halved value;
 // - a negative final load factor grows in the same way with its sign.
+//
+// With path following (Control = dissipation):
+// - after a step back (load factor decreasing), a step at the forward limit
+//   is allowed only as the last cut-back, and after a forward step at once;
+// - that state survives save()/load() (a checkpoint): a resumed run must
+//   take the same steps as an uninterrupted one;
+// - cut-backs halve the dissipation target and the forward limit but not
+//   the backward range (10 x the uncut limit), which a snap-back needs
+//   however small the energy of the step.
 #include "tests.h"
 
 #include <qsmpm/loading/load_stepper.h>
+#include <sstream>
 
 using namespace qsmpm;
 
@@ -74,4 +84,33 @@ main()
   check_that("negative load: -1 -2 -3 -4 -6 -10 -18 -28 -38 -40",
              equal(run(parameters, 0),
                    {-1, -2, -3, -4, -6, -10, -18, -28, -38, -40}));
+
+  LoadStepper::Parameters following;
+  following.control               = "dissipation";
+  following.dissipation_increment = 0.02;
+  following.max_increment         = 1e-4;
+  following.n_steps               = 10;
+  following.final_load_factor     = 1e-3;
+  following.max_cut_backs         = 3;
+  LoadStepper stepper(following);
+  stepper.accept(2e-4, 1.);
+  check_that("path following, after a forward step: limit allowed",
+             stepper.allow_limit());
+  stepper.accept(1.5e-4, 0.5);
+  check_that("after a step back: limit not allowed", !stepper.allow_limit());
+  std::stringstream checkpoint;
+  stepper.save(checkpoint);
+  LoadStepper resumed(following);
+  resumed.load(checkpoint);
+  check_that("after a step back, saved and loaded: limit not allowed",
+             !resumed.allow_limit() && resumed.current() == 1.5e-4 &&
+               resumed.force() == 0.5);
+  for (unsigned int i = 0; i < following.max_cut_backs; ++i)
+    resumed.reject("test");
+  check_that("... allowed at the last cut-back", resumed.allow_limit());
+  check_that("3 cut-backs: dissipation and forward limit / 8, backward "
+             "range 10 x 1e-4",
+             std::abs(resumed.dissipation_target() - 0.02 / 8.) < 1e-15 &&
+               std::abs(resumed.increment_limit() - 1e-4 / 8.) < 1e-15 &&
+               std::abs(resumed.backward_limit() - 1e-3) < 1e-15);
 }

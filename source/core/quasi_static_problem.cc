@@ -361,6 +361,7 @@ namespace qsmpm
                                                   const bool    allow_limit,
                                                   const double  dissipation,
                                                   const double  limit,
+                                                  const double  back_limit,
                                                   NewtonReport &report,
                                                   double       &t_new,
                                                   double       &force_new)
@@ -424,7 +425,16 @@ namespace qsmpm
       // PathFollowingNewton for why not the global formula of Gutierrez).
       const typename Solver::Constraint constraint{0., 0., 1., dissipation};
       report = newton.solve(
-        op, g, constraint, limit, allow_limit, du, delta_lambda, R, force_new);
+        op,
+        g,
+        constraint,
+        limit,
+        back_limit,
+        allow_limit,
+        du,
+        delta_lambda,
+        R,
+        force_new);
       count_preconditioner_use(report);
       check_volume_ratios(op, report);
     }
@@ -502,22 +512,19 @@ namespace qsmpm
         writer.write_points(points(), 0, 0.);
       }
 
-    bool going_back = false;
     while (!stepper.finished())
       {
         Timer        wall_timer;
         NewtonReport newton;
         const double t_old = stepper.current();
         double       t_new = stepper.target(), force_new = 0.;
-        const bool   allow_limit =
-          !going_back ||
-          stepper.n_cut_backs() == prm_values.load_stepping.max_cut_backs;
         const bool converged =
           stepper.path_following() ?
             advance_path_following(t_old,
-                                   allow_limit,
+                                   stepper.allow_limit(),
                                    stepper.dissipation_target(),
                                    stepper.increment_limit(),
+                                   stepper.backward_limit(),
                                    newton,
                                    t_new,
                                    force_new) :
@@ -535,11 +542,6 @@ namespace qsmpm
             continue;
           }
         const unsigned int cut_backs = stepper.n_cut_backs();
-        // After a step back on a snap-back, a step forward at the limit
-        // would leave the path (e.g. reload the softening zone elastically
-        // instead of finishing the snap-back): such a step is tried only
-        // as the last of the cut-backs.
-        going_back = t_new < t_old;
         if (stepper.path_following())
           stepper.accept(t_new, force_new);
         else

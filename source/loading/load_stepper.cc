@@ -168,6 +168,22 @@ namespace qsmpm
 
 
   double
+  LoadStepper::backward_limit() const
+  {
+    return 10. * increment_cap();
+  }
+
+
+
+  bool
+  LoadStepper::allow_limit() const
+  {
+    return !went_back || cut_backs == parameters.max_cut_backs;
+  }
+
+
+
+  double
   LoadStepper::force() const
   {
     return F;
@@ -179,7 +195,8 @@ namespace qsmpm
   LoadStepper::accept(const double t_new, const double force_new)
   {
     Assert(path_following(), ExcInternalError());
-    t = t_new;
+    went_back = t_new < t;
+    t         = t_new;
     F = force_new;
     ++n_steps;
     cut_backs   = 0;
@@ -293,9 +310,9 @@ namespace qsmpm
     out << std::setprecision(std::numeric_limits<double>::max_digits10) << t
         << ' ' << increment << ' ' << n_steps;
     // Path following needs the force of the last step for the dissipation
-    // of the next one.
+    // of the next one, and whether it went back (allow_limit()).
     if (path_following())
-      out << ' ' << F;
+      out << ' ' << F << ' ' << went_back;
   }
 
 
@@ -305,7 +322,7 @@ namespace qsmpm
   {
     in >> t >> increment >> n_steps;
     if (path_following())
-      in >> F;
+      in >> F >> went_back;
     AssertThrow(in, ExcMessage("Cannot read the load stepping state."));
     cut_backs = 0;
   }

@@ -150,7 +150,7 @@ namespace qsmpm
      * dissipation) from load factor @p t_old: the load factor is an
      * unknown, and the step dissipates @p dissipation, or, if that needs a
      * larger increment and @p allow_limit, goes to t_old + @p limit (see
-     * PathFollowingNewton). If Newton converges, commit it, set @p t_new
+     * PathFollowingNewton); it may go back by at most @p back_limit. If Newton converges, commit it, set @p t_new
      * and @p force_new (the generalized force, the work-conjugate of the
      * load factor) and return true; otherwise leave every point untouched
      * and return false.
@@ -160,6 +160,7 @@ namespace qsmpm
                            const bool    allow_limit,
                            const double  dissipation,
                            const double  limit,
+                           const double  back_limit,
                            NewtonReport &report,
                            double       &t_new,
                            double       &force_new);

@@ -113,6 +113,25 @@ namespace qsmpm
     increment_limit() const;
 
     /**
+     * With path following: the largest decrease of the load factor in one
+     * step, ten times the uncut increment limit. It is not cut back with
+     * the dissipation: a snap-back needs the same step back however small
+     * the energy of the step.
+     */
+    double
+    backward_limit() const;
+
+    /**
+     * With path following: whether the last accepted step decreased the
+     * load factor (a step back on a snap-back). A forward step at the
+     * limit would then leave the path (reload the softening zone
+     * elastically instead of finishing the snap-back), so it is allowed
+     * only as the last of the cut-backs: allow_limit().
+     */
+    bool
+    allow_limit() const;
+
+    /**
      * With path following: the generalized force (the work-conjugate of
      * the load factor) at the load factor of the last accepted step.
      */
@@ -130,7 +149,8 @@ namespace qsmpm
 
     /**
      * Write the state between two steps (load factor, increment, number of
-     * accepted steps) to @p out, in full precision, for a checkpoint.
+     * accepted steps; with path following the force and whether the last
+     * step went back) to @p out, in full precision, for a checkpoint.
      */
     void
     save(std::ostream &out) const;
@@ -153,6 +173,8 @@ namespace qsmpm
     /// Path following: the cut-back target dissipation and the force.
     double dissipation = 0.;
     double F           = 0.;
+    /// Path following: the last accepted step decreased the load factor.
+    bool went_back = false;
   };
 } // namespace qsmpm
 

@@ -56,7 +56,7 @@ namespace qsmpm
    * evaluation each). The first iteration from du = 0 is the
    * tangent predictor.
    *
-   * Where the constraint cannot be met with -10 @p limit <= Delta lambda
+   * Where the constraint cannot be met with -@p back_limit <= Delta lambda
    * <= @p limit
    * (an elastic step dissipates nothing; at lambda = 0 the constraint does
    * not even depend on Delta lambda), Delta lambda is set to +limit and the
@@ -92,7 +92,11 @@ namespace qsmpm
     }
 
     /**
-     * Solve from du = 0, Delta lambda = 0. If not @p allow_limit, a
+     * Solve from du = 0, Delta lambda = 0. A snap-back may need steps back
+     * larger than the forward @p limit; only where the linearized
+     * constraint is (nearly) singular does its solution reach far beyond,
+     * with either sign, hence a bound @p back_limit on those. If not
+     * @p allow_limit, a
      * solution at the limit (see the class documentation) counts as a
      * failure. @p g: the increments of the
      * constrained components for a unit load-factor increment (zero on
@@ -106,6 +110,7 @@ namespace qsmpm
           const VectorType &g,
           const Constraint &constraint,
           const double      limit,
+          const double      back_limit,
           const bool        allow_limit,
           VectorType       &du,
           double           &delta_lambda,
@@ -213,7 +218,7 @@ namespace qsmpm
             d_lambda = -needed / backward;
           at_limit = false;
           if (!(delta_lambda + d_lambda <= limit &&
-                delta_lambda + d_lambda >= -backward_limit * limit))
+                delta_lambda + d_lambda >= -back_limit))
             {
               d_lambda = limit - delta_lambda;
               at_limit = true;
@@ -271,14 +276,6 @@ namespace qsmpm
     }
 
   private:
-    /**
-     * How far back (in units of the limit) the load factor of a step may
-     * go. A snap-back needs steps back, which may be larger than the
-     * forward limit; only where the linearized constraint is (nearly)
-     * singular does its solution reach far beyond, with either sign.
-     */
-    static constexpr double backward_limit = 10.;
-
     /// phi at the state of the last op.residual() with force @p force.
     static double
     constraint_value(const Constraint &c,
