@@ -4,7 +4,8 @@
 //    Independent checks: Young's modulus along a sample axis for crystals
 //    whose <100>, <110> or <111> lies along it must be the single-crystal
 //    values E<100> = 130.06, E<110> = 219.19, E<111> = 284.07 GPa
-//    (REFERENCE_VALUES.md 3, for C11, C12, C44 = 249, 155, 114 GPa);
+//    for C11, C12, C44 = 249, 155, 114 GPa
+//    (doc/references.md#nickel-single-crystal-constants-and-bounds);
 //    to_bunge inverts from_bunge; cubic symmetry leaves the stiffness
 //    unchanged.
 // 2. The model: the stress of update_stress() equals the explicit rotation

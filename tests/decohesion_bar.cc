@@ -1,8 +1,8 @@
 // A 1-D bar with one softening cell under displacement control, against the
-// analytical curve (REFERENCE_VALUES section 2): a strip of n cells, length
-// L, section A = h (per unit thickness), nu = 0 and u_y = 0 everywhere, the
-// left end fixed in x and the right end pulled by u = t. Only the middle
-// cell may crack (normal x). Then
+// analytical curve (doc/references.md#one-dimensional-bar): a strip of n
+// cells, length L, section A = h (per unit thickness), nu = 0 and u_y = 0
+// everywhere, the left end fixed in x and the right end pulled by u = t.
+// Only the middle cell may crack (normal x). Then
 //   before the peak       P = E A u / L,
 //   peak                  P = tau_nf A at u = tau_nf L / E,
 //   after the peak        u = sigma L / E + u0 (1 - sigma / tau_nf),

@@ -1,6 +1,7 @@
 // Path following (Load stepping/Control = dissipation) through a snap-back:
 // the 1-D bar of decohesion_bar, but long, L = 20 > E u0 / tau_nf = 10, so
-// that the softening branch bends back (REFERENCE_VALUES section 2):
+// that the softening branch bends back
+// (doc/references.md#one-dimensional-bar):
 //   before the peak       P = E A u / L,
 //   peak                  P = tau_nf A at u = tau_nf L / E = 2 u0,
 //   after the peak        u = sigma L / E + u0 (1 - sigma / tau_nf),

@@ -1,6 +1,7 @@
 // Texture discretization (paper Section 4.3) and the Voigt/Reuss/Hill
-// in-plane moduli (paper Table I) against independent references
-// (REFERENCE_VALUES.md 3, C11, C12, C44 = 249, 155, 114 GPa):
+// in-plane moduli (paper Table I) against independent references for
+// C11, C12, C44 = 249, 155, 114 GPa
+// (doc/references.md#nickel-single-crystal-constants-and-bounds):
 //
 // - for each shipped ODF, N_u = 50,000 orientations sampled from its
 //   cumulative distribution reproduce it: misfit < 15 % (the paper's

@@ -175,8 +175,9 @@ namespace qsmpm
               cache.position(p)};
             ArrayView<double> new_state(state_scratch.data(), n_state);
 
-            // Small strain: f_i = -volume sigma grad N_i. Finite strain:
-            // f_i = -Omega_0 P grad_n N_i with P = tau Delta F^{-T}.
+            // The point's share of R = f_ext - f_int: small strain
+            // -volume sigma grad N_i, finite strain -Omega_0 P grad_n N_i
+            // with P = tau Delta F^{-T}.
             SymmetricTensor<2, dim> stress;
             Tensor<2, dim>          P;
             double                  volume = 0.;
@@ -268,8 +269,9 @@ namespace qsmpm
                                   ArrayView<const double>(state_scratch.data(),
                                                           n_state));
 
-            // (2.25): f_int_i = -Omega_p sigma_p . grad N_i, or its
-            // finite-strain form -Omega_0 P grad_n N_i.
+            // (2.25): f_int_i = Omega_p sigma_p . grad N_i (the paper's
+            // f^int with the opposite sign), or its finite-strain form
+            // Omega_0 P grad_n N_i; subtracted, since R = f_ext - f_int.
             const auto add_forces = [&](const auto &stress_measure) {
               for (unsigned int k = 0; k < stencil; ++k)
                 {

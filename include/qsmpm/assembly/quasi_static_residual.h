@@ -17,20 +17,23 @@ namespace qsmpm
   /**
    * The residual of one load step, paper eqs. (2.14)-(2.25):
    *
-   *   R_i(du) = f_int_i(du) + f_ext_i,
-   *   f_int_i = - sum_p Omega_p^{k+1} sigma_p^{k+1} . grad N_i(x_p^k),
+   *   R_i(du) = f_ext_i - f_int_i(du),
+   *   f_int_i = sum_p Omega_p^{k+1} sigma_p^{k+1} . grad N_i(x_p^k),
    *
-   * with, at every point, d_eps_p = sym(sum_i grad N_i(x_p^k) (x) du_i)
-   * (2.18), the trial stress from the constitutive model (2.20-2.21), and
+   * with f_ext the external force of set_external_force() (2.10-2.12):
+   * the paper's R_i = f^int_i + f^ext_i (2.13-2.14), whose f^int
+   * (2.9, 2.25) is defined with the minus sign: f^int_paper = -f_int. At
+   * every point, d_eps_p = sym(sum_i grad N_i(x_p^k) (x) du_i) (2.18), the
+   * trial stress from the constitutive model (2.20-2.21), and
    * Omega_p^{k+1} = (1 + tr d_eps_p) J_p^k Omega_p^0 (2.23-2.24).
    *
    * At finite strain (Kinematics::finite_strain) the same loop computes
    * Delta F_p = I + sum_i du_i (x) grad N_i, F_p = Delta F_p F_p^k, the
    * Kirchhoff stress tau_p from the model, and
    *
-   *   f_int_i = - sum_p Omega_p^0 tau_p Delta F_p^{-T} . grad N_i(x_p^k),
+   *   f_int_i = sum_p Omega_p^0 tau_p Delta F_p^{-T} . grad N_i(x_p^k),
    *
-   * which equals - sum_p Omega_p^{k+1} sigma_p . grad_{k+1} N_i. commit()
+   * which equals sum_p Omega_p^{k+1} sigma_p . grad_{k+1} N_i. commit()
    * stores F, J = det F, the volume J Omega^0, the Cauchy stress tau / J
    * and the logarithmic strain 1/2 ln(F F^T). An inverted point
    * (det Delta F <= 0) makes the residual non-finite, which Newton's line
@@ -52,7 +55,8 @@ namespace qsmpm
    * stress, model state, J and volume on the points.
    *
    * The residual includes the rows of constrained degrees of freedom: there,
-   * -R_i is the reaction force of the support.
+   * -R_i = f_int_i - f_ext_i is the reaction force of the support (the
+   * force it exerts on the body).
    */
   template <int dim>
   class QuasiStaticResidual
@@ -75,7 +79,7 @@ namespace qsmpm
     void
     set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
 
-    /// R = f_int(du) + f_ext. Does not change any point.
+    /// R = f_ext - f_int(du). Does not change any point.
     void
     evaluate(const TrilinosWrappers::MPI::Vector &du,
              TrilinosWrappers::MPI::Vector       &R) const;

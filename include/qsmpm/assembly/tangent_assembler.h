@@ -16,7 +16,7 @@ namespace qsmpm
    *   K_ij = sum_p Omega_p B_i(x_p)^T C_p B_j(x_p),
    *
    * with C_p the tangent the constitutive model supplies at the committed
-   * state of point p. Since R(du) = f_ext - f(du), the Jacobian of the
+   * state of point p. Since R(du) = f_ext - f_int(du), the Jacobian of the
    * residual is J = -K when C_p is the exact tangent (linear models, without
    * volume updates); otherwise K is an approximation that is good enough to
    * precondition the Jacobian-free GMRES.

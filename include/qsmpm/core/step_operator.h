@@ -30,7 +30,8 @@ namespace qsmpm
     {
     }
 
-    /// R(du) = f_int - f_ext, with coupled rows added to their masters.
+    /// R(du) = f_ext - f_int(du) (QuasiStaticResidual), with coupled rows
+    /// added to their masters.
     void
     residual(const VectorType &du, VectorType &R) const
     {

@@ -18,8 +18,8 @@ namespace qsmpm
    *
    * Two kinds of constrained degrees of freedom occur:
    * - prescribed ones (displacement conditions, nodes without points):
-   *   no c_ij, only b_i. Their residual rows hold the reaction forces and
-   *   are kept; they have no equation;
+   *   no c_ij, only b_i. Their residual rows hold minus the reaction
+   *   forces (R = f_ext - f_int) and are kept; they have no equation;
    * - coupled ones (periodic boundary conditions: du_slave = du_master +
    *   jump). Their residual is the force on the same physical node as the
    *   master's, so condense() adds it to the master's row (R <- C^T R).

@@ -21,8 +21,8 @@ namespace qsmpm
      * gradient on the grid, i.e. in the configuration at the start of the
      * step), F = Delta F F_old, Kirchhoff stress from the model's
      * update_kirchhoff_stress(), volume det(F) Omega_0, internal force
-     * f_i = -Omega_0 tau Delta F^{-T} grad_n N_i (the integral of
-     * sigma grad N_i over the current volume).
+     * f_int_i = Omega_0 tau Delta F^{-T} grad_n N_i (the integral of
+     * sigma grad N_i over the current volume; R = f_ext - f_int).
      */
     finite_strain
   };
