@@ -13,6 +13,11 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpirun="mpirun --oversubscribe"
 tmp=$(mktemp -d)
 
+echo "yardstick ..." >&2
+yardstick=$(benchmarks/yardstick.sh)
+echo "strip ..." >&2
+$bin/strip --cells 256 --reuse 1 > "$tmp/strip_reuse1.csv"
+$bin/strip --cells 256 --reuse 5 > "$tmp/strip_reuse5.csv"
 echo "solver_scaling (serial) ..." >&2
 $bin/solver_scaling > "$tmp/scaling.csv"
 echo "kernel_ratios ..." >&2
@@ -66,6 +71,34 @@ speedup=$(awk -F, 'FNR == 2 { t[FILENAME] = $8 } END { for (f in t) if (f ~ /np1
   echo "- Memory: $(free -g | awk '/Mem:/ {print $2}') GiB"
   echo "- deal.II $(dpkg-query -W -f '${Version}' libdeal.ii-dev 2>/dev/null), Trilinos ML AMG, Open MPI"
   echo "- Build: Release"
+  echo
+  echo "Yardstick (\`benchmarks/yardstick.sh\`: 64 MiB of AES-CTR keystream through gzip -6, median"
+  echo "of 3) in this run: $yardstick s. Times below in yardsticks (y) are wall time / yardstick."
+  echo
+  echo "## Strip (issue 14)"
+  echo
+  echo "Command: \`$bin/strip --cells 256 --reuse K\`. Unit block, 256 x 256 cells, 2 x 2 points per"
+  echo "cell, linear elastic, clamped bottom, rollers on the sides, pressure on the left half of the"
+  echo "top in 5 load steps, AMG, Newton tolerance 1e-6. K = 1 builds the AMG hierarchy every step,"
+  echo "K = 5 once (\`Nonlinear solver/Preconditioner reuse steps\`; rebuilt earlier if GMRES per"
+  echo "Newton iteration doubles)."
+  echo
+  echo "| reuse steps | s per step | y per step | AMG setup share | builds | GMRES per step | peak memory (MB) | peak bytes per point |"
+  echo "|---|---|---|---|---|---|---|---|"
+  for k in 1 5; do
+    f="$tmp/strip_reuse$k.csv"
+    printf "| %s | %.2f | %.2f | %.2f | %s | %s | %.0f | %.0f |\n" "$k" \
+      "$(value "$f" seconds_per_step)" "$(echo "$(value "$f" seconds_per_step) / $yardstick" | bc -l)" \
+      "$(value "$f" preconditioner_setup_share)" "$(value "$f" preconditioner_builds)" \
+      "$(grep -E '^step_[0-9]+_gmres,' "$f" | cut -d, -f2 | tr '\n' ' ' | sed 's/ $//')" \
+      "$(value "$f" peak_memory_MB)" "$(value "$f" peak_bytes_per_point)"
+  done
+  f="$tmp/strip_reuse5.csv"
+  echo
+  echo "Where the memory goes (K = 5, resident memory): $(value "$f" memory_start_MB | awk '{ printf "%.0f", $1 }') MB before the grid"
+  echo "(the shared libraries: deal.II, Trilinos, PETSc, Open MPI), grid and dofs $(value "$f" memory_grid_MB | awk '{ printf "%.0f", $1 }') MB, points"
+  echo "$(value "$f" memory_points_MB | awk '{ printf "%.0f", $1 }') MB, stiffness matrix $(value "$f" memory_stiffness_MB | awk '{ printf "%.0f", $1 }') MB; the rest of the peak is the solver's (AMG"
+  echo "hierarchy, shape-function cache, vectors). Targets of issue 14: <= 0.2 y per step, <= 450 MB."
   echo
   echo "## Solver scaling"
   echo
