@@ -10,7 +10,8 @@
 // With path following (Control = dissipation):
 // - after a step back (load factor decreasing), a step at the forward limit
 //   is allowed only as the last cut-back, and after a forward step at once;
-// - that state survives save()/load() (a checkpoint): a resumed run must
+// - that state and the peak force (the reference of the guard against a
+//   reversed load) survive save()/load() (a checkpoint): a resumed run must
 //   take the same steps as an uninterrupted one;
 // - cut-backs halve the dissipation target and the forward limit but not
 //   the backward range (10 x the uncut limit), which a snap-back needs
@@ -105,6 +106,9 @@ main()
   check_that("after a step back, saved and loaded: limit not allowed",
              !resumed.allow_limit() && resumed.current() == 1.5e-4 &&
                resumed.force() == 0.5);
+  check_that("peak force (the sign guard's reference) 1 before and after "
+             "saving",
+             stepper.peak_force() == 1. && resumed.peak_force() == 1.);
   for (unsigned int i = 0; i < following.max_cut_backs; ++i)
     resumed.reject("test");
   check_that("... allowed at the last cut-back", resumed.allow_limit());

@@ -362,6 +362,7 @@ namespace qsmpm
                                                   const double  dissipation,
                                                   const double  limit,
                                                   const double  back_limit,
+                                                  const double  peak_force,
                                                   NewtonReport &report,
                                                   double       &t_new,
                                                   double       &force_new)
@@ -424,17 +425,23 @@ namespace qsmpm
       // The energy the points dissipate in the step (see
       // PathFollowingNewton for why not the global formula of Gutierrez).
       const typename Solver::Constraint constraint{0., 0., 1., dissipation};
-      report = newton.solve(
-        op,
-        g,
-        constraint,
-        limit,
-        back_limit,
-        allow_limit,
-        du,
-        delta_lambda,
-        R,
-        force_new);
+      // The load keeps the sign of its peak, up to 1e-3 of the peak (the
+      // noise of a converged step in the tail is far below that).
+      const typename Solver::ForceGuard guard{peak_force > 0. ?
+                                                1. :
+                                                (peak_force < 0. ? -1. : 0.),
+                                              1e-3 * std::abs(peak_force)};
+      report = newton.solve(op,
+                            g,
+                            constraint,
+                            limit,
+                            back_limit,
+                            allow_limit,
+                            du,
+                            delta_lambda,
+                            R,
+                            force_new,
+                            guard);
       count_preconditioner_use(report);
       check_volume_ratios(op, report);
     }
@@ -518,17 +525,18 @@ namespace qsmpm
         NewtonReport newton;
         const double t_old = stepper.current();
         double       t_new = stepper.target(), force_new = 0.;
-        const bool converged =
+        const bool   converged =
           stepper.path_following() ?
-            advance_path_following(t_old,
+              advance_path_following(t_old,
                                    stepper.allow_limit(),
                                    stepper.dissipation_target(),
                                    stepper.increment_limit(),
                                    stepper.backward_limit(),
+                                   stepper.peak_force(),
                                    newton,
                                    t_new,
                                    force_new) :
-            advance(t_old, t_new, newton);
+              advance(t_old, t_new, newton);
         if (!converged)
           {
             progress << "  step " << stepper.step() + 1 << ": t = " << t_old;

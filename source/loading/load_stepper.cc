@@ -184,6 +184,14 @@ namespace qsmpm
 
 
   double
+  LoadStepper::peak_force() const
+  {
+    return F_peak;
+  }
+
+
+
+  double
   LoadStepper::force() const
   {
     return F;
@@ -197,6 +205,8 @@ namespace qsmpm
     Assert(path_following(), ExcInternalError());
     went_back = t_new < t;
     t         = t_new;
+    if (std::abs(force_new) > std::abs(F_peak))
+      F_peak = force_new;
     F = force_new;
     ++n_steps;
     cut_backs   = 0;
@@ -312,7 +322,7 @@ namespace qsmpm
     // Path following needs the force of the last step for the dissipation
     // of the next one, and whether it went back (allow_limit()).
     if (path_following())
-      out << ' ' << F << ' ' << went_back;
+      out << ' ' << F << ' ' << went_back << ' ' << F_peak;
   }
 
 
@@ -322,7 +332,7 @@ namespace qsmpm
   {
     in >> t >> increment >> n_steps;
     if (path_following())
-      in >> F >> went_back;
+      in >> F >> went_back >> F_peak;
     AssertThrow(in, ExcMessage("Cannot read the load stepping state."));
     cut_backs = 0;
   }

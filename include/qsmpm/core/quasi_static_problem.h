@@ -150,10 +150,11 @@ namespace qsmpm
      * dissipation) from load factor @p t_old: the load factor is an
      * unknown, and the step dissipates @p dissipation, or, if that needs a
      * larger increment and @p allow_limit, goes to t_old + @p limit (see
-     * PathFollowingNewton); it may go back by at most @p back_limit. If Newton converges, commit it, set @p t_new
-     * and @p force_new (the generalized force, the work-conjugate of the
-     * load factor) and return true; otherwise leave every point untouched
-     * and return false.
+     * PathFollowingNewton); it may go back by at most @p back_limit, and its
+     * load must keep the sign of @p peak_force (up to 1e-3 of it). If Newton
+     * converges, commit it, set @p t_new and @p force_new (the generalized
+     * force, the work-conjugate of the load factor) and return true; otherwise
+     * leave every point untouched and return false.
      */
     bool
     advance_path_following(const double  t_old,
@@ -161,6 +162,7 @@ namespace qsmpm
                            const double  dissipation,
                            const double  limit,
                            const double  back_limit,
+                           const double  peak_force,
                            NewtonReport &report,
                            double       &t_new,
                            double       &force_new);

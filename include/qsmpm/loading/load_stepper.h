@@ -138,6 +138,13 @@ namespace qsmpm
     double
     force() const;
 
+    /**
+     * With path following: the generalized force of largest magnitude of
+     * the accepted steps so far (the peak load), with its sign.
+     */
+    double
+    peak_force() const;
+
     /// With path following: the attempt converged and ended at load factor
     /// @p t_new with generalized force @p force_new.
     void
@@ -149,8 +156,9 @@ namespace qsmpm
 
     /**
      * Write the state between two steps (load factor, increment, number of
-     * accepted steps; with path following the force and whether the last
-     * step went back) to @p out, in full precision, for a checkpoint.
+     * accepted steps; with path following the force, whether the last
+     * step went back and the peak force) to @p out, in full precision, for a
+     * checkpoint.
      */
     void
     save(std::ostream &out) const;
@@ -175,6 +183,8 @@ namespace qsmpm
     double F           = 0.;
     /// Path following: the last accepted step decreased the load factor.
     bool went_back = false;
+    /// Path following: the force of largest magnitude so far.
+    double F_peak = 0.;
   };
 } // namespace qsmpm
 

@@ -84,6 +84,20 @@ namespace qsmpm
       double value;
     };
 
+    /**
+     * Which equilibria of the constraint are admissible: the generalized
+     * force must keep the sign of the loading, sign F >= -tolerance (sign
+     * 0: no condition). A softening specimen loaded through pins can also
+     * dissipate Delta tau when it is pushed back (closing a compact-tension
+     * specimen puts its back face in tension); that equilibrium satisfies
+     * the constraint but is not the loading path.
+     */
+    struct ForceGuard
+    {
+      double sign      = 0.;
+      double tolerance = 0.;
+    };
+
     explicit PathFollowingNewton(const NewtonParameters   &parameters,
                                  const ConditionalOStream *log = nullptr)
       : parameters(parameters)
@@ -103,7 +117,8 @@ namespace qsmpm
      * every free component). On return @p du is the increment (its
      * constrained components Delta lambda g), @p delta_lambda the
      * load-factor increment, @p R the residual of du with the constrained
-     * rows, and @p force F(du).
+     * rows, and @p force F(du). A solution that violates @p guard is a
+     * failure ("the load reversed its sign").
      */
     NewtonReport
     solve(const Operator   &op,
@@ -115,7 +130,8 @@ namespace qsmpm
           VectorType       &du,
           double           &delta_lambda,
           VectorType       &R,
-          double           &force) const
+          double           &force,
+          const ForceGuard &guard = ForceGuard()) const
     {
       NewtonReport report;
       VectorType   x(du), y(du), rhs(du), trial(du), dR(du), step(du);
@@ -155,6 +171,11 @@ namespace qsmpm
               (at_limit ? phi <= phi_tolerance :
                           std::abs(phi) <= phi_tolerance))
             {
+              if (guard.sign * force < -guard.tolerance)
+                {
+                  report.failure = "the load reversed its sign";
+                  return report;
+                }
               report.converged = true;
               return report;
             }
