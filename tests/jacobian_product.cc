@@ -112,7 +112,11 @@ test(const qsmpm::Formulation &formulation)
         }
       u0.compress(VectorOperation::insert);
       constraints.set_zero(u0);
-      residual.commit(u0);
+      TrilinosWrappers::MPI::Vector u0_ghosted(grid.locally_owned_dofs(),
+                                               grid.locally_relevant_dofs(),
+                                               MPI_COMM_WORLD);
+      u0_ghosted = u0;
+      residual.commit(u0_ghosted, points);
     }
   qsmpm::TangentAssembler<dim> tangent;
   tangent.reinit(grid, formulation.gimp());

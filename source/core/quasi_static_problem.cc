@@ -514,11 +514,14 @@ namespace qsmpm
   QuasiStaticProblem<dim>::commit_step()
   {
     TimerOutput::Scope scope(timer_output, "commit and move points");
-    residual->commit(du);
+    // The points read du at the nodes of their cells, some of them owned by
+    // other ranks: one exchange of ghost values serves both the new point
+    // state and the motion of the points.
     VectorType du_ghosted(background_grid.locally_owned_dofs(),
                           background_grid.locally_relevant_dofs(),
                           communicator);
-    du_ghosted         = du;
+    du_ghosted = du;
+    residual->commit(du_ghosted, points());
     const double moved = points().advect(cache, du_ghosted);
     last_reactions     = reaction_forces.evaluate(R, communicator);
     const auto lost    = points().sort_into_cells();
