@@ -24,7 +24,8 @@
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
 #include <qsmpm/core/step_operator.h>
-#include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/boundary_descriptor.h>
+#include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
@@ -62,7 +63,7 @@ namespace
     print(tag + "_bytes_per_point",
           Utilities::MPI::sum(rss_points - rss_before, comm) / n_points);
 
-    qsmpm::BoundaryConditions<dim> bcs;
+    qsmpm::BoundaryDescriptor<dim> bcs;
     std::array<bool, dim>          all;
     all.fill(true);
     bcs.add_dirichlet_boundary(
@@ -70,8 +71,11 @@ namespace
     bcs.add_dirichlet_boundary(
       3, all, std::make_shared<Benchmarks::TopDisplacement<dim>>());
     AffineConstraints<double> step_lines;
-    bcs.make_constraints(
-      grid, cache.dofs_without_points(grid), 0., 1., step_lines);
+    qsmpm::DisplacementConstraints<dim>(bcs).make(grid, 0., 1., step_lines);
+    for (const auto dof : cache.dofs_without_points(grid))
+      if (!step_lines.is_constrained(dof))
+        step_lines.add_line(dof);
+    step_lines.close();
     qsmpm::StepConstraints step_constraints;
     step_constraints.reinit(std::move(step_lines),
                             grid.locally_owned_dofs(),

@@ -17,7 +17,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
-#include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/boundary_descriptor.h>
+#include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/materials/hencky.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/solvers/jacobian_free_operator.h>
@@ -77,14 +78,17 @@ test(const qsmpm::Formulation &formulation)
                                            /*update_volumes=*/finite_strain);
   cache.reinit(grid, points, residual.ghosted_layout());
 
-  qsmpm::BoundaryConditions<dim> bcs;
+  qsmpm::BoundaryDescriptor<dim> bcs;
   std::array<bool, dim>          all;
   all.fill(true);
   bcs.add_dirichlet_boundary(
     0, all, std::make_shared<Functions::ZeroFunction<dim>>(dim));
   AffineConstraints<double> constraints;
-  bcs.make_constraints(
-    grid, cache.dofs_without_points(grid), 0., 1., constraints);
+  qsmpm::DisplacementConstraints<dim>(bcs).make(grid, 0., 1., constraints);
+  for (const auto dof : cache.dofs_without_points(grid))
+    if (!constraints.is_constrained(dof))
+      constraints.add_line(dof);
+  constraints.close();
 
   TrilinosWrappers::MPI::Vector f_ext(grid.locally_owned_dofs(),
                                       MPI_COMM_WORLD);
@@ -108,7 +112,11 @@ test(const qsmpm::Formulation &formulation)
         }
       u0.compress(VectorOperation::insert);
       constraints.set_zero(u0);
-      residual.commit(u0);
+      TrilinosWrappers::MPI::Vector u0_ghosted(grid.locally_owned_dofs(),
+                                               grid.locally_relevant_dofs(),
+                                               MPI_COMM_WORLD);
+      u0_ghosted = u0;
+      residual.commit(u0_ghosted, points);
     }
   qsmpm::TangentAssembler<dim> tangent;
   tangent.reinit(grid, formulation.gimp());

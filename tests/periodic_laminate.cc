@@ -1,5 +1,5 @@
 // Periodic boundary conditions (BackgroundGrid::make_periodic,
-// BoundaryConditions::set_macroscopic_displacement_gradient, condensed
+// BoundaryDescriptor::set_macroscopic_displacement_gradient, condensed
 // Newton-Krylov) against an exact homogenization result.
 //
 // A laminate of two nickel crystals (C11, C12, C44 = 249, 155, 114 GPa),

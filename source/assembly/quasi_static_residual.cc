@@ -85,7 +85,10 @@ namespace qsmpm
   QuasiStaticResidual<dim>::evaluate(const TrilinosWrappers::MPI::Vector &du,
                                      TrilinosWrappers::MPI::Vector &R) const
   {
-    loop<false>(du, &R);
+    du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
+                                        *importer,
+                                        Insert);
+    loop<false>(du_ghosted.trilinos_vector()[0], &R, nullptr);
   }
 
 
@@ -93,9 +96,15 @@ namespace qsmpm
   template <int dim>
   void
   QuasiStaticResidual<dim>::commit(
-    const TrilinosWrappers::MPI::Vector &du) const
+    const TrilinosWrappers::MPI::Vector &du_increment,
+    MaterialPointSet<dim>               &written)
   {
-    loop<true>(du, nullptr);
+    Assert(&written == &points,
+           ExcMessage("commit() must be given the points of the residual."));
+    Assert(du_increment.trilinos_vector().Map().SameAs(
+             du_ghosted.trilinos_vector().Map()),
+           ExcMessage("commit() needs du with the ghosted layout."));
+    loop<true>(du_increment.trilinos_vector()[0], nullptr, &written);
   }
 
 
@@ -103,8 +112,9 @@ namespace qsmpm
   template <int dim>
   template <bool write_back>
   void
-  QuasiStaticResidual<dim>::loop(const TrilinosWrappers::MPI::Vector &du,
-                                 TrilinosWrappers::MPI::Vector       *R) const
+  QuasiStaticResidual<dim>::loop(const double                  *du_values,
+                                 TrilinosWrappers::MPI::Vector *R,
+                                 MaterialPointSet<dim>         *written) const
   {
     constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
     const auto            &offsets  = points.get_offsets();
@@ -112,11 +122,7 @@ namespace qsmpm
     const bool finite_strain        = points.get_formulation().finite_strain();
     const bool fbar                 = points.get_formulation().fbar();
 
-    du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
-                                        *importer,
-                                        Insert);
-    const double *du_values = du_ghosted.trilinos_vector()[0];
-    double       *force     = local_force->Values();
+    double *force = local_force->Values();
     if (!write_back)
       {
         local_force->PutScalar(0.);
@@ -162,7 +168,10 @@ namespace qsmpm
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
-            double               *data    = cache.properties(p);
+            const double         *data    = cache.properties(p);
+            // Where commit() writes: the same array.
+            double *const out =
+              write_back ? cache.properties(p, *written) : nullptr;
             const Tensor<2, dim> &grad_du =
               grad_du_scratch[p - range.first_point];
 
@@ -226,13 +235,13 @@ namespace qsmpm
                           0.5 *
                             TensorFunctions::log(
                               TensorFunctions::left_cauchy_green(kinematics.F)),
-                          data + offsets.strain);
+                          out + offsets.strain);
                         Utils::write_symmetric<dim>(tau / J,
-                                                    data + offsets.stress);
+                                                    out + offsets.stress);
                         Utils::write_tensor<dim>(
-                          kinematics.F, data + offsets.deformation_gradient);
-                        data[offsets.J]      = J;
-                        data[offsets.volume] = J * data[offsets.initial_volume];
+                          kinematics.F, out + offsets.deformation_gradient);
+                        out[offsets.J]      = J;
+                        out[offsets.volume] = J * data[offsets.initial_volume];
                       }
                   }
               }
@@ -255,10 +264,10 @@ namespace qsmpm
                 if (write_back)
                   {
                     Utils::write_symmetric<dim>(old.strain + d_eps,
-                                                data + offsets.strain);
-                    Utils::write_symmetric<dim>(stress, data + offsets.stress);
-                    data[offsets.J]      = J;
-                    data[offsets.volume] = volume;
+                                                out + offsets.strain);
+                    Utils::write_symmetric<dim>(stress, out + offsets.stress);
+                    out[offsets.J]      = J;
+                    out[offsets.volume] = volume;
                   }
               }
 
@@ -283,7 +292,7 @@ namespace qsmpm
             if (write_back)
               std::copy(state_scratch.begin(),
                         state_scratch.end(),
-                        data + offsets.state);
+                        out + offsets.state);
             else if (finite_strain)
               add_forces(P);
             else

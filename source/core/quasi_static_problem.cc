@@ -3,9 +3,12 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/io/checkpoint.h>
+#include <qsmpm/loading/constraint_checks.h>
+#include <qsmpm/loading/parsed_boundary_conditions.h>
 #include <qsmpm/solvers/path_following_newton.h>
 #include <sstream>
 #include <utility>
@@ -19,7 +22,7 @@ namespace qsmpm
     BackgroundGrid<dim>::Parameters::declare_parameters(prm);
     MaterialPointSet<dim>::Parameters::declare_parameters(prm);
     ConstitutiveModelFactory<dim>::declare_parameters(prm);
-    BoundaryConditions<dim>::Parameters::declare_parameters(prm);
+    ParsedBoundaryConditions<dim>::Parameters::declare_parameters(prm);
     LoadStepper::Parameters::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
     OutputWriter<dim>::Parameters::declare_parameters(prm);
@@ -53,6 +56,9 @@ namespace qsmpm
                    TimerOutput::never,
                    TimerOutput::wall_times)
     , background_grid(communicator)
+    , displacement_constraints(bcs)
+    , external_force(bcs)
+    , reaction_forces(displacement_constraints)
   {
   }
 
@@ -78,7 +84,8 @@ namespace qsmpm
     material_points->fill(prm_values.material_points);
     AssertThrow(material_points->n_global_points() > 0,
                 ExcMessage("Material points: the region holds no points."));
-    bcs.parse_parameters(prm);
+    ParsedBoundaryConditions<dim> parsed_conditions;
+    parsed_conditions.parse_parameters(prm, bcs);
 
     // A load or a prescribed displacement that is NaN or infinite somewhere
     // (sqrt(-1), 1/x at x = 0) would only show as a residual that is not a
@@ -105,9 +112,8 @@ namespace qsmpm
           vertices[n++] = vertices[i];
         vertices.resize(n);
       }
-    bcs.check_parsed_functions(vertices,
-                               {0.,
-                                prm_values.load_stepping.final_load_factor});
+    parsed_conditions.check_functions(
+      vertices, {0., prm_values.load_stepping.final_load_factor});
   }
 
 
@@ -157,7 +163,7 @@ namespace qsmpm
 
 
   template <int dim>
-  BoundaryConditions<dim> &
+  BoundaryDescriptor<dim> &
   QuasiStaticProblem<dim>::boundary_conditions()
   {
     return bcs;
@@ -221,6 +227,74 @@ namespace qsmpm
 
   template <int dim>
   void
+  QuasiStaticProblem<dim>::make_step_constraints(
+    const double               t_old,
+    const double               t_new,
+    AffineConstraints<double> &constraints)
+  {
+    displacement_constraints.make(background_grid, t_old, t_new, constraints);
+
+    // Which nodes carry material is a matter of the step, not of the
+    // boundary conditions: the points move, and a node may lose or gain
+    // material from one step to the next (paper Section 2.2).
+    const IndexSet inactive = inactive_dofs();
+
+    // Each displacement condition that moves its nodes must still hold
+    // material; and all the nodes with material that the conditions hold
+    // (each once, in the order of their dofs) must prevent every rigid-body
+    // motion, or the step's linear systems are singular. Periodicity holds
+    // the body itself.
+    const auto &conditions = bcs.dirichlet_conditions();
+    std::map<types::global_dof_index, std::pair<Point<dim>, unsigned int>> held;
+    for (unsigned int k = 0; k < conditions.size(); ++k)
+      {
+        unsigned int n_active          = 0;
+        double       largest_increment = 0.;
+        for (const auto &dof : displacement_constraints.prescribed_dofs(k))
+          {
+            largest_increment =
+              std::max(largest_increment, std::abs(dof.increment));
+            if (!inactive.is_element(dof.index))
+              {
+                ++n_active;
+                held.emplace(dof.index,
+                             std::make_pair(dof.node, dof.component));
+              }
+          }
+        ConstraintChecks::assert_condition_acts(conditions[k].name,
+                                                n_active,
+                                                largest_increment,
+                                                t_old,
+                                                t_new,
+                                                communicator);
+      }
+    if (background_grid.periodic_directions().empty())
+      {
+        std::vector<std::pair<Point<dim>, unsigned int>> held_nodes;
+        held_nodes.reserve(held.size());
+        for (const auto &entry : held)
+          held_nodes.push_back(entry.second);
+        const Point<dim> &lower = background_grid.lower_corner();
+        const Point<dim> &upper = background_grid.upper_corner();
+        ConstraintChecks::assert_no_rigid_body_motion<dim>(
+          held_nodes,
+          lower + 0.5 * (upper - lower),
+          lower.distance(upper),
+          communicator);
+      }
+
+    // Nodes with no point in their support have no equation: fix their
+    // increment to zero. It does not influence any point.
+    for (const auto dof : inactive)
+      if (!constraints.is_constrained(dof))
+        constraints.add_line(dof);
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
   QuasiStaticProblem<dim>::prepare_step(const double t_old, const double t_new)
   {
     setup_step_data();
@@ -233,21 +307,20 @@ namespace qsmpm
     {
       TimerOutput::Scope        scope(timer_output, "constraints and loads");
       AffineConstraints<double> constraints;
-      bcs.make_constraints(
-        background_grid, inactive_dofs(), t_old, t_new, constraints);
+      make_step_constraints(t_old, t_new, constraints);
       step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
                               communicator);
       // At finite strain a body force is per unit initial volume (rho_0 b),
       // so that the load of a point does not change with its volume.
       const auto &offsets = points().get_offsets();
-      bcs.assemble_external_force(background_grid,
-                                  cache,
-                                  points().get_formulation().finite_strain() ?
-                                    offsets.initial_volume :
-                                    offsets.volume,
-                                  t_new,
-                                  f_ext);
+      external_force.assemble(background_grid,
+                              cache,
+                              points().get_formulation().finite_strain() ?
+                                offsets.initial_volume :
+                                offsets.volume,
+                              t_new,
+                              f_ext);
       residual->set_external_force(f_ext);
     }
     // The stiffness and its preconditioner, unless the one of an earlier
@@ -398,8 +471,7 @@ namespace qsmpm
         // displacements t g; with another dependence on t the dissipation
         // would be wrong without any sign of it.
         AffineConstraints<double> doubled;
-        bcs.make_constraints(
-          background_grid, inactive_dofs(), t_old, t_old + 2., doubled);
+        make_step_constraints(t_old, t_old + 2., doubled);
         double mismatch = 0.;
         for (const auto i : background_grid.locally_owned_dofs())
           if (doubled.is_constrained(i))
@@ -411,7 +483,7 @@ namespace qsmpm
                     ExcMessage("Load stepping: Control = dissipation needs "
                                "prescribed displacements proportional to "
                                "the load factor t (u = t g(x))."));
-        // (make_constraints() also recorded the dofs of the reactions
+        // (make_step_constraints() also recorded the dofs of the reactions
         // again: the same ones.)
         proportionality_checked = true;
       }
@@ -459,13 +531,16 @@ namespace qsmpm
   QuasiStaticProblem<dim>::commit_step()
   {
     TimerOutput::Scope scope(timer_output, "commit and move points");
-    residual->commit(du);
+    // The points read du at the nodes of their cells, some of them owned by
+    // other ranks: one exchange of ghost values serves both the new point
+    // state and the motion of the points.
     VectorType du_ghosted(background_grid.locally_owned_dofs(),
                           background_grid.locally_relevant_dofs(),
                           communicator);
-    du_ghosted         = du;
+    du_ghosted = du;
+    residual->commit(du_ghosted, points());
     const double moved = points().advect(cache, du_ghosted);
-    last_reactions     = bcs.reactions(R, communicator);
+    last_reactions     = reaction_forces.evaluate(R, communicator);
     const auto lost    = points().sort_into_cells();
     // In parallel, deal.II finds a point's new cell only among the
     // neighbours of its old one (the ghost layer).

@@ -272,7 +272,7 @@ namespace qsmpm
 
   template <int dim>
   unsigned int
-  CompactTensionGeometry<dim>::add_supports(BoundaryConditions<dim> &bcs) const
+  CompactTensionGeometry<dim>::add_supports(BoundaryDescriptor<dim> &bcs) const
   {
     const double tolerance = 1e-6 * parameters.cell_size;
     const double x_load = load_point_x(), y_top = height();

@@ -364,12 +364,11 @@ namespace qsmpm
         // The cache was filled in this same order at the start of the step.
         for (auto &particle : particle_handler.particles_in_cell(range.cell))
           {
-            Assert(particle.get_properties().data() == cache.properties(p),
-                   ExcInternalError());
+            double *data = particle.get_properties().data();
+            Assert(data == cache.properties(p), ExcInternalError());
             const Tensor<1, dim> u = cache.interpolate(c, p, values);
             largest                = std::max(largest, u.norm());
             particle.set_location(particle.get_location() + u);
-            double *data = cache.properties(p);
             for (unsigned int d = 0; d < dim; ++d)
               data[offsets.displacement + d] += u[d];
             ++p;

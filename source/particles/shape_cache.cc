@@ -84,7 +84,8 @@ namespace qsmpm
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
 
-    stencil = gimp ? max_stencil_size : n_vertices;
+    point_set = &points;
+    stencil   = gimp ? max_stencil_size : n_vertices;
     cells.clear();
     dof_offsets.assign(1, 0);
     cell_local_dofs.clear();

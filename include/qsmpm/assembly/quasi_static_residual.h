@@ -50,9 +50,12 @@ namespace qsmpm
    *
    * evaluate() is pure: it reads the committed point state and writes only
    * the residual. This is what makes finite-difference Jacobian-vector
-   * products, line searches and rejected steps safe. commit() evaluates the
-   * same formulas once more for the converged increment and stores strain,
-   * stress, model state, J and volume on the points.
+   * products, line searches and rejected steps safe; the types say so, as
+   * the residual holds the points read-only and the ShapeCache hands out
+   * writable point data only to the holder of the writable point set.
+   * commit() is given that set: it evaluates the same formulas once more for
+   * the converged increment and stores strain, stress, model state, J and
+   * volume on the points.
    *
    * The residual includes the rows of constrained degrees of freedom: there,
    * -R_i = f_int_i - f_ext_i is the reaction force of the support (the
@@ -75,7 +78,7 @@ namespace qsmpm
     void
     reinit();
 
-    /// The external force of the step (assembled by BoundaryConditions).
+    /// The external force of the step (see ExternalForceAssembler).
     void
     set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
 
@@ -84,9 +87,15 @@ namespace qsmpm
     evaluate(const TrilinosWrappers::MPI::Vector &du,
              TrilinosWrappers::MPI::Vector       &R) const;
 
-    /// Store the state of the converged increment @p du on the points.
+    /**
+     * Store the state of the converged increment on @p points, the point
+     * set of the constructor. @p du_ghosted holds the increment with the
+     * layout of ghosted_layout() (the caller imports the ghost entries once
+     * and moves the points with the same vector).
+     */
     void
-    commit(const TrilinosWrappers::MPI::Vector &du) const;
+    commit(const TrilinosWrappers::MPI::Vector &du_ghosted,
+           MaterialPointSet<dim>               &points);
 
     /// A vector with the locally relevant layout (for ShapeCache::reinit).
     const TrilinosWrappers::MPI::Vector &
@@ -123,11 +132,17 @@ namespace qsmpm
     dissipation() const;
 
   private:
-    /// The loop over cells and points shared by evaluate() and commit().
+    /**
+     * The loop over cells and points shared by evaluate() and commit(), with
+     * du in the local storage @p du_values of a vector with the layout of
+     * ghosted_layout(). evaluate() adds the forces into @p R; commit()
+     * writes the state into @p written, the points' set.
+     */
     template <bool write_back>
     void
-    loop(const TrilinosWrappers::MPI::Vector &du,
-         TrilinosWrappers::MPI::Vector       *R) const;
+    loop(const double                  *du_values,
+         TrilinosWrappers::MPI::Vector *R,
+         MaterialPointSet<dim>         *written) const;
 
     /**
      * F-bar: the volume-weighted mean over the points of a cell of the

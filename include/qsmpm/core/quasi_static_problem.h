@@ -13,8 +13,11 @@
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
-#include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/boundary_descriptor.h>
+#include <qsmpm/loading/displacement_constraints.h>
+#include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
+#include <qsmpm/loading/reaction_forces.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -101,7 +104,9 @@ namespace qsmpm
     const MaterialPointSet<dim> &
     points() const;
 
-    BoundaryConditions<dim> &
+    /// The boundary conditions and loads, as a description that every
+    /// load step reads.
+    BoundaryDescriptor<dim> &
     boundary_conditions();
 
     /// Solver, stepping and output settings, read when run() starts.
@@ -213,6 +218,16 @@ namespace qsmpm
     IndexSet
     inactive_dofs() const;
 
+    /**
+     * The closed constraints of the step t_old -> t_new: those of the
+     * displacement conditions (and periodicity), checked against the
+     * material, and zero increments on the nodes without enough material.
+     */
+    void
+    make_step_constraints(const double               t_old,
+                          const double               t_new,
+                          AffineConstraints<double> &constraints);
+
     /// Shape functions, constraints of t_old -> t_new, loads and the
     /// preconditioner of a step.
     void
@@ -242,7 +257,10 @@ namespace qsmpm
     BackgroundGrid<dim>                       background_grid;
     std::unique_ptr<ConstitutiveModel<dim>>   model;
     std::unique_ptr<MaterialPointSet<dim>>    material_points;
-    BoundaryConditions<dim>                   bcs;
+    BoundaryDescriptor<dim>                   bcs;
+    DisplacementConstraints<dim>              displacement_constraints;
+    ExternalForceAssembler<dim>               external_force;
+    ReactionForces<dim>                       reaction_forces;
     ShapeCache<dim>                           cache;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;

@@ -35,7 +35,7 @@ namespace qsmpm
    * faces 2d and 2d+1 are then identified in the p4est forest, so that
    * ghost layers and locally relevant degrees of freedom reach across them,
    * and make_periodicity_constraints() ties the nodes of face 2d to those
-   * of face 2d+1. BoundaryConditions adds the macroscopic jump of the
+   * of face 2d+1. DisplacementConstraints adds the macroscopic jump of the
    * displacement across the period.
    */
   template <int dim>

@@ -33,7 +33,7 @@ namespace qsmpm
    * - affine (kinematic uniform): u = E (x - x_centre) on all six faces,
    *   E the macroscopic strain tensor of the test.
    * - periodic: the grid is periodic in x, y and z and u = E (x - x_centre)
-   *   + w with a periodic fluctuation w (BoundaryConditions::
+   *   + w with a periodic fluctuation w (BoundaryDescriptor::
    *   set_macroscopic_displacement_gradient()); the mean strain is then
    *   exactly E. There are no loaded faces, so no reaction stress.
    *

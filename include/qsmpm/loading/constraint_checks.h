@@ -14,8 +14,9 @@ namespace qsmpm
    * Checks of the constraints of a load step that turn silent nonsense into
    * a clear error (issue 12): a body that no displacement condition holds
    * against a rigid-body motion, and a displacement condition that moves
-   * nodes the body has left. BoundaryConditions::make_constraints() calls
-   * them every step; both are cheap (a 6x6 eigenproblem and two reductions).
+   * nodes the body has left. QuasiStaticProblem calls them every step,
+   * where it knows which nodes carry material; both are cheap (a 6x6
+   * eigenproblem and two reductions).
    */
   namespace ConstraintChecks
   {

@@ -150,10 +150,25 @@ namespace qsmpm
       return point_positions[p];
     }
 
-    /// The point's property array (see MaterialPointSet::Offsets).
-    double *
+    /// The point's property array (see MaterialPointSet::Offsets), to read.
+    const double *
     properties(const unsigned int p) const
     {
+      return point_properties[p];
+    }
+
+    /**
+     * The same array, to write: the point state belongs to the point set,
+     * so only who holds @p points, the writable set that reinit() read the
+     * points from, may change it (QuasiStaticResidual::commit()). Evaluating
+     * a residual, which must not change any point, has no such access.
+     */
+    double *
+    properties(const unsigned int p, MaterialPointSet<dim> &points) const
+    {
+      Assert(&points == point_set,
+             ExcMessage("The points are not those of the ShapeCache."));
+      (void)points;
       return point_properties[p];
     }
 
@@ -213,7 +228,9 @@ namespace qsmpm
     std::vector<double>                  shape_values;
     std::vector<Tensor<1, dim>>          shape_gradients;
     std::vector<double *>                point_properties;
-    std::vector<Point<dim>>              point_positions;
+    /// The point set of the last reinit(), whose properties these are.
+    const MaterialPointSet<dim> *point_set = nullptr;
+    std::vector<Point<dim>>      point_positions;
     /// Scratch of add_gimp_cell().
     std::vector<types::global_dof_index> block_dofs;
   };

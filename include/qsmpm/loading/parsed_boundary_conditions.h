@@ -1,0 +1,93 @@
+#ifndef qsmpm_loading_parsed_boundary_conditions_h
+#define qsmpm_loading_parsed_boundary_conditions_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <memory>
+#include <qsmpm/loading/boundary_descriptor.h>
+#include <string>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The subsection "Boundary conditions" of a .prm file and its translation
+   * into a BoundaryDescriptor: the entries
+   *
+   *   Dirichlet boundaries = 0:xy, 1:x, 2:n
+   *   Traction boundaries  = 3
+   *   Macroscopic displacement gradient = 1e-3, 0, 0, 0
+   *
+   * (the small language "id:components" of the first one: boundary ids of
+   * the box, components from x, y, z, or n for the normal component only)
+   * and the three functions of the subsections Displacement, Traction and
+   * Body force, which every displacement condition, every traction boundary
+   * and the body force share.
+   *
+   * Every mistake in the subsection stops the run with a message that names
+   * the entry; deal.II's own messages (of ParsedFunction, of
+   * Utilities::string_to_int()) do not. The functions are kept (shared with
+   * the descriptor) so that check_functions() can later evaluate them where
+   * the grid is known.
+   */
+  template <int dim>
+  class ParsedBoundaryConditions
+  {
+  public:
+    /**
+     * The entries of the subsection, as text.
+     */
+    struct Parameters
+    {
+      /// "id:components, id:components"; components from x, y, z or n.
+      std::string dirichlet;
+      /// Boundary ids that carry the traction function.
+      std::string traction;
+      /// H (dim x dim numbers, row by row) of a periodic grid, or empty.
+      std::string macroscopic_gradient;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * Read the subsection and add its conditions to @p boundary: Dirichlet
+     * boundaries with the function of subsection "Displacement", traction
+     * boundaries with "Traction", the body force of "Body force" (unless it
+     * is zero) and the macroscopic displacement gradient.
+     */
+    void
+    parse_parameters(ParameterHandler &prm, BoundaryDescriptor<dim> &boundary);
+
+    /**
+     * Evaluate the three functions (subsections Displacement, Traction and
+     * Body force) at each of @p points for each load factor in
+     * @p load_factors, and throw an exception that names the subsection, the
+     * expression, the point and t if one of them gives a value that is not
+     * a finite number (e.g. sqrt(-1), 1/0). Without this check a NaN in a
+     * load only shows up as a residual that is not a number, after every
+     * cut-back of the first load step. The caller passes the same points on
+     * every MPI rank (e.g. the vertices of the coarse grid, which every rank
+     * holds), so that all ranks stop together. Does nothing before
+     * parse_parameters().
+     */
+    void
+    check_functions(const std::vector<Point<dim>> &points,
+                    const std::vector<double>     &load_factors) const;
+
+  private:
+    /// Read and try out the three functions.
+    void
+    parse_functions(ParameterHandler &prm);
+
+    /// Displacement, Traction and Body force.
+    std::array<std::shared_ptr<Functions::ParsedFunction<dim>>, 3> functions;
+    /// Their expressions, for messages.
+    std::array<std::string, 3> expressions;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,174 @@
+#include <deal.II/base/exceptions.h>
+#include <qsmpm/loading/boundary_descriptor.h>
+
+namespace qsmpm
+{
+  // The add_ and set_ functions check what a later step could not: that a
+  // function has one component per coordinate direction. Everything that
+  // needs the grid (does a condition select any node, is the grid periodic)
+  // is checked when a step is made of the description.
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_dirichlet_boundary(
+    const types::boundary_id              id,
+    const std::array<bool, dim>          &components,
+    const std::shared_ptr<Function<dim>> &displacement,
+    const bool                            normal_only)
+  {
+    AssertThrow(displacement && displacement->n_components == dim,
+                ExcMessage("A displacement function needs dim components."));
+    dirichlet.push_back({"boundary_" + std::to_string(id),
+                         id,
+                         {},
+                         components,
+                         normal_only,
+                         displacement});
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_dirichlet_nodes(
+    const std::string                             &name,
+    const std::function<bool(const Point<dim> &)> &selector,
+    const std::array<bool, dim>                   &components,
+    const std::shared_ptr<Function<dim>>          &displacement)
+  {
+    AssertThrow(displacement && displacement->n_components == dim,
+                ExcMessage("A displacement function needs dim components."));
+    dirichlet.push_back({name,
+                         numbers::invalid_boundary_id,
+                         selector,
+                         components,
+                         false,
+                         displacement});
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_traction(
+    const types::boundary_id              id,
+    const std::shared_ptr<Function<dim>> &traction)
+  {
+    AssertThrow(traction && traction->n_components == dim,
+                ExcMessage("A traction function needs dim components."));
+    traction_functions.emplace_back(id, traction);
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::set_body_force(
+    const std::shared_ptr<Function<dim>> &force)
+  {
+    AssertThrow(force && force->n_components == dim,
+                ExcMessage("A body force function needs dim components."));
+    body_force_function = force;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::set_macroscopic_displacement_gradient(
+    const std::function<Tensor<2, dim>(const double)> &H,
+    const Point<dim>                                  &reference_point)
+  {
+    gradient  = H;
+    reference = reference_point;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_point_load(const Point<dim>     &location,
+                                          const Tensor<1, dim> &force)
+  {
+    nodal_loads.emplace_back(location, force);
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename BoundaryDescriptor<dim>::DirichletCondition> &
+  BoundaryDescriptor<dim>::dirichlet_conditions() const
+  {
+    return dirichlet;
+  }
+
+
+
+  template <int dim>
+  const std::vector<
+    std::pair<types::boundary_id, std::shared_ptr<Function<dim>>>> &
+  BoundaryDescriptor<dim>::tractions() const
+  {
+    return traction_functions;
+  }
+
+
+
+  template <int dim>
+  const std::shared_ptr<Function<dim>> &
+  BoundaryDescriptor<dim>::body_force() const
+  {
+    return body_force_function;
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::pair<Point<dim>, Tensor<1, dim>>> &
+  BoundaryDescriptor<dim>::point_loads() const
+  {
+    return nodal_loads;
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryDescriptor<dim>::has_macroscopic_gradient() const
+  {
+    return static_cast<bool>(gradient);
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  BoundaryDescriptor<dim>::macroscopic_gradient(const double t) const
+  {
+    Assert(has_macroscopic_gradient(), ExcInternalError());
+    return gradient(t);
+  }
+
+
+
+  template <int dim>
+  const Point<dim> &
+  BoundaryDescriptor<dim>::macroscopic_reference() const
+  {
+    return reference;
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryDescriptor<dim>::has_loads() const
+  {
+    return body_force_function || !traction_functions.empty() ||
+           !nodal_loads.empty();
+  }
+
+
+
+  template class BoundaryDescriptor<2>;
+  template class BoundaryDescriptor<3>;
+} // namespace qsmpm
