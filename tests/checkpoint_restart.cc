@@ -27,13 +27,17 @@
 // only PASS/FAIL.
 #include "tests.h"
 
+// The specimen of the example compact_tension (examples/compact_tension/,
+// on the include path of the tests).
+#include "compact_tension_geometry.h"
+
 #include <filesystem>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/fracture/compact_tension_geometry.h>
 #include <qsmpm/materials/decohesion.h>
 
 using namespace qsmpm;
+using CompactTension::CompactTensionGeometry;
 namespace fs = std::filesystem;
 
 namespace

@@ -33,12 +33,16 @@
 // with finite-difference Jacobian products (sqrt(eps) = 1e-7) breaks down.
 #include "tests.h"
 
+// The specimen of the example compact_tension (examples/compact_tension/,
+// on the include path of the tests).
+#include "compact_tension_geometry.h"
+
 #include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/fracture/compact_tension_geometry.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
 #include <qsmpm/materials/decohesion.h>
 
 using namespace qsmpm;
+using CompactTension::CompactTensionGeometry;
 
 namespace
 {
@@ -52,38 +56,15 @@ namespace
     unsigned int max_newton;
   };
 
-  // Whether every point of the crack band except the lowest one has failed
-  // completely, w / u0 >= 1. The points have moved by millimetres by then,
-  // so the band points are those the model allows to crack, and the lowest
-  // is the one with the smallest initial height y - u_y.
+  // Whether every point of the crack band except the lowest one (the
+  // hinge) has failed completely, w / u0 >= 1.
   bool
-  band_failed(QuasiStaticProblem<2>           &problem,
+  band_failed(const QuasiStaticProblem<2>     &problem,
               const CompactTensionGeometry<2> &geometry,
               const MPI_Comm                   communicator)
   {
-    const auto &layout  = problem.points().get_layout();
-    const auto  w       = layout.offset(Decohesion<2>::opening_ratio_name);
-    const auto  allowed = layout.offset(Decohesion<2>::crack_allowed_name);
-    const auto  u_y     = problem.points().get_offsets().displacement + 1;
-    const auto  initial_height = [&](const auto &particle) {
-      return particle.get_location()[1] - particle.get_properties()[u_y];
-    };
-    double lowest = 1e10;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5)
-        lowest = std::min(lowest, initial_height(particle));
-    lowest                = Utilities::MPI::min(lowest, communicator);
-    double       smallest = 1e10;
-    unsigned int n_band   = 0;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5 &&
-          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
-        {
-          ++n_band;
-          smallest = std::min(smallest, particle.get_properties()[w]);
-        }
-    return Utilities::MPI::sum(n_band, communicator) > 0 &&
-           Utilities::MPI::min(smallest, communicator) >= 1.;
+    const auto band = geometry.count_failed_band_points(problem, communicator);
+    return band.first > 0 && band.second == band.first;
   }
 
   Result

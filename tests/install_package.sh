@@ -38,6 +38,7 @@ for f in include/qsmpm/core/quasi_static_problem.h \
   share/qsmpm/examples/block_compression/block_compression.cc \
   share/qsmpm/examples/block_compression/block_compression.prm \
   share/qsmpm/examples/block_compression/CMakeLists.txt \
+  share/qsmpm/examples/compact_tension/compact_tension_geometry.h \
   share/qsmpm/examples/polycrystal/odf share/doc/qsmpm/index.md; do
   if [ -e "$prefix/$f" ]; then pass "installed $f"; else fail "not installed: $f"; fi
 done

@@ -227,34 +227,99 @@ namespace BlockCompression
 
 
 
-  // @sect3{Setting up and running the problem}
+  // @sect3{The CompressedBlock class}
   //
   // This is the part that shows how to use the library from C++. The
   // sequence is always the same: make the grid, choose the constitutive
   // model, fill a region with material points, add boundary conditions, and
-  // run(). The function returns whether the computed plate force agrees with
-  // the analytical value.
+  // run(). As in deal.II's step-44 (the class Solid), each stage is a
+  // method of one class; run() calls them in order and returns whether the
+  // computed plate force agrees with the analytical value.
   template <int dim>
-  bool
-  run(const std::string &parameter_file)
+  class CompressedBlock
   {
-    ParameterHandler prm;
+  public:
+    explicit CompressedBlock(const std::string &parameter_file);
+
+    bool
+    run();
+
+  private:
+    Parameters
+    parse_parameters(const std::string &parameter_file);
+    void
+    make_grid();
+    void
+    setup_material();
+    void
+    setup_points();
+    void
+    setup_boundary_conditions();
+    bool
+    compare_with_analytical_solution(const double wall_time);
+
+    ParameterHandler        prm;
+    const Parameters        block;
+    QuasiStaticProblem<dim> problem;
+
+    // The upper corner of the block (its lower corner is the origin), the
+    // elastic constants, the index of the plate among the displacement
+    // conditions and the initial volume of the points.
+    Point<dim>   block_corner;
+    double       E = 0., nu = 0.;
+    bool         plane_stress   = false;
+    unsigned int plate          = 0;
+    double       initial_volume = 0.;
+  };
+
+
+
+  // @sect4{CompressedBlock::CompressedBlock}
+  //
+  // The parameters are read by parse_parameters() in the initializer list
+  // (prm is declared, hence made, before block); then the library reads
+  // its own subsections: solver, load stepping, output and material-point
+  // settings.
+  template <int dim>
+  CompressedBlock<dim>::CompressedBlock(const std::string &parameter_file)
+    : block(parse_parameters(parameter_file))
+    , problem(MPI_COMM_WORLD)
+  {
+    problem.parameters().parse_parameters(prm);
+  }
+
+
+
+  // @sect4{CompressedBlock::parse_parameters}
+  //
+  // "Dimension" was read by main() already; it is declared so that the
+  // file may hold it.
+  template <int dim>
+  Parameters
+  CompressedBlock<dim>::parse_parameters(const std::string &parameter_file)
+  {
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
     QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
     Parameters::declare_parameters(prm);
     prm.parse_input(parameter_file);
 
-    Parameters block;
-    block.parse_parameters(prm);
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    return parameters;
+  }
 
-    QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
-    // Solver, load stepping, output and material-point settings.
-    problem.parameters().parse_parameters(prm);
 
-    // The grid: square cells of size h, as high as the block, and
-    // `empty_cells` cells wider (and deeper) than it.
+
+  // @sect4{CompressedBlock::make_grid}
+  //
+  // The grid: square cells of size h, as high as the block, and
+  // `empty_cells` cells wider (and deeper) than it.
+  template <int dim>
+  void
+  CompressedBlock<dim>::make_grid()
+  {
     const double                  h = block.height / block.cells_over_height;
-    Point<dim>                    block_corner, grid_corner;
+    Point<dim>                    grid_corner;
     std::array<unsigned int, dim> subdivisions;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -269,29 +334,47 @@ namespace BlockCompression
         grid_corner[d] = subdivisions[d] * h;
       }
     problem.grid().make_box(Point<dim>(), grid_corner, subdivisions);
+  }
 
-    // The material: linear elasticity, with E and nu from the subsection
-    // "Material/linear elastic" of the parameter file. Any other model
-    // could be set here; the comparison below needs this one.
+
+
+  // @sect4{CompressedBlock::setup_material}
+  //
+  // The material: linear elasticity, with E and nu from the subsection
+  // "Material/linear elastic" of the parameter file. Any other model
+  // could be set here; the comparison below needs this one.
+  template <int dim>
+  void
+  CompressedBlock<dim>::setup_material()
+  {
     prm.enter_subsection("Material");
     AssertThrow(prm.get("Model") == "linear elastic",
                 ExcMessage("This example compares with linear elasticity: "
                            "set Material/Model = linear elastic."));
     prm.enter_subsection("linear elastic");
-    const double E            = prm.get_double("Young's modulus");
-    const double nu           = prm.get_double("Poisson's ratio");
-    const bool   plane_stress = prm.get_bool("Plane stress");
+    E            = prm.get_double("Young's modulus");
+    nu           = prm.get_double("Poisson's ratio");
+    plane_stress = prm.get_bool("Plane stress");
     prm.leave_subsection();
     prm.leave_subsection();
     problem.set_model(
       std::make_unique<LinearElastic<dim>>(E, nu, plane_stress));
+  }
 
-    // The body: material points only inside the block. The predicate is
-    // evaluated at every candidate point position of every cell; the grid
-    // nodes that end up without points in their support are inactive.
+
+
+  // @sect4{CompressedBlock::setup_points}
+  //
+  // The body: material points only inside the block. The predicate is
+  // evaluated at every candidate point position of every cell; the grid
+  // nodes that end up without points in their support are inactive.
+  template <int dim>
+  void
+  CompressedBlock<dim>::setup_points()
+  {
     const auto &mp = problem.parameters().material_points;
     problem.points().fill(
-      [&block_corner](const Point<dim> &x) {
+      [this](const Point<dim> &x) {
         for (unsigned int d = 0; d < dim; ++d)
           if (x[d] > block_corner[d])
             return false;
@@ -299,38 +382,69 @@ namespace BlockCompression
       },
       mp.points_per_direction,
       mp.placement);
+  }
 
-    // Supports: on the faces at the lower corner of the box (ids 0, 2 and,
-    // in 3D, 4) only the normal displacement is fixed, i.e. the block may
-    // slide along them; the top plate (id 3) prescribes u_y. We remember
-    // which condition is the plate to read its reaction later.
+
+
+  // @sect4{CompressedBlock::setup_boundary_conditions}
+  //
+  // Supports: on the faces at the lower corner of the box (ids 0, 2 and,
+  // in 3D, 4) only the normal displacement is fixed, i.e. the block may
+  // slide along them; the top plate (id 3) prescribes u_y. We remember
+  // which condition is the plate to read its reaction later.
+  template <int dim>
+  void
+  CompressedBlock<dim>::setup_boundary_conditions()
+  {
     auto      &bcs  = problem.boundary_conditions();
     const auto zero = std::make_shared<Functions::ZeroFunction<dim>>(dim);
     for (unsigned int d = 0; d < dim; ++d)
       bcs.add_dirichlet_boundary(2 * d, {}, zero, /*normal_only=*/true);
     std::array<bool, dim> y_only{};
-    y_only[1]                = true;
-    const unsigned int plate = bcs.dirichlet_conditions().size();
+    y_only[1] = true;
+    plate     = bcs.dirichlet_conditions().size();
     bcs.add_dirichlet_boundary(3,
                                y_only,
                                std::make_shared<PlateDisplacement<dim>>(
                                  block.plate_displacement));
+  }
 
-    // The initial volume of the points gives the cross-section A = V/H of
-    // the block as the points represent it, even if W is not a multiple of
-    // the point spacing.
-    const double initial_volume = problem.points().total_volume();
+
+
+  // @sect4{CompressedBlock::run}
+  //
+  // The initial volume of the points gives the cross-section A = V/H of
+  // the block as the points represent it, even if W is not a multiple of
+  // the point spacing.
+  template <int dim>
+  bool
+  CompressedBlock<dim>::run()
+  {
+    make_grid();
+    setup_material();
+    setup_points();
+    setup_boundary_conditions();
+    initial_volume = problem.points().total_volume();
 
     Timer timer;
     problem.run();
     timer.stop();
 
-    // @sect3{Comparison with the analytical solution}
-    //
-    // reactions() holds, per displacement condition, the force that the
-    // support exerts on the body at the end of the last step. The plate
-    // pushes down, so its y component is negative; the floor (condition 1,
-    // boundary id 2) must carry the same force upwards.
+    return compare_with_analytical_solution(timer.wall_time());
+  }
+
+
+
+  // @sect4{CompressedBlock::compare_with_analytical_solution}
+  //
+  // reactions() holds, per displacement condition, the force that the
+  // support exerts on the body at the end of the last step. The plate
+  // pushes down, so its y component is negative; the floor (condition 1,
+  // boundary id 2) must carry the same force upwards.
+  template <int dim>
+  bool
+  CompressedBlock<dim>::compare_with_analytical_solution(const double wall_time)
+  {
     const double delta = block.plate_displacement *
                          problem.parameters().load_stepping.final_load_factor;
     const double E_prime = (dim == 2 && !plane_stress) ? E / (1. - nu * nu) : E;
@@ -361,9 +475,9 @@ namespace BlockCompression
         << "  difference to F J    (F_h-F J)/(F J) = " << error_J << '\n'
         << "  load steps " << problem.step_reports().size()
         << ", Newton iterations " << n_newton << ", GMRES iterations "
-        << n_gmres << ", wall time " << std::setprecision(3)
-        << timer.wall_time() << " s on "
-        << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s)\n";
+        << n_gmres << ", wall time " << std::setprecision(3) << wall_time
+        << " s on " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+        << " rank(s)\n";
 
     // The result is the same on every rank, so all ranks agree on the exit
     // code.
@@ -372,9 +486,6 @@ namespace BlockCompression
         << block.tolerance << " (Block compression/Tolerance)" << std::endl;
     return passed;
   }
-
-
-
 } // namespace BlockCompression
 
 
@@ -406,9 +517,10 @@ main(int argc, char *argv[])
 
       // The dimension is a template argument, so it is read from the file
       // before anything else can be declared.
-      const bool passed = qsmpm::Utils::read_dimension(parameter_file) == 2 ?
-                            BlockCompression::run<2>(parameter_file) :
-                            BlockCompression::run<3>(parameter_file);
+      const bool passed =
+        qsmpm::Utils::read_dimension(parameter_file) == 2 ?
+          BlockCompression::CompressedBlock<2>(parameter_file).run() :
+          BlockCompression::CompressedBlock<3>(parameter_file).run();
       if (!passed)
         return 1;
     }

@@ -18,9 +18,14 @@
 // @sect3{Include files}
 //
 // Besides QuasiStaticProblem, which owns grid, points, loads and the load-step
-// loop, we use three pieces of the library that exist for this problem: the
-// decohesion model, the specimen geometry with its supports, and a
-// load-deflection curve that integrates the work of the load.
+// loop, we use two pieces of the library that exist for this problem: the
+// decohesion model and a load-deflection curve that integrates the work of
+// the load. The specimen geometry with its supports, CompactTensionGeometry,
+// is this example's own: it lives next to this file, in
+// compact_tension_geometry.h (the tests of the specimen include it from
+// there).
+#include "compact_tension_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
@@ -35,7 +40,6 @@
 #include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/fracture/compact_tension_geometry.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
 #include <qsmpm/io/checkpoint.h>
 #include <qsmpm/materials/decohesion.h>
@@ -64,9 +68,9 @@ namespace CompactTension
   // only form in the column of cells that contains the centre line, with
   // their normal fixed to $x$; the notch is the upper part of that column,
   // left empty, so the two appendages share no grid node. Everything about
-  // the geometry lives in CompactTensionGeometry, whose documentation also
-  // explains the outer dimensions we chose (they are not given in the
-  // paper).
+  // the geometry lives in CompactTensionGeometry (compact_tension_geometry.h),
+  // whose documentation also explains the outer dimensions we chose (they
+  // are not given in the paper).
   //
   // The load factor $t$ of the library is the load-point displacement in
   // metres; the parameter files advance it by $10^{-3}$ mm per step as in
@@ -141,7 +145,368 @@ namespace CompactTension
 
 
 
-  // @sect3{Point fields for pictures}
+  // @sect3{The CompactTensionTest class}
+  //
+  // One object per run: it reads the parameters, builds the specimen, follows
+  // the load-deflection curve step by step and sums the run up, one method
+  // per stage, like step-44's Solid. The sequence is that of every qsmpm
+  // program: read the parameters, make the grid, choose the model, fill the
+  // body with points, add supports, run. Only the model is made here rather
+  // than by the library's factory, because its crack band width must be the
+  // cell size and its cracking region the centre line of this particular
+  // grid.
+  //
+  // What the object keeps between steps -- the curve so far, which of the
+  // moments of the paper's Fig. 4 have passed, the log of the steps -- is
+  // member data, which the per-step observer observe_step() updates and
+  // which goes into checkpoints (save_state(), restore_state()).
+  template <int dim>
+  class CompactTensionTest
+  {
+  public:
+    CompactTensionTest(const std::string &parameter_file, const bool resume);
+
+    void
+    run();
+
+  private:
+    typename CompactTensionGeometry<dim>::Parameters
+    parse_parameters(const std::string &parameter_file);
+    std::unique_ptr<Decohesion<dim>>
+    make_model();
+    void
+    setup_specimen();
+    void
+    setup_output();
+    std::string
+    save_state() const;
+    void
+    restore_state(const std::string &text);
+    bool
+    observe_step(const typename QuasiStaticProblem<dim>::StepReport &report);
+    void
+    write_point_csv(const std::string &filename) const;
+    void
+    write_results() const;
+    void
+    print_summary(const double wall_time);
+
+    const MPI_Comm communicator;
+    const bool     resume;
+
+    ParameterHandler                  prm;
+    RunParameters                     run_parameters;
+    const CompactTensionGeometry<dim> geometry;
+    QuasiStaticProblem<dim>           problem;
+
+    // The material constants the summary refers to, the index of the pulled
+    // pin among the displacement conditions, and the output directory.
+    double       G_f = 0., tau_nf = 0., u0 = 0.;
+    unsigned int right_pin = 0;
+    std::string  directory;
+
+    // The state between steps.
+    LoadDisplacementCurve curve;
+    std::ofstream         steps_log;
+    bool initiated = false, partially_failed = false, complete = false;
+  };
+
+
+
+  // @sect4{CompactTensionTest::CompactTensionTest}
+  //
+  // The parameters are read first, by parse_parameters() called from the
+  // initializer list (prm and run_parameters are declared before geometry,
+  // so they exist by then): the specimen is a constant member made from
+  // them, and a contradictory geometry stops the program before anything
+  // else is built. The step observer and the program's checkpoint state are
+  // handed to the library here; QuasiStaticProblem::run() calls them.
+  template <int dim>
+  CompactTensionTest<dim>::CompactTensionTest(const std::string &parameter_file,
+                                              const bool         resume)
+    : communicator(MPI_COMM_WORLD)
+    , resume(resume)
+    , geometry(parse_parameters(parameter_file))
+    , problem(communicator)
+  {
+    problem.parameters().parse_parameters(prm);
+    problem.set_checkpoint_state([this]() { return save_state(); },
+                                 [this](const std::string &text) {
+                                   restore_state(text);
+                                 });
+    problem.set_step_callback(
+      [this](const typename QuasiStaticProblem<dim>::StepReport &report) {
+        return observe_step(report);
+      });
+  }
+
+
+
+  // @sect4{CompactTensionTest::parse_parameters}
+  //
+  // The library's subsections, the specimen's "Compact tension" and our
+  // "Run" are declared in one ParameterHandler, so that a misspelt entry in
+  // any of them is reported with its name. Returns the specimen's
+  // parameters, from which the constructor makes the geometry.
+  template <int dim>
+  typename CompactTensionGeometry<dim>::Parameters
+  CompactTensionTest<dim>::parse_parameters(const std::string &parameter_file)
+  {
+    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
+    CompactTensionGeometry<dim>::Parameters::declare_parameters(prm);
+    RunParameters::declare_parameters(prm);
+    prm.parse_input(parameter_file);
+
+    typename CompactTensionGeometry<dim>::Parameters specimen;
+    specimen.parse_parameters(prm);
+    run_parameters.parse_parameters(prm);
+    return specimen;
+  }
+
+
+
+  // @sect4{CompactTensionTest::make_model}
+  //
+  // The material. The smearing length must follow the grid (see the
+  // documentation of Decohesion: the crack band is one cell wide whatever
+  // the number of points per cell), so we set "Crack band width" to h
+  // here instead of asking for it twice in the parameter file. The
+  // constructor checks the local stability limit L_c < M u0 / tau_nf and
+  // stops with a message if h is too large.
+  template <int dim>
+  std::unique_ptr<Decohesion<dim>>
+  CompactTensionTest<dim>::make_model()
+  {
+    prm.enter_subsection("Material");
+    AssertThrow(prm.get("Model") == "decohesion",
+                ExcMessage("compact_tension: set Material/Model = "
+                           "decohesion."));
+    prm.enter_subsection("decohesion");
+    prm.set("Crack band width", geometry.cell_size());
+    auto model = std::make_unique<Decohesion<dim>>(prm);
+    G_f        = prm.get_double("Fracture energy");
+    tau_nf     = model->tensile_strength();
+    u0         = model->critical_opening();
+    prm.leave_subsection();
+    prm.leave_subsection();
+    return model;
+  }
+
+
+
+  // @sect4{CompactTensionTest::setup_specimen}
+  //
+  // Grid, points in every cell but those of the notch, cracks only in the
+  // cells on the centre line as in the paper, and the two pins: all done
+  // by CompactTensionGeometry::setup(), which the tests use as well. With
+  // `Compact tension/Back-face point refinement` = k > 1 the band cell at
+  // the back face gets k times as many points along the ligament: the
+  // point about which the broken specimen finally rotates (the hinge,
+  // which never breaks) then stands for h/k of the ligament instead of h.
+  template <int dim>
+  void
+  CompactTensionTest<dim>::setup_specimen()
+  {
+    const auto &mp = problem.parameters().material_points;
+    right_pin      = geometry.setup(problem,
+                               make_model(),
+                               mp.points_per_direction,
+                               mp.placement);
+  }
+
+
+
+  // @sect4{CompactTensionTest::setup_output}
+  //
+  // The output directory, the heading of the run and the log of the steps.
+  // A run with `Output/Checkpoint interval` > 0 can be continued with
+  // `--resume` from its newest checkpoint: the library replaces the points
+  // just made by those of the checkpoint, and restores what this program
+  // keeps between steps (restore_state()) when run() starts.
+  template <int dim>
+  void
+  CompactTensionTest<dim>::setup_output()
+  {
+    directory = problem.parameters().output.directory;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::filesystem::create_directories(directory);
+
+    const unsigned int resumed_step = resume ? problem.resume() : 0;
+
+    problem.pcout() << "Compact tension " << run_parameters.plot_label
+                    << ": b = " << geometry.ligament()
+                    << " m, d = " << geometry.depth()
+                    << " m, W x H = " << geometry.width() << " x "
+                    << geometry.height() << " m, h = " << geometry.cell_size()
+                    << " m, load points at x = +-" << geometry.load_point_x()
+                    << " m\n"
+                    << "  tau_nf = " << tau_nf << " Pa, G_f = " << G_f
+                    << " J/m^2, u0 = " << u0 << " m" << std::endl;
+
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        if (resume && std::filesystem::exists(directory + "/steps.csv"))
+          {
+            // Rows past the checkpoint were written by the interrupted run
+            // and come again.
+            Checkpoint<dim>::truncate_csv(directory + "/steps.csv",
+                                          resumed_step);
+            steps_log.open(directory + "/steps.csv", std::ios::app);
+          }
+        else
+          {
+            steps_log.open(directory + "/steps.csv");
+            steps_log << "step,displacement_m,force_N,newton_iterations,"
+                         "gmres_iterations,line_search_steps,cut_backs,"
+                         "wall_time_s\n";
+          }
+      }
+  }
+
+
+
+  // @sect4{CompactTensionTest::save_state}
+  //
+  // Our state between steps, for checkpoints: the curve so far (peak and
+  // work follow from it) and which of the moments of Fig. 4 have passed.
+  // The library calls this on rank 0 when it writes a checkpoint.
+  template <int dim>
+  std::string
+  CompactTensionTest<dim>::save_state() const
+  {
+    std::ostringstream state;
+    state << std::setprecision(17) << initiated << ' ' << partially_failed
+          << ' ' << curve.points().size() << '\n';
+    for (const auto &point : curve.points())
+      state << point.step << ' ' << point.displacement << ' ' << point.force
+            << '\n';
+    return state.str();
+  }
+
+
+
+  // @sect4{CompactTensionTest::restore_state}
+  //
+  // The inverse, called on all ranks by QuasiStaticProblem::run() after
+  // `--resume`.
+  template <int dim>
+  void
+  CompactTensionTest<dim>::restore_state(const std::string &text)
+  {
+    std::istringstream state(text);
+    std::size_t        n = 0;
+    state >> initiated >> partially_failed >> n;
+    curve = LoadDisplacementCurve();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        LoadDisplacementCurve::Point point;
+        state >> point.step >> point.displacement >> point.force;
+        curve.add(point.step, point.displacement, point.force);
+      }
+    AssertThrow(state,
+                ExcMessage("compact_tension: the checkpoint holds no "
+                           "load-displacement curve."));
+  }
+
+
+
+  // @sect4{CompactTensionTest::run}
+  template <int dim>
+  void
+  CompactTensionTest<dim>::run()
+  {
+    setup_specimen();
+    setup_output();
+
+    Timer timer;
+    problem.run();
+    timer.stop();
+
+    write_results();
+    print_summary(timer.wall_time());
+  }
+
+
+
+  // @sect4{CompactTensionTest::observe_step}
+  //
+  // After each accepted step the library calls this observer. We record the
+  // point of the load-deflection curve, log what the solver did, write the
+  // point pictures when one of the three moments of Fig. 4 is reached, and
+  // tell the library to stop once the load has fallen far enough. All ranks
+  // see the same (summed) reaction force, so they all take the same
+  // decision.
+  template <int dim>
+  bool
+  CompactTensionTest<dim>::observe_step(
+    const typename QuasiStaticProblem<dim>::StepReport &report)
+  {
+    const double delta = report.load_factor;
+    const double P     = geometry.load(problem.reactions(), right_pin);
+    curve.add(report.step, delta, P);
+    if (steps_log.is_open())
+      steps_log << report.step << ',' << std::setprecision(10) << delta << ','
+                << P << ',' << report.newton.newton_iterations << ','
+                << report.newton.linear_iterations << ','
+                << report.newton.line_search_steps << ',' << report.cut_backs
+                << ',' << std::setprecision(4) << report.wall_time << std::endl;
+
+    if (!initiated)
+      {
+        const unsigned int opening_offset =
+          problem.points().get_layout().offset(
+            Decohesion<dim>::crack_opening_name);
+        double largest_opening = 0.;
+        for (const auto &particle : problem.points().get_particle_handler())
+          largest_opening = std::max(largest_opening,
+                                     particle.get_properties()[opening_offset]);
+        if (Utilities::MPI::max(largest_opening, communicator) > 0.)
+          {
+            initiated = true;
+            problem.pcout()
+              << "  crack initiation at step " << report.step
+              << ", delta = " << delta << " m, P = " << P << " N" << std::endl;
+            write_point_csv(directory + "/points_initiation.csv");
+          }
+      }
+    if (!partially_failed &&
+        curve.fallen_below(run_parameters.partial_failure_fraction))
+      {
+        partially_failed = true;
+        write_point_csv(directory + "/points_partial.csv");
+      }
+    // The end: below the stop fraction of the peak, or, if asked for,
+    // complete failure of the band (checked only once the load has fallen
+    // below half the peak, to save the loop over the points). The band is
+    // broken once every band point has failed completely, $[[u_n]] \geq
+    // u_0$ -- all but the lowest one: after the crack has run through the
+    // ligament, the two halves rotate about that point, which then has no
+    // strain and never breaks (see CompactTensionGeometry::setup(), "The
+    // hinge at the back face").
+    bool done = false;
+    if (run_parameters.to_complete_failure)
+      {
+        if (curve.fallen_below(0.5))
+          {
+            const auto band =
+              geometry.count_failed_band_points(problem, communicator);
+            done = band.first > 0 && band.second == band.first;
+          }
+      }
+    else
+      done = curve.fallen_below(run_parameters.stop_fraction);
+    if (done)
+      {
+        complete = true;
+        write_point_csv(directory + "/points_complete.csv");
+        return false;
+      }
+    return true;
+  }
+
+
+
+  // @sect4{CompactTensionTest::write_point_csv}
   //
   // The PVTU output holds every point field, including the normalized crack
   // opening $[[u_n]]/u_0$ and stresses $\sigma_{xx}/\tau_{nf}$,
@@ -151,9 +516,7 @@ namespace CompactTension
   // Fig. 4. Each rank sends its points to rank 0, which writes the file.
   template <int dim>
   void
-  write_point_csv(QuasiStaticProblem<dim> &problem,
-                  const std::string       &filename,
-                  const MPI_Comm           communicator)
+  CompactTensionTest<dim>::write_point_csv(const std::string &filename) const
   {
     const auto        &layout = problem.points().get_layout();
     const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
@@ -184,269 +547,18 @@ namespace CompactTension
 
 
 
-  // @sect3{Complete failure}
+  // @sect4{CompactTensionTest::write_results}
   //
-  // The crack band is broken once every band point has failed completely,
-  // $[[u_n]] \geq u_0$ -- all but the lowest one: after the crack has run
-  // through the ligament, the two halves rotate about that point, which
-  // then has no strain and never breaks (see
-  // CompactTensionGeometry::setup(), "The hinge at the back face"). The
-  // function returns the number of band points and of those that have
-  // failed completely, the hinge not counted. By then the points have moved
-  // by millimetres (the centre line by half the load-point displacement),
-  // so the band points are those the model allows to crack, and the hinge
-  // is the one that was lowest at the start, y - u_y.
-  template <int dim>
-  std::pair<unsigned int, unsigned int>
-  count_failed_band_points(QuasiStaticProblem<dim>           &problem,
-                           const CompactTensionGeometry<dim> &geometry,
-                           const MPI_Comm                     communicator)
-  {
-    const auto        &layout = problem.points().get_layout();
-    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
-                       allowed =
-                         layout.offset(Decohesion<dim>::crack_allowed_name),
-                       u_y    = problem.points().get_offsets().displacement + 1;
-    const auto initial_height = [&](const auto &particle) {
-      return particle.get_location()[1] - particle.get_properties()[u_y];
-    };
-    double lowest = std::numeric_limits<double>::max();
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5)
-        lowest = std::min(lowest, initial_height(particle));
-    lowest              = Utilities::MPI::min(lowest, communicator);
-    unsigned int n_band = 0, n_failed = 0;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5 &&
-          initial_height(particle) > lowest + 1e-6 * geometry.cell_size())
-        {
-          ++n_band;
-          if (particle.get_properties()[w] >= 1.)
-            ++n_failed;
-        }
-    return {Utilities::MPI::sum(n_band, communicator),
-            Utilities::MPI::sum(n_failed, communicator)};
-  }
-
-
-
-  // @sect3{Setting up and running the problem}
-  //
-  // The sequence is that of every qsmpm program: read the parameters, make
-  // the grid, choose the model, fill the body with points, add supports,
-  // run. Only the model is made here rather than by the library's factory,
-  // because its crack band width must be the cell size and its cracking
-  // region the centre line of this particular grid.
+  // The run must have reached the end of the curve: if the load never fell
+  // below the stop fraction, the load stepping ended first, and the
+  // energy balance of the summary would be meaningless. The point fields
+  // of the last step are written all the same, to see how far it got.
   template <int dim>
   void
-  run(const std::string &parameter_file, const bool resume)
+  CompactTensionTest<dim>::write_results() const
   {
-    const MPI_Comm   communicator = MPI_COMM_WORLD;
-    ParameterHandler prm;
-    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
-    CompactTensionGeometry<dim>::Parameters::declare_parameters(prm);
-    RunParameters::declare_parameters(prm);
-    prm.parse_input(parameter_file);
-
-    typename CompactTensionGeometry<dim>::Parameters specimen;
-    specimen.parse_parameters(prm);
-    RunParameters run_parameters;
-    run_parameters.parse_parameters(prm);
-    const CompactTensionGeometry<dim> geometry(specimen);
-
-    QuasiStaticProblem<dim> problem(communicator);
-    problem.parameters().parse_parameters(prm);
-
-    // The material. The smearing length must follow the grid (see the
-    // documentation of Decohesion: the crack band is one cell wide whatever
-    // the number of points per cell), so we set "Crack band width" to h
-    // here instead of asking for it twice in the parameter file. The
-    // constructor checks the local stability limit L_c < M u0 / tau_nf and
-    // stops with a message if h is too large.
-    prm.enter_subsection("Material");
-    AssertThrow(prm.get("Model") == "decohesion",
-                ExcMessage("compact_tension: set Material/Model = "
-                           "decohesion."));
-    prm.enter_subsection("decohesion");
-    prm.set("Crack band width", geometry.cell_size());
-    auto         model  = std::make_unique<Decohesion<dim>>(prm);
-    const double G_f    = prm.get_double("Fracture energy");
-    const double tau_nf = model->tensile_strength();
-    const double u0     = model->critical_opening();
-    prm.leave_subsection();
-    prm.leave_subsection();
-
-    // Grid, points in every cell but those of the notch, cracks only in the
-    // cells on the centre line as in the paper, and the two pins: all done
-    // by CompactTensionGeometry::setup(), which the tests use as well. With
-    // `Compact tension/Back-face point refinement` = k > 1 the band cell at
-    // the back face gets k times as many points along the ligament: the
-    // point about which the broken specimen finally rotates (the hinge,
-    // which never breaks) then stands for h/k of the ligament instead of h.
-    const auto        &mp        = problem.parameters().material_points;
-    const unsigned int right_pin = geometry.setup(problem,
-                                                  std::move(model),
-                                                  mp.points_per_direction,
-                                                  mp.placement);
-
-    const std::string directory = problem.parameters().output.directory;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      std::filesystem::create_directories(directory);
-
-    // A run with `Output/Checkpoint interval` > 0 can be continued with
-    // `--resume` from its newest checkpoint: the library replaces the points
-    // just made by those of the checkpoint, and we restore below what this
-    // program keeps between steps.
-    const unsigned int resumed_step = resume ? problem.resume() : 0;
-
-    auto &out = problem.pcout();
-    out << "Compact tension " << run_parameters.plot_label
-        << ": b = " << geometry.ligament() << " m, d = " << geometry.depth()
-        << " m, W x H = " << geometry.width() << " x " << geometry.height()
-        << " m, h = " << geometry.cell_size() << " m, load points at x = +-"
-        << geometry.load_point_x() << " m\n"
-        << "  tau_nf = " << tau_nf << " Pa, G_f = " << G_f
-        << " J/m^2, u0 = " << u0 << " m" << std::endl;
-
-    // @sect3{Following the curve}
-    //
-    // After each accepted step the library calls us back. We record the
-    // point of the load-deflection curve, log what the solver did, write
-    // the point pictures when one of the three moments of Fig. 4 is
-    // reached, and tell the library to stop once the load has fallen far
-    // enough. All ranks see the same (summed) reaction force, so they all
-    // take the same decision.
-    LoadDisplacementCurve curve;
-    std::ofstream         steps_log;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        if (resume && std::filesystem::exists(directory + "/steps.csv"))
-          {
-            // Rows past the checkpoint were written by the interrupted run
-            // and come again.
-            Checkpoint<dim>::truncate_csv(directory + "/steps.csv",
-                                          resumed_step);
-            steps_log.open(directory + "/steps.csv", std::ios::app);
-          }
-        else
-          {
-            steps_log.open(directory + "/steps.csv");
-            steps_log << "step,displacement_m,force_N,newton_iterations,"
-                         "gmres_iterations,line_search_steps,cut_backs,"
-                         "wall_time_s\n";
-          }
-      }
-    bool initiated = false, partially_failed = false, complete = false;
-
-    // Our state between steps, for checkpoints: the curve so far (peak and
-    // work follow from it) and which of the moments of Fig. 4 have passed.
-    problem.set_checkpoint_state(
-      [&]() {
-        std::ostringstream state;
-        state << std::setprecision(17) << initiated << ' ' << partially_failed
-              << ' ' << curve.points().size() << '\n';
-        for (const auto &point : curve.points())
-          state << point.step << ' ' << point.displacement << ' ' << point.force
-                << '\n';
-        return state.str();
-      },
-      [&](const std::string &text) {
-        std::istringstream state(text);
-        std::size_t        n = 0;
-        state >> initiated >> partially_failed >> n;
-        curve = LoadDisplacementCurve();
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            LoadDisplacementCurve::Point point;
-            state >> point.step >> point.displacement >> point.force;
-            curve.add(point.step, point.displacement, point.force);
-          }
-        AssertThrow(state,
-                    ExcMessage("compact_tension: the checkpoint holds no "
-                               "load-displacement curve."));
-      });
-    const auto        &layout = problem.points().get_layout();
-    const unsigned int opening_offset =
-      layout.offset(Decohesion<dim>::crack_opening_name);
-    problem.set_step_callback(
-      [&](const typename QuasiStaticProblem<dim>::StepReport &report) {
-        const double delta = report.load_factor;
-        const double P     = geometry.load(problem.reactions(), right_pin);
-        curve.add(report.step, delta, P);
-        if (steps_log.is_open())
-          steps_log << report.step << ',' << std::setprecision(10) << delta
-                    << ',' << P << ',' << report.newton.newton_iterations << ','
-                    << report.newton.linear_iterations << ','
-                    << report.newton.line_search_steps << ','
-                    << report.cut_backs << ',' << std::setprecision(4)
-                    << report.wall_time << std::endl;
-
-        if (!initiated)
-          {
-            double largest_opening = 0.;
-            for (const auto &particle : problem.points().get_particle_handler())
-              largest_opening =
-                std::max(largest_opening,
-                         particle.get_properties()[opening_offset]);
-            if (Utilities::MPI::max(largest_opening, communicator) > 0.)
-              {
-                initiated = true;
-                out << "  crack initiation at step " << report.step
-                    << ", delta = " << delta << " m, P = " << P << " N"
-                    << std::endl;
-                write_point_csv(problem,
-                                directory + "/points_initiation.csv",
-                                communicator);
-              }
-          }
-        if (!partially_failed &&
-            curve.fallen_below(run_parameters.partial_failure_fraction))
-          {
-            partially_failed = true;
-            write_point_csv(problem,
-                            directory + "/points_partial.csv",
-                            communicator);
-          }
-        // The end: below the stop fraction of the peak, or, if asked for,
-        // complete failure of the band (checked only once the load has
-        // fallen below half the peak, to save the loop over the points).
-        bool done = false;
-        if (run_parameters.to_complete_failure)
-          {
-            if (curve.fallen_below(0.5))
-              {
-                const auto band =
-                  count_failed_band_points(problem, geometry, communicator);
-                done = band.first > 0 && band.second == band.first;
-              }
-          }
-        else
-          done = curve.fallen_below(run_parameters.stop_fraction);
-        if (done)
-          {
-            complete = true;
-            write_point_csv(problem,
-                            directory + "/points_complete.csv",
-                            communicator);
-            return false;
-          }
-        return true;
-      });
-
-    Timer timer;
-    problem.run();
-    timer.stop();
-
-    // @sect3{Summary}
-    //
-    // The run must have reached the end of the curve: if the load never fell
-    // below the stop fraction, the load stepping ended first, and the
-    // energy balance below would be meaningless. We then compare the work
-    // of the load with the fracture energy of the ligament and print what
-    // the solver needed per step (the paper reports 1 to 6 Newton
-    // iterations per step).
     if (!complete)
-      write_point_csv(problem, directory + "/points_final.csv", communicator);
+      write_point_csv(directory + "/points_final.csv");
     AssertThrow(complete,
                 ExcMessage(
                   "compact_tension: " +
@@ -460,7 +572,19 @@ namespace CompactTension
                   "let the increment grow)."));
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       curve.write_csv(directory + "/load_displacement.csv");
+  }
 
+
+
+  // @sect4{CompactTensionTest::print_summary}
+  //
+  // We compare the work of the load with the fracture energy of the
+  // ligament and print what the solver needed per step (the paper reports
+  // 1 to 6 Newton iterations per step).
+  template <int dim>
+  void
+  CompactTensionTest<dim>::print_summary(const double wall_time)
+  {
     unsigned int newton_min = 1000, newton_max = 0, newton_sum = 0,
                  gmres_sum = 0, gmres_max = 0, line_search = 0, cut_backs = 0;
     for (const auto &step : problem.step_reports())
@@ -475,31 +599,31 @@ namespace CompactTension
       }
     const unsigned int n_steps = problem.step_reports().size();
     const double       energy  = G_f * geometry.ligament() * geometry.depth();
-    const auto band = count_failed_band_points(problem, geometry, communicator);
-    out << std::setprecision(5) << '\n'
-        << "Compact tension " << run_parameters.plot_label << " finished\n"
-        << "  peak load P_max                = " << curve.peak_force()
-        << " N at delta = " << curve.peak_displacement() * 1e3 << " mm\n"
-        << "  last step                      = " << n_steps
-        << ", delta = " << curve.points().back().displacement * 1e3
-        << " mm, P = " << curve.points().back().force << " N\n"
-        << "  work of the load int P d(delta) = " << curve.work() << " J\n"
-        << "  G_f b d                        = " << energy << " J\n"
-        << "  energy ratio                   = " << curve.work() / energy
-        << '\n'
-        << "  band points failed completely  = " << band.second << " of "
-        << band.first << " (the hinge not counted)\n"
-        << "  Newton iterations per step     = " << newton_min << " to "
-        << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
-        << '\n'
-        << "  GMRES iterations               = " << gmres_sum << " in all, "
-        << static_cast<double>(gmres_sum) / std::max(1u, newton_sum)
-        << " per Newton iteration, at most " << gmres_max << " per step\n"
-        << "  line-search halvings           = " << line_search << '\n'
-        << "  load-step cut-backs            = " << cut_backs << '\n'
-        << "  wall time                      = " << timer.wall_time()
-        << " s on " << Utilities::MPI::n_mpi_processes(communicator)
-        << " rank(s)" << std::endl;
+    const auto band = geometry.count_failed_band_points(problem, communicator);
+    problem.pcout()
+      << std::setprecision(5) << '\n'
+      << "Compact tension " << run_parameters.plot_label << " finished\n"
+      << "  peak load P_max                = " << curve.peak_force()
+      << " N at delta = " << curve.peak_displacement() * 1e3 << " mm\n"
+      << "  last step                      = " << n_steps
+      << ", delta = " << curve.points().back().displacement * 1e3
+      << " mm, P = " << curve.points().back().force << " N\n"
+      << "  work of the load int P d(delta) = " << curve.work() << " J\n"
+      << "  G_f b d                        = " << energy << " J\n"
+      << "  energy ratio                   = " << curve.work() / energy << '\n'
+      << "  band points failed completely  = " << band.second << " of "
+      << band.first << " (the hinge not counted)\n"
+      << "  Newton iterations per step     = " << newton_min << " to "
+      << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
+      << '\n'
+      << "  GMRES iterations               = " << gmres_sum << " in all, "
+      << static_cast<double>(gmres_sum) / std::max(1u, newton_sum)
+      << " per Newton iteration, at most " << gmres_max << " per step\n"
+      << "  line-search halvings           = " << line_search << '\n'
+      << "  load-step cut-backs            = " << cut_backs << '\n'
+      << "  wall time                      = " << wall_time << " s on "
+      << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)"
+      << std::endl;
   }
 } // namespace CompactTension
 
@@ -525,7 +649,8 @@ main(int argc, char *argv[])
       // A missing file, a directory or an unreadable file: one line that
       // names it.
       qsmpm::Utils::check_parameter_file(parameter_file);
-      CompactTension::run<2>(parameter_file, resume);
+      CompactTension::CompactTensionTest<2> test(parameter_file, resume);
+      test.run();
     }
   catch (std::exception &exc)
     {

@@ -347,42 +347,226 @@ namespace Polycrystal
 
 
 
-  // @sect3{One sample: grains, texture and the virtual tests}
+  // @sect3{Output}
+  //
+  // Matrices are written as plain CSV, six rows of six values in GPa,
+  // Voigt order 11, 22, 33, 23, 13, 12 with engineering shear strains (the
+  // paper's eq. 4.3).
+  void
+  write_matrix(const std::string &filename, const Matrix6 &C)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Cannot write <" + filename + ">."));
+    out << std::fixed << std::setprecision(4);
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int b = 0; b < 6; ++b)
+        out << C[a][b] << (b < 5 ? "," : "\n");
+  }
+
+
+
+  std::string
+  format_matrix(const Matrix6 &C, const std::string &indent)
+  {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2);
+    for (unsigned int a = 0; a < 6; ++a)
+      {
+        s << indent;
+        for (unsigned int b = 0; b < 6; ++b)
+          s << std::setw(9) << C[a][b];
+        s << '\n';
+      }
+    return s.str();
+  }
+
+
+
+  // The largest difference between the stiffness from the reactions and
+  // from the volume average (both over the nominal strain), over the
+  // entries the reactions measure in the first n_columns tests, relative to
+  // the norm of C.
+  double
+  reaction_difference(const Matrix6                            &C,
+                      const Matrix6                            &C_reaction,
+                      const std::array<std::array<bool, 6>, 6> &mask,
+                      const unsigned int                        n_columns)
+  {
+    double norm = 0, max_diff = 0;
+    for (unsigned int a = 0; a < 6; ++a)
+      for (unsigned int b = 0; b < 6; ++b)
+        {
+          norm += C[a][b] * C[a][b];
+          if (mask[a][b] && b < n_columns)
+            max_diff = std::max(max_diff, std::abs(C[a][b] - C_reaction[a][b]));
+        }
+    return max_diff / std::sqrt(norm);
+  }
+
+
+
+  // @sect3{The PolycrystalStudy class}
+  //
+  // One object per run of the program, one method per stage, like step-44's
+  // Solid: read the parameters, the crystal constants and the ODF (the
+  // constructor), run the first realization with every requested kind of
+  // boundary condition and write its results, then run the other
+  // realizations (with the first kind only) and write their statistics.
   //
   // A realization is one sample: its Voronoi grains, the orientation of
   // every grain and, for each requested kind of boundary condition, the
   // 6x6 stiffness from the six virtual tests. All ranks compute the grains
   // and the texture redundantly from the same seeds, so all agree on them
   // without communication.
-  struct SampleResult
+  class PolycrystalStudy
   {
-    unsigned int                                       grain_seed;
-    unsigned int                                       texture_seed;
-    std::vector<double>                                grain_areas;
-    TextureSampler::Result                             texture;
-    std::unique_ptr<StiffnessBounds>                   bounds;
-    std::vector<std::string>                           bc_names;
-    std::vector<Matrix6>                               C;
-    std::vector<Matrix6>                               C_reaction;
-    std::vector<Matrix6>                               C_mean_strain;
-    std::vector<std::array<std::array<bool, 6>, 6>>    reaction_mask;
-    std::vector<std::vector<VirtualTests::TestReport>> reports;
-    std::vector<double>                                wall_time;
-    unsigned int                                       n_empty_grains = 0;
-    unsigned long                                      n_points       = 0;
-    unsigned long                                      n_cells        = 0;
+  public:
+    explicit PolycrystalStudy(const std::string &parameter_file);
+
+    void
+    run();
+
+  private:
+    struct SampleResult
+    {
+      unsigned int                                       grain_seed;
+      unsigned int                                       texture_seed;
+      std::vector<double>                                grain_areas;
+      TextureSampler::Result                             texture;
+      std::unique_ptr<StiffnessBounds>                   bounds;
+      std::vector<std::string>                           bc_names;
+      std::vector<Matrix6>                               C;
+      std::vector<Matrix6>                               C_reaction;
+      std::vector<Matrix6>                               C_mean_strain;
+      std::vector<std::array<std::array<bool, 6>, 6>>    reaction_mask;
+      std::vector<std::vector<VirtualTests::TestReport>> reports;
+      std::vector<double>                                wall_time;
+      unsigned int                                       n_empty_grains = 0;
+      unsigned long                                      n_points       = 0;
+      unsigned long                                      n_cells        = 0;
+    };
+
+    // The in-plane moduli of the first realization that the summary and
+    // the printed results both report.
+    struct InPlaneModuli
+    {
+      StiffnessBounds::InPlane E, E_nominal, E_reactions;
+      StiffnessBounds::InPlane voigt, reuss, hill, hill_odf;
+      bool                     reactions;
+    };
+
+    // One row of realizations.csv: realization, E_x, E_y, E_in_plane,
+    // E_hill, misfit in percent.
+    using Row = std::array<double, 6>;
+
+    Parameters
+    parse_parameters(const std::string &parameter_file);
+    CubicElastic<3>
+    make_crystal();
+    SampleResult
+    run_sample(const unsigned int              realization,
+               const std::vector<std::string> &bcs);
+    InPlaneModuli
+    in_plane_moduli(const SampleResult &first) const;
+    void
+    summarize_first_realization(const SampleResult  &first,
+                                const InPlaneModuli &moduli);
+    void
+    write_first_realization(const SampleResult  &first,
+                            const InPlaneModuli &moduli) const;
+    void
+    print_first_realization(const SampleResult  &first,
+                            const InPlaneModuli &moduli);
+    std::vector<Row>
+    run_realizations(const SampleResult &first);
+    void
+    write_statistics(const std::vector<Row> &rows, Timer &total_timer);
+
+    ParameterHandler              prm;
+    NewtonParameters              solver;
+    const Parameters              par;
+    const CubicElastic<3>         crystal;
+    const bool                    root;
+    ConditionalOStream            pcout;
+    const OrientationDistribution odf;
+
+    // summary.txt, filled by the stages of run() and written at the end.
+    std::ostringstream summary;
   };
 
 
 
-  SampleResult
-  run_sample(const Parameters               &par,
-             const NewtonParameters         &solver,
-             const OrientationDistribution  &odf,
-             const CubicElastic<3>          &crystal,
-             const unsigned int              realization,
-             const std::vector<std::string> &bcs,
-             ConditionalOStream             &pcout)
+  // @sect4{PolycrystalStudy::PolycrystalStudy}
+  //
+  // The members are made in the order of their declaration: the
+  // ParameterHandler and the solver settings first, then the program's
+  // parameters, which parse_parameters() reads into both, then the crystal
+  // model from "Material/cubic elastic" and the ODF from its file. A bad
+  // entry or file thus stops the program before anything is computed.
+  PolycrystalStudy::PolycrystalStudy(const std::string &parameter_file)
+    : par(parse_parameters(parameter_file))
+    , crystal(make_crystal())
+    , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , pcout(std::cout, root)
+    , odf(par.odf_file)
+  {
+    if (root)
+      std::filesystem::create_directories(par.output_directory);
+    summary << std::setprecision(6);
+  }
+
+
+
+  // @sect4{PolycrystalStudy::parse_parameters}
+  //
+  // Our subsection "Polycrystal", the library's "Material" and "Nonlinear
+  // solver" in one ParameterHandler. The ODF file is relative to the
+  // directory of the parameter file.
+  Parameters
+  PolycrystalStudy::parse_parameters(const std::string &parameter_file)
+  {
+    Parameters::declare_parameters(prm);
+    ConstitutiveModelFactory<3>::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    prm.parse_input(parameter_file);
+
+    Parameters parameters;
+    parameters.parse_parameters(
+      prm, std::filesystem::path(parameter_file).parent_path().string());
+    solver.parse_parameters(prm);
+    return parameters;
+  }
+
+
+
+  // @sect4{PolycrystalStudy::make_crystal}
+  //
+  // The crystal model of "Material/cubic elastic" (its constructor checks
+  // the constants); every test copies it and gives the copy the grains'
+  // orientations.
+  CubicElastic<3>
+  PolycrystalStudy::make_crystal()
+  {
+    prm.enter_subsection("Material");
+    AssertThrow(prm.get("Model") == "cubic elastic",
+                ExcMessage("The polycrystal needs the cubic crystal model: "
+                           "set Material/Model = cubic elastic."));
+    prm.enter_subsection("cubic elastic");
+    CubicElastic<3> model(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    return model;
+  }
+
+
+
+  // @sect4{PolycrystalStudy::run_sample}
+  //
+  // One sample: grains, texture and the virtual tests for each kind of
+  // boundary condition in @p bcs.
+  PolycrystalStudy::SampleResult
+  PolycrystalStudy::run_sample(const unsigned int              realization,
+                               const std::vector<std::string> &bcs)
   {
     SampleResult result;
     result.grain_seed   = par.grain_seed + realization;
@@ -472,104 +656,10 @@ namespace Polycrystal
 
 
 
-  // @sect3{Output}
-  //
-  // Matrices are written as plain CSV, six rows of six values in GPa,
-  // Voigt order 11, 22, 33, 23, 13, 12 with engineering shear strains (the
-  // paper's eq. 4.3).
+  // @sect4{PolycrystalStudy::run}
   void
-  write_matrix(const std::string &filename, const Matrix6 &C)
+  PolycrystalStudy::run()
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Cannot write <" + filename + ">."));
-    out << std::fixed << std::setprecision(4);
-    for (unsigned int a = 0; a < 6; ++a)
-      for (unsigned int b = 0; b < 6; ++b)
-        out << C[a][b] << (b < 5 ? "," : "\n");
-  }
-
-
-
-  std::string
-  format_matrix(const Matrix6 &C, const std::string &indent)
-  {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(2);
-    for (unsigned int a = 0; a < 6; ++a)
-      {
-        s << indent;
-        for (unsigned int b = 0; b < 6; ++b)
-          s << std::setw(9) << C[a][b];
-        s << '\n';
-      }
-    return s.str();
-  }
-
-
-
-  // The largest difference between the stiffness from the reactions and
-  // from the volume average (both over the nominal strain), over the
-  // entries the reactions measure in the first n_columns tests, relative to
-  // the norm of C.
-  double
-  reaction_difference(const Matrix6                            &C,
-                      const Matrix6                            &C_reaction,
-                      const std::array<std::array<bool, 6>, 6> &mask,
-                      const unsigned int                        n_columns)
-  {
-    double norm = 0, max_diff = 0;
-    for (unsigned int a = 0; a < 6; ++a)
-      for (unsigned int b = 0; b < 6; ++b)
-        {
-          norm += C[a][b] * C[a][b];
-          if (mask[a][b] && b < n_columns)
-            max_diff = std::max(max_diff, std::abs(C[a][b] - C_reaction[a][b]));
-        }
-    return max_diff / std::sqrt(norm);
-  }
-
-
-
-  // @sect3{The main routine}
-  //
-  // Read the parameters and the ODF, run the first realization with every
-  // requested kind of boundary condition and write its results, then run
-  // the other realizations (with the first kind only) and write their
-  // statistics.
-  void
-  run(const std::string &parameter_file)
-  {
-    ParameterHandler prm;
-    Parameters::declare_parameters(prm);
-    ConstitutiveModelFactory<3>::declare_parameters(prm);
-    NewtonParameters::declare_parameters(prm);
-    prm.parse_input(parameter_file);
-
-    Parameters par;
-    par.parse_parameters(
-      prm, std::filesystem::path(parameter_file).parent_path().string());
-    NewtonParameters solver;
-    solver.parse_parameters(prm);
-
-    // The crystal model of "Material/cubic elastic" (its constructor checks
-    // the constants); every test copies it and gives the copy the grains'
-    // orientations.
-    prm.enter_subsection("Material");
-    AssertThrow(prm.get("Model") == "cubic elastic",
-                ExcMessage("The polycrystal needs the cubic crystal model: "
-                           "set Material/Model = cubic elastic."));
-    prm.enter_subsection("cubic elastic");
-    const CubicElastic<3> crystal(prm);
-    prm.leave_subsection();
-    prm.leave_subsection();
-    const SymmetricTensor<4, 3> &C_crystal = crystal.crystal_stiffness();
-
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream            pcout(std::cout, root);
-    const OrientationDistribution odf(par.odf_file);
-    if (root)
-      std::filesystem::create_directories(par.output_directory);
-
     pcout << "Polycrystal: " << par.n_grains << " columnar grains, grid "
           << par.cells_in_plane << "x" << par.cells_in_plane << "x"
           << par.cells_through_thickness << ", " << par.points_per_direction
@@ -582,30 +672,56 @@ namespace Polycrystal
     // The first realization, with every kind of boundary condition.
     pcout << "  realization 0 (grain seed " << par.grain_seed
           << ", texture seed " << par.texture_seed << ")" << std::endl;
-    const SampleResult first =
-      run_sample(par, solver, odf, crystal, 0, par.boundary_conditions, pcout);
+    const SampleResult  first  = run_sample(0, par.boundary_conditions);
+    const InPlaneModuli moduli = in_plane_moduli(first);
+    summarize_first_realization(first, moduli);
+    write_first_realization(first, moduli);
+    print_first_realization(first, moduli);
 
-    const auto E_V = StiffnessBounds::in_plane(first.bounds->voigt());
-    const auto E_R = StiffnessBounds::in_plane(first.bounds->reuss());
-    const auto E_H = StiffnessBounds::in_plane(first.bounds->hill());
-    const auto ODF_H =
-      StiffnessBounds::in_plane(odf_bounds(odf, C_crystal).hill());
-    // The effective stiffness relates the mean stress to the mean strain
-    // (paper eq. 4.3). For affine conditions the mean strain is the nominal
-    // one; under the paper's mixed conditions the sample may rotate in the
-    // shear tests (the confined faces slide), so we divide by the mean
-    // strain of the points, not by the nominal strain. Both other variants
-    // are written too.
-    const Matrix6 &C  = first.C_mean_strain[0];
-    const auto     E  = StiffnessBounds::in_plane(C);
-    const auto     En = StiffnessBounds::in_plane(first.C[0]);
-    // Periodic conditions have no loaded faces, hence no reaction stress.
-    const bool reactions = first.bc_names[0] != "periodic";
-    const auto Er = reactions ? StiffnessBounds::in_plane(first.C_reaction[0]) :
-                                StiffnessBounds::InPlane{};
+    const std::vector<Row> rows = run_realizations(first);
+    write_statistics(rows, total_timer);
+  }
 
-    std::ostringstream summary;
-    summary << std::setprecision(6);
+
+
+  // @sect4{PolycrystalStudy::in_plane_moduli}
+  //
+  // The effective stiffness relates the mean stress to the mean strain
+  // (paper eq. 4.3). For affine conditions the mean strain is the nominal
+  // one; under the paper's mixed conditions the sample may rotate in the
+  // shear tests (the confined faces slide), so we divide by the mean
+  // strain of the points, not by the nominal strain. Both other variants
+  // are written too. Periodic conditions have no loaded faces, hence no
+  // reaction stress.
+  PolycrystalStudy::InPlaneModuli
+  PolycrystalStudy::in_plane_moduli(const SampleResult &first) const
+  {
+    InPlaneModuli m;
+    m.voigt    = StiffnessBounds::in_plane(first.bounds->voigt());
+    m.reuss    = StiffnessBounds::in_plane(first.bounds->reuss());
+    m.hill     = StiffnessBounds::in_plane(first.bounds->hill());
+    m.hill_odf = StiffnessBounds::in_plane(
+      odf_bounds(odf, crystal.crystal_stiffness()).hill());
+    m.E           = StiffnessBounds::in_plane(first.C_mean_strain[0]);
+    m.E_nominal   = StiffnessBounds::in_plane(first.C[0]);
+    m.reactions   = first.bc_names[0] != "periodic";
+    m.E_reactions = m.reactions ?
+                      StiffnessBounds::in_plane(first.C_reaction[0]) :
+                      StiffnessBounds::InPlane{};
+    return m;
+  }
+
+
+
+  // @sect4{PolycrystalStudy::summarize_first_realization}
+  //
+  // The results of the first realization as "name = value" lines of
+  // summary.txt.
+  void
+  PolycrystalStudy::summarize_first_realization(const SampleResult  &first,
+                                                const InPlaneModuli &m)
+  {
+    const Matrix6 &C = first.C_mean_strain[0];
     summary << "# polycrystal: effective stiffness of a columnar Ni "
                "polycrystal (paper Section 4)\n"
             << "# moduli in GPa; C in effective_stiffness.csv (Voigt order "
@@ -624,18 +740,19 @@ namespace Polycrystal
             << "odf_file = " << par.odf_file << '\n'
             << "grain_seed = " << first.grain_seed << '\n'
             << "texture_seed = " << first.texture_seed << '\n'
-            << "E_in_plane_GPa = " << E.E_in_plane << '\n'
-            << "E_x_GPa = " << E.E_x << '\n'
-            << "E_y_GPa = " << E.E_y << '\n'
-            << "E_in_plane_nominal_strain_GPa = " << En.E_in_plane << '\n'
-            << "E_voigt_GPa = " << E_V.E_in_plane << '\n'
-            << "E_reuss_GPa = " << E_R.E_in_plane << '\n'
-            << "E_hill_GPa = " << E_H.E_in_plane << '\n'
-            << "E_voigt_x_GPa = " << E_V.E_x << '\n'
-            << "E_voigt_y_GPa = " << E_V.E_y << '\n'
-            << "E_reuss_x_GPa = " << E_R.E_x << '\n'
-            << "E_reuss_y_GPa = " << E_R.E_y << '\n'
-            << "E_hill_odf_GPa = " << ODF_H.E_in_plane << '\n'
+            << "E_in_plane_GPa = " << m.E.E_in_plane << '\n'
+            << "E_x_GPa = " << m.E.E_x << '\n'
+            << "E_y_GPa = " << m.E.E_y << '\n'
+            << "E_in_plane_nominal_strain_GPa = " << m.E_nominal.E_in_plane
+            << '\n'
+            << "E_voigt_GPa = " << m.voigt.E_in_plane << '\n'
+            << "E_reuss_GPa = " << m.reuss.E_in_plane << '\n'
+            << "E_hill_GPa = " << m.hill.E_in_plane << '\n'
+            << "E_voigt_x_GPa = " << m.voigt.E_x << '\n'
+            << "E_voigt_y_GPa = " << m.voigt.E_y << '\n'
+            << "E_reuss_x_GPa = " << m.reuss.E_x << '\n'
+            << "E_reuss_y_GPa = " << m.reuss.E_y << '\n'
+            << "E_hill_odf_GPa = " << m.hill_odf.E_in_plane << '\n'
             << "misfit_percent = " << 100. * first.texture.misfit_sampled
             << '\n'
             << "misfit_method = histogram of the N_u sampled orientations on "
@@ -650,8 +767,9 @@ namespace Polycrystal
             << first.texture.max_fallback_angle * 180. / M_PI << '\n'
             << "C_asymmetry_relative = " << VirtualTests::relative_asymmetry(C)
             << '\n';
-    if (reactions)
-      summary << "E_in_plane_from_reactions_GPa = " << Er.E_in_plane << '\n'
+    if (m.reactions)
+      summary << "E_in_plane_from_reactions_GPa = " << m.E_reactions.E_in_plane
+              << '\n'
               << "reaction_vs_volume_difference_normal_tests_relative = "
               << reaction_difference(first.C[0],
                                      first.C_reaction[0],
@@ -684,76 +802,95 @@ namespace Polycrystal
                 << "gmres_iterations_" << first.bc_names[b] << " = " << gmres
                 << '\n';
       }
+  }
 
-    if (root)
+
+
+  // @sect4{PolycrystalStudy::write_first_realization}
+  //
+  // On rank 0: the stiffness matrices, the grains with their orientations,
+  // and a grain map of the in-plane point lattice.
+  void
+  PolycrystalStudy::write_first_realization(const SampleResult  &first,
+                                            const InPlaneModuli &m) const
+  {
+    if (!root)
+      return;
+    const std::string dir = par.output_directory + "/";
+    const Matrix6    &C   = first.C_mean_strain[0];
+    write_matrix(dir + "effective_stiffness.csv", C);
+    write_matrix(dir + "effective_stiffness_symmetric.csv",
+                 VirtualTests::symmetric_part(C));
+    if (m.reactions)
+      write_matrix(dir + "effective_stiffness_reactions.csv",
+                   first.C_reaction[0]);
+    write_matrix(dir + "effective_stiffness_nominal_strain.csv", first.C[0]);
+    write_matrix(dir + "voigt_stiffness.csv", first.bounds->voigt());
+    write_matrix(dir + "reuss_stiffness.csv", first.bounds->reuss());
+    for (unsigned int b = 1; b < first.bc_names.size(); ++b)
+      write_matrix(dir + "effective_stiffness_" + first.bc_names[b] + ".csv",
+                   first.C_mean_strain[b]);
+
+    // The grains and their orientations.
+    std::ofstream grains_out(dir + "grains.csv");
+    grains_out << "grain,area,elementary_volumes,phi1_deg,Phi_deg,"
+                  "phi2_deg\n"
+               << std::setprecision(8);
+    for (unsigned int g = 0; g < par.n_grains; ++g)
       {
-        const std::string dir = par.output_directory + "/";
-        write_matrix(dir + "effective_stiffness.csv", C);
-        write_matrix(dir + "effective_stiffness_symmetric.csv",
-                     VirtualTests::symmetric_part(C));
-        if (reactions)
-          write_matrix(dir + "effective_stiffness_reactions.csv",
-                       first.C_reaction[0]);
-        write_matrix(dir + "effective_stiffness_nominal_strain.csv",
-                     first.C[0]);
-        write_matrix(dir + "voigt_stiffness.csv", first.bounds->voigt());
-        write_matrix(dir + "reuss_stiffness.csv", first.bounds->reuss());
-        for (unsigned int b = 1; b < first.bc_names.size(); ++b)
-          write_matrix(dir + "effective_stiffness_" + first.bc_names[b] +
-                         ".csv",
-                       first.C_mean_strain[b]);
-
-        // The grains and their orientations.
-        std::ofstream grains_out(dir + "grains.csv");
-        grains_out << "grain,area,elementary_volumes,phi1_deg,Phi_deg,"
-                      "phi2_deg\n"
-                   << std::setprecision(8);
-        for (unsigned int g = 0; g < par.n_grains; ++g)
-          {
-            const auto a = Rotation::to_bunge(first.texture.orientations[g]);
-            grains_out << g << ',' << first.grain_areas[g] << ','
-                       << first.texture.n_elementary[g] << ','
-                       << a[0] * 180. / M_PI << ',' << a[1] * 180. / M_PI << ','
-                       << a[2] * 180. / M_PI << '\n';
-          }
-
-        // A grain map of the in-plane point lattice (x, y, grain) for
-        // gnuplot, like the paper's Fig. 5.
-        const ColumnarVoronoi grains(par.n_grains,
-                                     {{0., 0.}},
-                                     {{par.side_length, par.side_length}},
-                                     first.grain_seed,
-                                     par.periodic_grains);
-        std::ofstream         map(dir + "grain_map.dat");
-        const unsigned int    n = par.cells_in_plane * par.points_per_direction;
-        const double          h = par.side_length / n;
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            for (unsigned int i = 0; i < n; ++i)
-              map << (i + 0.5) * h << ' ' << (j + 0.5) * h << ' '
-                  << grains.grain((i + 0.5) * h, (j + 0.5) * h) << '\n';
-            map << '\n';
-          }
+        const auto a = Rotation::to_bunge(first.texture.orientations[g]);
+        grains_out << g << ',' << first.grain_areas[g] << ','
+                   << first.texture.n_elementary[g] << ',' << a[0] * 180. / M_PI
+                   << ',' << a[1] * 180. / M_PI << ',' << a[2] * 180. / M_PI
+                   << '\n';
       }
 
+    // A grain map of the in-plane point lattice (x, y, grain) for
+    // gnuplot, like the paper's Fig. 5.
+    const ColumnarVoronoi grains(par.n_grains,
+                                 {{0., 0.}},
+                                 {{par.side_length, par.side_length}},
+                                 first.grain_seed,
+                                 par.periodic_grains);
+    std::ofstream         map(dir + "grain_map.dat");
+    const unsigned int    n = par.cells_in_plane * par.points_per_direction;
+    const double          h = par.side_length / n;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          map << (i + 0.5) * h << ' ' << (j + 0.5) * h << ' '
+              << grains.grain((i + 0.5) * h, (j + 0.5) * h) << '\n';
+        map << '\n';
+      }
+  }
+
+
+
+  // @sect4{PolycrystalStudy::print_first_realization}
+  void
+  PolycrystalStudy::print_first_realization(const SampleResult  &first,
+                                            const InPlaneModuli &m)
+  {
+    const Matrix6 &C = first.C_mean_strain[0];
     pcout << "\n  effective stiffness C (GPa, " << first.bc_names[0]
           << " boundary conditions, mean stress over mean strain of the "
              "points):\n"
           << format_matrix(C, "    ");
-    if (reactions)
+    if (m.reactions)
       pcout << "  paper's method: reaction forces over the nominal strain "
                "(entries no face measures are 0):\n"
             << format_matrix(first.C_reaction[0], "    ");
     pcout << "  volume-averaged point stress over the nominal strain:\n"
           << format_matrix(first.C[0], "    ") << std::setprecision(5)
-          << "  E_x = " << E.E_x << ", E_y = " << E.E_y
-          << ", E_in-plane = " << E.E_in_plane << " GPa (";
-    if (reactions)
-      pcout << "paper's method " << Er.E_in_plane << ", ";
-    pcout << "nominal strain " << En.E_in_plane << ")\n"
-          << "  bounds of the assigned orientations: Reuss " << E_R.E_in_plane
-          << ", Hill " << E_H.E_in_plane << ", Voigt " << E_V.E_in_plane
-          << " GPa (Hill of the ODF " << ODF_H.E_in_plane << ")\n"
+          << "  E_x = " << m.E.E_x << ", E_y = " << m.E.E_y
+          << ", E_in-plane = " << m.E.E_in_plane << " GPa (";
+    if (m.reactions)
+      pcout << "paper's method " << m.E_reactions.E_in_plane << ", ";
+    pcout << "nominal strain " << m.E_nominal.E_in_plane << ")\n"
+          << "  bounds of the assigned orientations: Reuss "
+          << m.reuss.E_in_plane << ", Hill " << m.hill.E_in_plane << ", Voigt "
+          << m.voigt.E_in_plane << " GPa (Hill of the ODF "
+          << m.hill_odf.E_in_plane << ")\n"
           << "  misfit " << 100. * first.texture.misfit_sampled
           << " % (N_u sampled orientations), fallback grains "
           << first.texture.n_fallback << std::endl;
@@ -763,13 +900,20 @@ namespace Polycrystal
             << StiffnessBounds::in_plane(first.C_mean_strain[b]).E_in_plane
             << " GPa\n"
             << format_matrix(first.C_mean_strain[b], "    ");
+  }
 
-    // @sect4{Realizations}
-    //
-    // Further samples differ in both seeds. Their in-plane moduli give the
-    // distribution the paper names as its next step.
-    std::vector<std::array<double, 6>> rows;
-    auto record = [&](const SampleResult &s, const unsigned int r) {
+
+
+  // @sect4{PolycrystalStudy::run_realizations}
+  //
+  // Further samples differ in both seeds. Their in-plane moduli give the
+  // distribution the paper names as its next step. The first row is that
+  // of the first realization.
+  std::vector<PolycrystalStudy::Row>
+  PolycrystalStudy::run_realizations(const SampleResult &first)
+  {
+    std::vector<Row> rows;
+    auto             record = [&](const SampleResult &s, const unsigned int r) {
       const auto e = StiffnessBounds::in_plane(s.C_mean_strain[0]);
       rows.push_back({{static_cast<double>(r),
                        e.E_x,
@@ -782,12 +926,24 @@ namespace Polycrystal
     for (unsigned int r = 1; r < par.n_realizations; ++r)
       {
         pcout << "  realization " << r << std::endl;
-        const SampleResult s = run_sample(
-          par, solver, odf, crystal, r, {par.boundary_conditions[0]}, pcout);
+        const SampleResult s = run_sample(r, {par.boundary_conditions[0]});
         record(s, r);
         pcout << "    E_in-plane = " << std::setprecision(6) << rows.back()[3]
               << " GPa" << std::endl;
       }
+    return rows;
+  }
+
+
+
+  // @sect4{PolycrystalStudy::write_statistics}
+  //
+  // Mean and standard deviation of the in-plane modulus over the
+  // realizations, the table realizations.csv and summary.txt.
+  void
+  PolycrystalStudy::write_statistics(const std::vector<Row> &rows,
+                                     Timer                  &total_timer)
+  {
     double mean = 0, var = 0;
     for (const auto &row : rows)
       mean += row[3] / rows.size();
@@ -849,7 +1005,8 @@ main(int argc, char *argv[])
       // A missing file, a directory or an unreadable file: one line that
       // names it.
       qsmpm::Utils::check_parameter_file(parameter_file);
-      Polycrystal::run(parameter_file);
+      Polycrystal::PolycrystalStudy study(parameter_file);
+      study.run();
     }
   catch (std::exception &exc)
     {
