@@ -126,6 +126,10 @@ namespace
     if (!problem.reactions().empty())
       result.base_reaction_over_weight =
         problem.reactions().back()[1] / (800. * volume);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "L2 stress error " << result.l2
+                << ", base reaction / weight "
+                << result.base_reaction_over_weight << std::endl;
     return result;
   }
 
@@ -151,6 +155,14 @@ main(int argc, char **argv)
       check("  " + std::to_string(cells) +
               " cells: 20 steps converged without cut-backs",
             r.completed && r.steps == 20 && r.cut_backs == 0);
+      // A bound of the right size, not a convergence test (this part is
+      // the regression of the NaN): with linear shape functions the strain
+      // is constant per cell, so the 2 points of a cell carry its mean
+      // stress, off by rho0 g h / 4, i.e. h / (4 l0) = 3.1 % (8 cells) and
+      // 1.6 % (16) of rho0 g l0; points that cross a cell face add the
+      // cell-crossing error, 6.4 % at 32 cells in part 2. 0.1 bounds the
+      // sum with margin, while a NaN, a wrong sign or scaling of the load
+      // is off by O(1). Measured 3.4 % and 4.6 %.
       check("  " + std::to_string(cells) + " cells: L2 stress error < 0.1",
             r.l2 < 0.1);
     }

@@ -27,7 +27,7 @@
 //
 // Checks: complete failure reached, the load then below 1e-3 of the peak,
 // |W / (G_f b d) - 1| <= 5 % (W <= G_f b d as well), and the curve on 1
-// and 2 ranks the same within the solver tolerance.
+// and 2 ranks the same within 1e-3 of the peak load (see the reason below).
 //
 // The Newton tolerance is 1e-5 with GMRES at 1e-3: asking GMRES for 1e-6
 // with finite-difference Jacobian products (sqrt(eps) = 1e-7) breaks down.
@@ -37,6 +37,7 @@
 // on the include path of the tests).
 #include "compact_tension_geometry.h"
 
+#include <iostream>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
 #include <qsmpm/materials/decohesion.h>
@@ -155,8 +156,18 @@ main(int argc, char *argv[])
   // ranks; each step's solution differs within the Newton tolerance (1e-5
   // of the step's initial residual) and a softening, path-dependent
   // material carries these differences over hundreds of steps and through
-  // the discrete events of crack initiation and failure. 1e-3 of the peak
-  // (the paper's tolerance) is 50 times below the energy check above.
+  // the discrete events of crack initiation and failure. The tolerance,
+  // 1e-3 of the peak load, is our choice (not the paper's: the paper's 1e-3
+  // is its Newton and GMRES tolerance, a relative residual, not a
+  // difference of loads): 50 times below the energy check above, so a
+  // difference it lets pass cannot decide that check.
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cout << "max |P - P_serial| / P_max = "
+              << largest_difference / curve.peak_force()
+              << ", load at the end / peak = "
+              << curve.points().back().force / curve.peak_force()
+              << ", W / (G_f b d) = " << curve.work() / (G_f * b * d)
+              << std::endl;
   check("max |P - P_serial| / P_max",
         largest_difference / curve.peak_force(),
         1e-3);

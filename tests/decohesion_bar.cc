@@ -11,8 +11,30 @@
 //   dissipated energy     integral P du = G_f A.
 // Checked for one point per cell at h and h/2 (mesh objectivity: the
 // energies agree within 3 %) and for 2x2 points per cell (the smearing
-// length is the band width h, not the point size h/2). u0 = h/10, so that
-// the points do not leave the grid; L < E u0 / tau_nf (no snap-back).
+// length is the band width h, not the point size h/2). u0 = 0.01 (h/10 with
+// 10 cells, h/5 with 20): the right end moves at most 1.1 u0 = 0.011, less
+// than the distance from the last point to the grid's edge (h/2 = 0.05 and
+// 0.025 with one point per cell, h/4 = 0.025 with 2 x 2), so no point
+// leaves the grid; L < E u0 / tau_nf = 10 (no snap-back).
+//
+// Tolerances. The discrete bar reproduces the closed form exactly (uniform
+// strain in each region, the points' quadrature exact for it, the peak and
+// complete failure on load steps: 1e-3 = 20 du, u0 = 200 du, du = 5e-5),
+// so only the Newton tolerance remains (measured errors <= 2e-10 with
+// QSMPM_VERBOSE). The tolerances are loose on purpose and sized against
+// load-step sampling and against the errors the test is to catch:
+// - peak load 1 %: one load step on the softening branch lowers P by
+//   0.56 % of the peak, so a peak detected one step late still passes;
+//   peak displacement 1 %: one step is 5 % of u_peak;
+// - post-peak slope 2 %: a smearing length h/2 instead of h (2 x 2 points)
+//   changes the slope by about 50 %;
+// - opening at failure 2 %: one load step is 0.5 % of u0;
+// - dissipated energy 2 %: the trapezoidal rule is exact on this
+//   piecewise-linear curve, a step's sampling changes it by < 0.1 %, and a
+//   wrong smearing length changes it by a factor 2;
+// - energy per unit area, h/2 against h, 3 %: without crack-band scaling
+//   the energy scales with h, 100 % apart; 2 x 2 against 1 point, 2 %: a
+//   smearing length of the point size h/2 would halve it.
 #include "tests.h"
 
 #include <deal.II/base/function.h>

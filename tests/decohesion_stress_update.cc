@@ -8,10 +8,16 @@
 //   complete failure at w = u0, after which sigma_xx <= 0 for good;
 // - a stress state with principal directions at 30 degrees: with the
 //   principal-stress normal the crack normal is (cos 30, sin 30) and
-//   L_c = h cos 30; with the normal fixed to x the same state does not crack;
+//   L_c = h cos 30; with the normal fixed to x the same state has
+//   sigma_xx = 1.2 cos^2 30 - 0.3 sin^2 30 = 0.825 tau_nf and does not crack;
 // - one increment gives the same state as many small ones (closed form);
 // - points outside the cracking region stay elastic;
 // - the local stability limit L_c < M u0 / tau_nf is enforced.
+//
+// Tolerance 1e-12 (relative to tau_nf, u0 or h): the updates are closed
+// form, so only round-off remains (measured <= 6e-14; strains of order
+// tau_nf / M = 1e-3 times M cost three digits), while a wrong formula or
+// smearing length is off by 1e-2 or more.
 #include "tests.h"
 
 #include <qsmpm/materials/decohesion.h>
@@ -212,9 +218,14 @@ main()
           (tau_n - tau * (1. - w / u0)) / tau,
           1e-12);
     check_that("  principal normal: cracked (w > 0)", w > 0.);
+    // With the normal fixed to x the criterion sees tau_n = sigma_xx =
+    // 1.2 cos^2 30 - 0.3 sin^2 30 = 0.9 - 0.075 = 0.825 tau_nf < tau_nf.
     MaterialPoint r = make_point(model, dealii::Point<2>());
     step(model, r, d_eps);
-    check_that("  normal fixed to x: sigma_xx = 0.9 tau_nf does not crack",
+    check("  normal fixed to x: |sigma_xx - 0.825 tau_nf| / tau_nf",
+          (r.stress[0][0] - (1.2 * c * c - 0.3 * s * s) * tau) / tau,
+          1e-12);
+    check_that("  normal fixed to x: sigma_xx = 0.825 tau_nf does not crack",
                r.state[w_offset] == 0. && r.state[n_offset] == 0.);
   }
 

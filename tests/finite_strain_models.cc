@@ -16,6 +16,15 @@
 // - creation through the registry by name and parameters;
 // - a small-strain-only model (linear elastic) refuses the finite-strain
 //   interface with a message.
+//
+// Tolerances: closed forms and exact properties of tau (|tau| ~ 0.3 E)
+// 1e-10 E: the spectral decomposition and logarithm leave round-off of
+// 1e-16 ... 1e-15 E (measured; QSMPM_VERBOSE prints the values), and a
+// wrong formula is off by O(|tau|). Tangents against central differences
+// with h = 1e-6: 1e-6 relative, far above the difference quotient's own
+// error (truncation O(h^2) = 1e-12, round-off eps / h = 1e-10; measured
+// 1e-11 ... 6e-10) and far below a missing term (the geometric terms of
+// the Kirchhoff tangent are O(|tau| / |c|) ~ 0.1).
 #include "tests.h"
 
 #include <deal.II/physics/transformations.h>

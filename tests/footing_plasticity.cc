@@ -18,9 +18,10 @@
 // 3. Newton converges quadratically in a plastic step: the footing on a
 //    hardening soil (H = E/10, F-bar), 10 steps, exact linear solves; the
 //    relative residuals r_k satisfy r_{k+1} <= 100 r_k^2 from r_k <= 1e-2
-//    until the round-off floor. (With perfect plasticity the plastic zone
-//    still changes during the first iterations of a step; the asymptotic
-//    rate is the same, but it sets in later.) The residuals are printed.
+//    until the round-off floor, and the step takes 2 to 12 iterations.
+//    (With perfect plasticity the plastic zone still changes during the
+//    first iterations of a step; the asymptotic rate is the same, but it
+//    sets in later.) The residuals are printed to stdout only.
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -75,8 +76,7 @@ namespace
          << "  subsection von Mises\n"
          << "    set Young's modulus = 1e6\n    set Poisson's ratio = 0.3\n"
          << "    set Yield stress = " << std::setprecision(17) << sigma_y
-         << "\n    set Hardening modulus = " << hardening
-         << "\n  end\nend\n"
+         << "\n    set Hardening modulus = " << hardening << "\n  end\nend\n"
          << "subsection Load stepping\n  set Number of steps = " << steps
          << "\nend\n"
          << "subsection Nonlinear solver\n"
@@ -109,11 +109,10 @@ namespace
       std::make_shared<Settlement>(0.02));
 
     Result result;
-    problem.set_step_callback(
-      [&](const QuasiStaticProblem<2>::StepReport &) {
-        result.pressure_over_c.push_back(-problem.reactions()[3][1] / a / c);
-        return true;
-      });
+    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
+      result.pressure_over_c.push_back(-problem.reactions()[3][1] / a / c);
+      return true;
+    });
     try
       {
         problem.run();
@@ -139,8 +138,7 @@ main(int argc, char **argv)
   const std::string solver =
     "  set Tolerance = 1e-9\n  set Line search steps = 8\n";
 
-  deallog << "1. Limit pressure with and without F-bar (a/h = 4)"
-          << std::endl;
+  deallog << "1. Limit pressure with and without F-bar (a/h = 4)" << std::endl;
   const Result fbar = run(MPI_COMM_WORLD, "F-bar", 20, solver);
   const Result none = run(MPI_COMM_WORLD, "none", 20, solver);
   check_that("  F-bar: 20 steps converged", fbar.completed);
@@ -158,22 +156,21 @@ main(int argc, char **argv)
         q_fbar / fbar.pressure_over_c[15] - 1.,
         0.02);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << "q/c: F-bar " << q_fbar << ", none " << q_none
-              << ", Prandtl " << prandtl << std::endl;
+    std::cout << "q/c: F-bar " << q_fbar << ", none " << q_none << ", Prandtl "
+              << prandtl << std::endl;
 
   deallog << "2. The same curve on one rank and on all ranks" << std::endl;
-  const Result serial = run(MPI_COMM_SELF, "F-bar", 20, solver);
+  const Result serial     = run(MPI_COMM_SELF, "F-bar", 20, solver);
   double       difference = 0.;
   for (unsigned int i = 0; i < serial.pressure_over_c.size(); ++i)
-    difference = std::max(difference,
-                          std::abs(serial.pressure_over_c[i] /
-                                     fbar.pressure_over_c.at(i) -
-                                   1.));
+    difference =
+      std::max(difference,
+               std::abs(serial.pressure_over_c[i] / fbar.pressure_over_c.at(i) -
+                        1.));
   check_that("  serial run converged", serial.completed);
   check("  max relative difference of q over the curve", difference, 1e-6);
 
-  deallog << "3. Quadratic Newton convergence in a plastic step"
-          << std::endl;
+  deallog << "3. Quadratic Newton convergence in a plastic step" << std::endl;
   const Result exact =
     run(MPI_COMM_WORLD,
         "F-bar",
@@ -202,12 +199,13 @@ main(int argc, char **argv)
   check_that("  r_{k+1} <= 100 r_k^2 in every iteration from r_k <= 1e-2 "
              "to the floor (at least two)",
              quadratic && n_checked >= 2);
-  // The relative residuals, one digit; those below 1e-6 are compared with
-  // the harness's absolute tolerance, i.e. not at all.
-  deallog << "  ||R_k|| / ||R_0||:";
-  for (const double r : h)
-    deallog << ' ' << std::scientific << std::setprecision(0) << r / h[0];
-  deallog << std::defaultfloat << std::setprecision(6) << std::endl;
+  // The number of iterations as a range: at least 2 (a plastic step is
+  // nonlinear: the plastic zone and the return mapping change in it), at
+  // most 12: Newton that has lost quadratic convergence, e.g. linear at
+  // rate 0.1, would need 13 iterations from r = 1 to the tolerance 1e-13.
+  const unsigned int iterations = h.empty() ? 0 : h.size() - 1;
+  check_that("  Newton iterations of the last step: 2 to 12",
+             iterations >= 2 && iterations <= 12);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
       std::cout << "Newton residuals of the last step (relative):";

@@ -18,6 +18,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <iostream>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 
@@ -187,12 +188,26 @@ test()
   Vector<double> difference = u_mpm;
   difference -= u_fem;
 
-  deallog << dim << "D, " << u_fem.size() << " dofs, "
-          << problem.points().n_global_points() << " points, Newton iterations "
-          << problem.step_reports()[0].newton.newton_iterations << std::endl;
+  // 9 x 3 (x 3) cells: dim (10 x 4 (x 4)) dofs, 2^dim points per cell.
+  const unsigned int cells = dim == 2 ? 27 : 81, nodes = dim == 2 ? 40 : 160;
+  const unsigned int newton =
+    problem.step_reports()[0].newton.newton_iterations;
+  std::cout << dim << "D: " << u_fem.size() << " dofs, "
+            << problem.points().n_global_points() << " points, " << newton
+            << " Newton iterations" << std::endl;
+  deallog << dim << "D" << std::endl;
+  check_that("  dim x nodes dofs, 2^dim points per cell",
+             u_fem.size() == dim * nodes &&
+               problem.points().n_global_points() == (1u << dim) * cells);
   check("  ||u_MPM - u_FEM|| / ||u_FEM||",
         difference.l2_norm() / u_fem.l2_norm(),
         1e-8);
+  // A linear problem: the first Newton step solves it up to GMRES's 1e-10
+  // and the finite-difference Jacobian's relative error (~1e-7), the
+  // second to ~1e-14 < 1e-12; 3 allows one step more for round-off in the
+  // residual norm near the tolerance.
+  check_that("  Newton iterations: 1 to 3 (linear problem)",
+             newton >= 1 && newton <= 3);
 }
 
 int

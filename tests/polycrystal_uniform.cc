@@ -6,7 +6,16 @@
 // - its in-plane modulus lies between the Reuss and Voigt values of its
 //   own (grain-volume weighted) orientations;
 // - its C (mean stress over mean strain, no symmetry assumed) is symmetric
-//   to 2 % of its norm;
+//   when the boundary conditions satisfy the Hill-Mandel condition: with
+//   affine conditions in one load step without volume updates (linear)
+//   the mean stress derives from an energy, so C = C^T up to the solver
+//   tolerances (1e-8 for Newton and GMRES): 1e-6 allows the six solutions'
+//   errors amplified by the 6 x 6 solve (the paper's two steps with moving
+//   points add terms of order strain^2 ~ 1e-5, measured 9e-6). The paper's
+//   mixed conditions do not satisfy Hill-Mandel; their C has a skew part
+//   that is a boundary effect of the sample (0.38 % for the 1000-grain
+//   example, about 2 % for this small sample), which has no independent
+//   reference and is only printed to stdout;
 // - the C computed on all ranks equals the C computed by one rank alone
 //   (MPI_COMM_SELF) to 1e-5 relative (solver tolerances 1e-8);
 // - the orientations are the same on every rank.
@@ -49,8 +58,20 @@ main(int argc, char *argv[])
           Utilities::MPI::min(sum, MPI_COMM_WORLD),
         0.);
 
-  auto run = [&](const MPI_Comm comm) {
+  auto run = [&](const MPI_Comm                   comm,
+                 const VirtualTests::BoundaryType type =
+                   VirtualTests::BoundaryType::mixed) {
     VirtualTests::Parameters p;
+    p.boundary_type = type;
+    // Linear for the symmetry check: one load step without volume updates
+    // (the points at their initial positions, the linear FEM problem).
+    // With volume updates, or points that have moved in an earlier step,
+    // C picks up terms of order strain^2 ~ 1e-5 without symmetry.
+    if (type == VirtualTests::BoundaryType::affine)
+      {
+        p.update_volumes = false;
+        p.n_load_steps   = 1;
+      }
     p.subdivisions            = {{cells, cells, 3}};
     p.points_per_direction    = ppd;
     p.solver.tolerance        = 1e-8;
@@ -75,7 +96,13 @@ main(int argc, char *argv[])
           << std::endl;
   check_at_least("E_in-plane - E_Reuss", E - E_R, 0.);
   check_at_least("E_Voigt - E_in-plane", E_V - E, 0.);
-  check("|C - C^T| / (2 |C|)", VirtualTests::relative_asymmetry(C), 0.02);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cout << "mixed conditions: |C - C^T| / (2 |C|) = "
+              << VirtualTests::relative_asymmetry(C) << std::endl;
+  check("affine conditions (Hill-Mandel): |C - C^T| / (2 |C|)",
+        VirtualTests::relative_asymmetry(
+          run(MPI_COMM_WORLD, VirtualTests::BoundaryType::affine)),
+        1e-6);
 
   const auto C_self = run(MPI_COMM_SELF);
   double     diff = 0, norm = 0;

@@ -5,11 +5,13 @@
 #define qsmpm_tests_h
 
 #include <cmath>
+#include <cstdlib>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -61,14 +63,27 @@ namespace qsmpm_tests
     return s.str();
   }
 
+  /// With QSMPM_VERBOSE set, the measured value also goes to stdout (never
+  /// to the compared output).
+  inline void
+  print_value(const std::string &what, const double value)
+  {
+    if (std::getenv("QSMPM_VERBOSE") != nullptr &&
+        (!Utilities::MPI::job_supports_mpi() ||
+         Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0))
+      std::cout << "value of " << what << ": " << std::setprecision(6)
+                << value << std::endl;
+  }
+
   /**
    * "PASS" if |value| <= tolerance, else "FAIL" with the value. The value
    * itself is printed only on failure, so that the output does not depend on
-   * round-off.
+   * round-off (and to stdout with QSMPM_VERBOSE set).
    */
   inline void
   check(const std::string &what, const double value, const double tolerance)
   {
+    print_value(what, value);
     const bool pass = std::isfinite(value) && std::abs(value) <= tolerance;
     deallog << what << " <= " << format(tolerance) << ": "
             << (pass ? "PASS" : "FAIL");
@@ -83,6 +98,7 @@ namespace qsmpm_tests
                  const double       value,
                  const double       bound)
   {
+    print_value(what, value);
     const bool pass = std::isfinite(value) && value >= bound;
     deallog << what << " >= " << format(bound) << ": "
             << (pass ? "PASS" : "FAIL");

@@ -10,8 +10,10 @@
 //   (Hill here: the harmonic mean of Voigt and Reuss);
 // - uniform texture (the shipped uniform ODF's cells):
 //   192.77 / 209.73 / 226.30;
-// - the electrodeposited-Ni-like ODF has the Hill modulus of the real films,
-//   194.7 GPa (paper Table I);
+// - the shipped electrodeposited-Ni-like ODF has the Hill modulus of the
+//   real films, 194.7 GPa (paper Table I): a consistency check of the
+//   shipped file only, whose fibre fraction was tuned by bisection to give
+//   exactly this value, not a verification of anything;
 // - Melchior-Delannay assignment: the N_G add up to N_u, and the grains'
 //   orientations keep the texture (Hill modulus of the assigned
 //   orientations within 1.5 % of the ODF's);
@@ -20,6 +22,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <qsmpm/base/rotation.h>
 #include <qsmpm/homogenization/orientation_distribution.h>
 #include <qsmpm/homogenization/stiffness_bounds.h>
@@ -45,6 +48,16 @@ bounds_of(const OrientationDistribution &odf, const SymmetricTensor<4, 3> &C)
   return StiffnessBounds(C, g, w);
 }
 
+// A reference value as it is checked, all its digits (format() rounds to
+// three).
+std::string
+reference(const double value)
+{
+  std::ostringstream s;
+  s << std::setprecision(8) << value;
+  return s.str();
+}
+
 // Hill: E of C_H = (C_V + C_R) / 2 (StiffnessBounds), the reference for
 // the uniform texture (from G_Hill); for the fibre the reference Hill value
 // is the harmonic mean of the Voigt and Reuss moduli (the Hill average of
@@ -61,17 +74,20 @@ check_moduli(const std::string     &name,
   const double E_R = StiffnessBounds::in_plane(b.reuss()).E_in_plane;
   const double E_V = StiffnessBounds::in_plane(b.voigt()).E_in_plane;
   const double E_H = StiffnessBounds::in_plane(b.hill()).E_in_plane;
-  check(name + ": Reuss - " + format(R), E_R - R, tolerance);
+  std::cout << name << ": Reuss " << E_R << ", Hill " << E_H
+            << ", 2 V R / (V + R) " << 2 * E_V * E_R / (E_V + E_R) << ", Voigt "
+            << E_V << std::endl;
+  check(name + ": Reuss - " + reference(R), E_R - R, tolerance);
   if (harmonic)
     {
-      check(name + ": 2 V R / (V + R) - " + format(H),
+      check(name + ": 2 V R / (V + R) - " + reference(H),
             2 * E_V * E_R / (E_V + E_R) - H,
             tolerance);
       check_that(name + ": Reuss < Hill < Voigt", E_R < E_H && E_H < E_V);
     }
   else
-    check(name + ": Hill - " + format(H), E_H - H, tolerance);
-  check(name + ": Voigt - " + format(V), E_V - V, tolerance);
+    check(name + ": Hill - " + reference(H), E_H - H, tolerance);
+  check(name + ": Voigt - " + reference(V), E_V - V, tolerance);
 }
 
 void
@@ -133,6 +149,11 @@ main()
                  0.01,
                  true);
   }
+  // 0.5 GPa: the ODF's 5 degree cells (centres weighted with the cell
+  // measures) are a quadrature of the orientation average whose error,
+  // against the exact uniform-texture values, is at most 0.24 GPa (Voigt;
+  // Reuss 0.01, Hill 0.13): the tolerance allows twice that and is far
+  // below the 33 GPa between the bounds.
   check_moduli(
     "  uniform (ODF cells)",
     bounds_of(OrientationDistribution(odf_directory + "/uniform.txt"), C),
@@ -143,7 +164,20 @@ main()
   const OrientationDistribution ed(odf_directory + "/electrodeposited_ni.txt");
   const double                  ed_hill =
     StiffnessBounds::in_plane(bounds_of(ed, C).hill()).E_in_plane;
-  check("  electrodeposited_ni: Hill - 194.7", ed_hill - 194.7, 0.05);
+  // Not a verification: the fibre fraction of the shipped file was chosen
+  // by bisection (polycrystal --make-odfs) so that exactly this value is
+  // 194.7 GPa, the measured films' Hill modulus (paper Table I). The check
+  // only confirms that the shipped file is still the tuned one (not
+  // regenerated with other constants, truncated or replaced). Tolerance
+  // 0.05 GPa: half a unit of the paper's last digit, i.e. the file's value
+  // rounds to the paper's 194.7 (the file's 8-digit values reproduce the
+  // bisection's target far more closely).
+  std::cout << "electrodeposited_ni.txt: Hill " << std::setprecision(8)
+            << ed_hill << std::setprecision(6) << std::endl;
+  check("  electrodeposited_ni.txt (consistency of the shipped file, tuned "
+        "to it, not a verification): Hill - 194.7",
+        ed_hill - 194.7,
+        0.05);
 
   deallog << "Melchior-Delannay assignment, 300 grains, N_u = 30000"
           << std::endl;
@@ -161,6 +195,13 @@ main()
       StiffnessBounds::in_plane(
         StiffnessBounds(C, result.orientations, volumes).hill())
         .E_in_plane;
+    std::cout << "assignment: Hill of the grains " << hill << ", of the ODF "
+              << ed_hill << std::endl;
+    // 1.5 %: 300 grains sample the ODF with a scatter; realizations of
+    // 1000 grains scatter by 0.07 % (standard deviation, example_
+    // polycrystal.md), i.e. about 0.13 % for 300 grains; 1.5 % is ten times
+    // that, and a texture lost in the assignment (uniform: Hill 209.6
+    // against 194.7, 7.7 %) fails.
     check("  Hill of the grains / Hill of the ODF - 1",
           hill / ed_hill - 1.,
           0.015);

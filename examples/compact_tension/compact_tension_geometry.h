@@ -27,7 +27,7 @@
 #include <memory>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/grid/background_grid.h>
-#include <qsmpm/loading/boundary_conditions.h>
+#include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/materials/decohesion.h>
 #include <string>
 #include <utility>
@@ -181,7 +181,7 @@ namespace CompactTension
      * so that the appendages can rotate about the pins.
      */
     unsigned int
-    add_supports(BoundaryConditions<dim> &bcs) const;
+    add_supports(BoundaryDescriptor<dim> &bcs) const;
 
     /**
      * The load P (N) for the full depth d from the reactions of the last
