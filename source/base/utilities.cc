@@ -42,29 +42,6 @@ namespace qsmpm
 
 
     template <int dim>
-    std::array<unsigned int, dim>
-    parse_subdivisions(const std::string &text, const std::string &what)
-    {
-      const auto pieces = split(text, ',');
-      AssertThrow(pieces.size() == dim,
-                  ExcMessage("The entry <" + what + "> = <" + text +
-                             "> must have exactly " + std::to_string(dim) +
-                             " comma-separated positive integers."));
-      std::array<unsigned int, dim> n;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const int value = dealii::Utilities::string_to_int(pieces[d]);
-          AssertThrow(value > 0,
-                      ExcMessage("The entry <" + what + "> = <" + text +
-                                 "> must hold positive integers."));
-          n[d] = value;
-        }
-      return n;
-    }
-
-
-
-    template <int dim>
     std::array<bool, dim>
     parse_components(const std::string &text,
                      const std::string &what,
@@ -116,14 +93,12 @@ namespace qsmpm
 
 
 
-#define QSMPM_INSTANTIATE(dim)                                                  \
-  template Point<dim>                    parse_point<dim>(const std::string &,  \
-                                       const std::string &); \
-  template std::array<unsigned int, dim> parse_subdivisions<dim>(               \
-    const std::string &, const std::string &);                                  \
-  template std::array<bool, dim>    parse_components<dim>(const std::string &,  \
-                                                       const std::string &,  \
-                                                       bool &);              \
+#define QSMPM_INSTANTIATE(dim)                                                 \
+  template Point<dim>               parse_point<dim>(const std::string &,      \
+                                       const std::string &);     \
+  template std::array<bool, dim>    parse_components<dim>(const std::string &, \
+                                                       const std::string &, \
+                                                       bool &);             \
   template std::vector<std::string> symmetric_component_names<dim>();
 
     QSMPM_INSTANTIATE(2)
@@ -180,13 +155,14 @@ namespace qsmpm
     read_dimension(const std::string &filename)
     {
       check_parameter_file(filename);
+      unsigned int     dimension = 2;
       ParameterHandler prm;
-      prm.declare_entry("Dimension",
-                        "2",
-                        Patterns::Integer(2, 3),
-                        "Space dimension of the problem: 2 or 3.");
+      prm.add_parameter("Dimension",
+                        dimension,
+                        "Space dimension of the problem: 2 or 3.",
+                        Patterns::Integer(2, 3));
       prm.parse_input(filename, "", /*skip_undefined=*/true);
-      return prm.get_integer("Dimension");
+      return dimension;
     }
   } // namespace Utils
 } // namespace qsmpm

@@ -9,30 +9,30 @@ namespace qsmpm
 {
   template <int dim>
   void
-  BackgroundGrid<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  BackgroundGrid<dim>::Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry("Lower corner",
-                        dim == 2 ? "0,0" : "0,0,0",
-                        Patterns::List(Patterns::Double(), dim, dim),
-                        "Lower corner of the background grid box.");
-      prm.declare_entry("Upper corner",
-                        dim == 2 ? "1,1" : "1,1,1",
-                        Patterns::List(Patterns::Double(), dim, dim),
-                        "Upper corner of the background grid box.");
-      prm.declare_entry("Subdivisions",
-                        dim == 2 ? "8,8" : "8,8,8",
-                        Patterns::List(Patterns::Integer(1), dim, dim),
-                        "Number of grid cells in each coordinate direction.");
-      prm.declare_entry("Periodic directions",
-                        "",
-                        Patterns::Anything(),
+      prm.add_parameter("Lower corner",
+                        lower_corner,
+                        "Lower corner of the background grid box.",
+                        Patterns::List(Patterns::Double(), dim, dim));
+      prm.add_parameter("Upper corner",
+                        upper_corner,
+                        "Upper corner of the background grid box.",
+                        Patterns::List(Patterns::Double(), dim, dim));
+      prm.add_parameter("Subdivisions",
+                        subdivisions,
+                        "Number of grid cells in each coordinate direction.",
+                        Patterns::List(Patterns::Integer(1), dim, dim));
+      prm.add_parameter("Periodic directions",
+                        periodic,
                         "Directions in which the box is periodic, as letters "
                         "(e.g. xy); empty for none. The displacement is then "
                         "periodic up to the macroscopic jump of <Boundary "
                         "conditions> (homogenization); with every direction "
-                        "periodic one corner node is held.");
+                        "periodic one corner node is held.",
+                        Patterns::Anything());
     }
     prm.leave_subsection();
   }
@@ -40,37 +40,48 @@ namespace qsmpm
 
 
   template <int dim>
-  void
-  BackgroundGrid<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  BackgroundGrid<dim>::Parameters::Parameters()
   {
-    prm.enter_subsection("Geometry");
-    {
-      lower_corner =
-        Utils::parse_point<dim>(prm.get("Lower corner"), "Lower corner");
-      upper_corner =
-        Utils::parse_point<dim>(prm.get("Upper corner"), "Upper corner");
-      subdivisions =
-        Utils::parse_subdivisions<dim>(prm.get("Subdivisions"), "Subdivisions");
-      periodic_directions.clear();
-      const std::string letters = std::string("xyz").substr(0, dim);
-      for (const char c : prm.get("Periodic directions"))
-        {
-          const auto d = letters.find(c);
-          AssertThrow(d != std::string::npos,
-                      ExcMessage("Geometry: <Periodic directions> = <" +
-                                 prm.get("Periodic directions") +
-                                 ">: use letters from " + letters + "."));
-          if (std::find(periodic_directions.begin(),
-                        periodic_directions.end(),
-                        d) == periodic_directions.end())
-            periodic_directions.push_back(d);
-        }
-      for (unsigned int d = 0; d < dim; ++d)
-        AssertThrow(upper_corner[d] > lower_corner[d],
-                    ExcMessage("Geometry: <Upper corner> must be larger than "
-                               "<Lower corner> in every coordinate."));
-    }
-    prm.leave_subsection();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        upper_corner[d] = 1.;
+        subdivisions[d] = 8;
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  BackgroundGrid<dim>::Parameters::periodic_directions() const
+  {
+    std::vector<unsigned int> directions;
+    const std::string         letters = std::string("xyz").substr(0, dim);
+    for (const char c : periodic)
+      {
+        const auto d = letters.find(c);
+        AssertThrow(d != std::string::npos,
+                    ExcMessage("Geometry: <Periodic directions> = <" +
+                               periodic + ">: use letters from " + letters +
+                               "."));
+        if (std::find(directions.begin(), directions.end(), d) ==
+            directions.end())
+          directions.push_back(d);
+      }
+    return directions;
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::Parameters::check() const
+  {
+    periodic_directions();
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(upper_corner[d] > lower_corner[d],
+                  ExcMessage("Geometry: <Upper corner> must be larger than "
+                             "<Lower corner> in every coordinate."));
   }
 
 
@@ -113,8 +124,8 @@ namespace qsmpm
     make_box(parameters.lower_corner,
              parameters.upper_corner,
              parameters.subdivisions);
-    if (!parameters.periodic_directions.empty())
-      make_periodic(parameters.periodic_directions);
+    if (!parameters.periodic.empty())
+      make_periodic(parameters.periodic_directions());
   }
 
 

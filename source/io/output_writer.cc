@@ -12,29 +12,28 @@ namespace qsmpm
 {
   template <int dim>
   void
-  OutputWriter<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  OutputWriter<dim>::Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
     {
-      prm.declare_entry("Directory",
-                        "output",
-                        Patterns::Anything(),
+      prm.add_parameter("Directory",
+                        directory,
                         "Where all output goes (created if needed; relative "
-                        "to the working directory).");
-      prm.declare_entry("Interval",
-                        "1",
-                        Patterns::Integer(0),
+                        "to the working directory).",
+                        Patterns::Anything());
+      prm.add_parameter("Interval",
+                        interval,
                         "Write point and grid fields every this many steps "
                         "(and after the last); 0 writes none. reactions.csv "
-                        "is written every step.");
-      prm.declare_entry("Write increment",
-                        "true",
-                        Patterns::Bool(),
-                        "Also write the grid displacement increment.");
-      prm.declare_entry(
+                        "is written every step.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Write increment",
+                        write_increment,
+                        "Also write the grid displacement increment.",
+                        Patterns::Bool());
+      prm.add_parameter(
         "Checkpoint interval",
-        "0",
-        Patterns::Integer(0),
+        checkpoint_interval,
         "K > 0: every K accepted load steps, write a checkpoint (the grid, "
         "all material points with all their properties, the load stepping "
         "state) into <Directory>/checkpoint-<step>; the newest two are "
@@ -42,23 +41,8 @@ namespace qsmpm
         "renamed only when complete, so a crash never damages the last "
         "one. Resume with 'qsmpm --resume file.prm' (also on another number "
         "of MPI ranks); the rows of reactions.csv after the checkpoint are "
-        "then replaced. 0: no checkpoints.");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  template <int dim>
-  void
-  OutputWriter<dim>::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    {
-      directory           = prm.get("Directory");
-      interval            = prm.get_integer("Interval");
-      write_increment     = prm.get_bool("Write increment");
-      checkpoint_interval = prm.get_integer("Checkpoint interval");
+        "then replaced. 0: no checkpoints.",
+        Patterns::Integer(0));
     }
     prm.leave_subsection();
   }

@@ -11,56 +11,55 @@
 namespace qsmpm
 {
   void
-  LoadStepper::Parameters::declare_parameters(ParameterHandler &prm)
+  LoadStepper::Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Load stepping");
     {
-      prm.declare_entry("Number of steps",
-                        "1",
-                        Patterns::Integer(1),
+      prm.add_parameter("Number of steps",
+                        n_steps,
                         "K: the load factor goes from 0 to its final value "
-                        "in K equal increments.");
-      prm.declare_entry("Final load factor",
-                        "1.0",
-                        Patterns::Double(),
+                        "in K equal increments.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Final load factor",
+                        final_load_factor,
                         "The load factor t at the end of the run; it is the "
-                        "time variable t of all boundary and load functions.");
-      prm.declare_entry("Maximum cut-backs",
-                        "4",
-                        Patterns::Integer(0, 30),
+                        "time variable t of all boundary and load functions.",
+                        Patterns::Double());
+      prm.add_parameter("Maximum cut-backs",
+                        max_cut_backs,
                         "How often in a row a step that did not converge is "
                         "retried with a smaller increment before the run "
-                        "stops.");
-      prm.declare_entry("Cut-back factor",
-                        "0.5",
-                        Patterns::Double(0.01, 0.99),
+                        "stops.",
+                        Patterns::Integer(0, 30));
+      prm.add_parameter("Cut-back factor",
+                        cut_back_factor,
                         "The increment is multiplied by this after a failed "
-                        "attempt.");
-      prm.declare_entry("Increment growth factor",
-                        "1.0",
-                        Patterns::Double(1., 10.),
+                        "attempt.",
+                        Patterns::Double(0.01, 0.99));
+      prm.add_parameter("Increment growth factor",
+                        growth_factor,
                         "g: once |t| has reached <Growth from load factor>, "
                         "each accepted step multiplies the increment by g "
                         "(at least the nominal increment, at most <Maximum "
                         "increment>). 1: off, every step takes the nominal "
-                        "increment final / K.");
-      prm.declare_entry("Growth from load factor",
-                        "0.0",
-                        Patterns::Double(0.),
+                        "increment final / K.",
+                        Patterns::Double(1., 10.));
+      prm.add_parameter("Growth from load factor",
+                        growth_start,
                         "|t| from which the increment grows by <Increment "
-                        "growth factor>.");
-      prm.declare_entry("Maximum increment",
-                        "0.0",
-                        Patterns::Double(0.),
+                        "growth factor>.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Maximum increment",
+                        max_increment,
                         "Largest |increment| reached by growth; 0: no "
                         "limit but the final load factor. With <Control> = "
                         "dissipation: the largest increment of a step (an "
                         "elastic step takes it under displacement control); "
-                        "0: the nominal increment final / K.");
-      prm.declare_entry(
+                        "0: the nominal increment final / K.",
+                        Patterns::Double(0.));
+      prm.add_parameter(
         "Control",
-        "displacement",
-        Patterns::Selection("displacement|dissipation"),
+        control,
         "displacement: the load factor of every step is prescribed (the "
         "paper's method; snap-backs are jumped over). dissipation: path "
         "following, the load factor of a step is an unknown and the "
@@ -69,33 +68,14 @@ namespace qsmpm
         "snap-backs are traced; steps that would need more than <Maximum "
         "increment> are displacement-controlled. Needs a model that "
         "computes its dissipation (decohesion), displacement conditions "
-        "proportional to t and no other loads.");
-      prm.declare_entry("Dissipation increment",
-                        "0.0",
-                        Patterns::Double(0.),
+        "proportional to t and no other loads.",
+        Patterns::Selection("displacement|dissipation"));
+      prm.add_parameter("Dissipation increment",
+                        dissipation_increment,
                         "With <Control> = dissipation: the energy the "
                         "material points dissipate in each step (in 2D per "
-                        "unit thickness, J/m).");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  LoadStepper::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Load stepping");
-    {
-      n_steps               = prm.get_integer("Number of steps");
-      final_load_factor     = prm.get_double("Final load factor");
-      max_cut_backs         = prm.get_integer("Maximum cut-backs");
-      cut_back_factor       = prm.get_double("Cut-back factor");
-      growth_factor         = prm.get_double("Increment growth factor");
-      growth_start          = prm.get_double("Growth from load factor");
-      max_increment         = prm.get_double("Maximum increment");
-      control               = prm.get("Control");
-      dissipation_increment = prm.get_double("Dissipation increment");
+                        "unit thickness, J/m).",
+                        Patterns::Double(0.));
     }
     prm.leave_subsection();
   }

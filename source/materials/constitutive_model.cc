@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <map>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/materials/constitutive_model.h>
 
 namespace qsmpm
@@ -169,25 +170,44 @@ namespace qsmpm
 
 
 
+  namespace
+  {
+    /// The entry "Model" of subsection "Material": one of the registered
+    /// models.
+    template <int dim>
+    struct ModelChoice : ParameterStruct<ModelChoice<dim>>
+    {
+      std::string model = "linear elastic";
+
+      void
+      add_parameters(ParameterHandler &prm)
+      {
+        std::string selection, documentation = "The constitutive model of "
+                                               "the material points. "
+                                               "Available models:";
+        for (const auto &entry : registry<dim>())
+          {
+            selection += (selection.empty() ? "" : "|") + entry.first;
+            documentation +=
+              "\n  <" + entry.first + ">: " + entry.second.description;
+          }
+        prm.add_parameter("Model",
+                          model,
+                          documentation,
+                          Patterns::Selection(selection));
+      }
+    };
+  } // namespace
+
+
+
   template <int dim>
   void
   ConstitutiveModelFactory<dim>::declare_parameters(ParameterHandler &prm)
   {
-    std::string selection, documentation =
-                             "The constitutive model of the material "
-                             "points. Available models:";
-    for (const auto &entry : registry<dim>())
-      {
-        selection += (selection.empty() ? "" : "|") + entry.first;
-        documentation +=
-          "\n  <" + entry.first + ">: " + entry.second.description;
-      }
     prm.enter_subsection("Material");
     {
-      prm.declare_entry("Model",
-                        "linear elastic",
-                        Patterns::Selection(selection),
-                        documentation);
+      ModelChoice<dim>::declare_parameters(prm);
       for (const auto &entry : registry<dim>())
         {
           prm.enter_subsection(entry.first);
@@ -205,7 +225,7 @@ namespace qsmpm
   ConstitutiveModelFactory<dim>::create(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    const std::string name = prm.get("Model");
+    const std::string name = ModelChoice<dim>::from(prm).model;
     AssertThrow(registry<dim>().count(name) == 1,
                 ExcMessage("Material: unknown <Model> = <" + name + ">."));
     prm.enter_subsection(name);

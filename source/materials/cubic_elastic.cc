@@ -1,6 +1,5 @@
 #include <cmath>
 #include <qsmpm/base/rotation.h>
-#include <qsmpm/base/utilities.h>
 #include <qsmpm/materials/cubic_elastic.h>
 
 namespace qsmpm
@@ -47,24 +46,43 @@ namespace qsmpm
 
 
   template <int dim>
-  CubicElastic<dim>::CubicElastic(ParameterHandler &prm)
-    : CubicElastic(prm.get_double("C11"),
-                   prm.get_double("C12"),
-                   prm.get_double("C44"),
-                   [&prm] {
-                     const auto angles =
-                       Utils::split(prm.get("Euler angles"), ',');
-                     AssertThrow(angles.size() == 3,
-                                 ExcMessage("cubic elastic: <Euler angles> "
-                                            "needs three values, phi1, Phi, "
-                                            "phi2 (degrees)."));
-                     std::array<double, 3> a;
-                     for (unsigned int i = 0; i < 3; ++i)
-                       a[i] = dealii::Utilities::string_to_double(angles[i]) *
-                              M_PI / 180.;
-                     return a;
-                   }())
+  CubicElastic<dim>::CubicElastic(const Parameters &parameters)
+    : CubicElastic(parameters.C11,
+                   parameters.C12,
+                   parameters.C44,
+                   {{parameters.euler_angles[0] * M_PI / 180.,
+                     parameters.euler_angles[1] * M_PI / 180.,
+                     parameters.euler_angles[2] * M_PI / 180.}})
   {
+  }
+
+
+
+  template <int dim>
+  CubicElastic<dim>::CubicElastic(ParameterHandler &prm)
+    : CubicElastic(Parameters::from(prm))
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter("C11",
+                      C11,
+                      "Cubic constant C11 in the crystal frame (default: "
+                      "nickel, GPa; paper Section 4).",
+                      Patterns::Double(0.));
+    prm.add_parameter("C12", C12, "Cubic constant C12.", Patterns::Double());
+    prm.add_parameter("C44", C44, "Cubic constant C44.", Patterns::Double(0.));
+    prm.add_parameter("Euler angles",
+                      euler_angles,
+                      "Bunge angles phi1, Phi, phi2 in degrees of the "
+                      "orientation of all points (programs such as the "
+                      "polycrystal example set one per grain instead).",
+                      Patterns::List(Patterns::Double(), 3, 3));
   }
 
 
@@ -73,22 +91,7 @@ namespace qsmpm
   void
   CubicElastic<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("C11",
-                      "249",
-                      Patterns::Double(0.),
-                      "Cubic constant C11 in the crystal frame (default: "
-                      "nickel, GPa; paper Section 4).");
-    prm.declare_entry("C12", "155", Patterns::Double(), "Cubic constant C12.");
-    prm.declare_entry("C44",
-                      "114",
-                      Patterns::Double(0.),
-                      "Cubic constant C44.");
-    prm.declare_entry("Euler angles",
-                      "0, 0, 0",
-                      Patterns::List(Patterns::Double(), 3, 3),
-                      "Bunge angles phi1, Phi, phi2 in degrees of the "
-                      "orientation of all points (programs such as the "
-                      "polycrystal example set one per grain instead).");
+    Parameters::declare_parameters(prm);
   }
 
 

@@ -109,16 +109,66 @@ namespace qsmpm
 
 
   template <int dim>
-  Decohesion<dim>::Decohesion(ParameterHandler &prm)
-    : Decohesion(prm.get_double("Young's modulus"),
-                 prm.get_double("Poisson's ratio"),
-                 prm.get_bool("Plane stress"),
-                 prm.get_double("Tensile strength"),
-                 prm.get_double("Fracture energy"),
-                 parse_normal<dim>(prm.get("Crack normal")),
-                 prm.get_double("Crack band width"))
+  Decohesion<dim>::Decohesion(const Parameters &parameters)
+    : Decohesion(parameters.elastic.elasticity.young_modulus,
+                 parameters.elastic.elasticity.poisson_ratio,
+                 parameters.elastic.plane_stress,
+                 parameters.tensile_strength,
+                 parameters.fracture_energy,
+                 parse_normal<dim>(parameters.crack_normal),
+                 parameters.crack_band_width)
   {
-    crack_region = parse_region<dim>(prm.get("Cracking region"));
+    crack_region = parse_region<dim>(parameters.cracking_region);
+  }
+
+
+
+  template <int dim>
+  Decohesion<dim>::Decohesion(ParameterHandler &prm)
+    : Decohesion(Parameters::from(prm))
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  Decohesion<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    elastic.add_parameters(prm);
+    prm.add_parameter("Tensile strength",
+                      tensile_strength,
+                      "tau_nf: the normal traction at which a crack starts "
+                      "(Rankine criterion, paper eq. 3.1).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Fracture energy",
+                      fracture_energy,
+                      "G_f: energy dissipated per unit crack area (J/m^2); "
+                      "the area under the linear softening law, so that the "
+                      "opening at complete failure is u0 = 2 G_f / tau_nf.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Crack normal",
+                      crack_normal,
+                      "'principal': the direction of the largest principal "
+                      "stress when the crack starts; or a fixed direction, "
+                      "'1,0' (2D) or '1,0,0' (3D) for a crack normal to x as "
+                      "in the paper.",
+                      Patterns::Anything());
+    prm.add_parameter("Crack band width",
+                      crack_band_width,
+                      "h_band: the cell size of the background grid, i.e. the "
+                      "width of the band of cells that cracks. The smearing "
+                      "length is L_c = h_band max_i |n_i| (h for a crack "
+                      "parallel to a cell edge), for any number of points per "
+                      "cell. Must be positive and below M u0 / tau_nf (local "
+                      "stability).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Cracking region",
+                      cracking_region,
+                      "An expression in x, y (and z): points created where it "
+                      "is > 0.5 may crack, the others stay elastic. E.g. "
+                      "'abs(x) < 0.005' for a band of width 1 cm around x = 0.",
+                      Patterns::Anything());
   }
 
 
@@ -127,42 +177,7 @@ namespace qsmpm
   void
   Decohesion<dim>::declare_parameters(ParameterHandler &prm)
   {
-    // E, nu and plane stress as for linear elasticity.
-    LinearElastic<dim>::declare_parameters(prm);
-    prm.declare_entry("Tensile strength",
-                      "1.0",
-                      Patterns::Double(0.),
-                      "tau_nf: the normal traction at which a crack starts "
-                      "(Rankine criterion, paper eq. 3.1).");
-    prm.declare_entry("Fracture energy",
-                      "1.0",
-                      Patterns::Double(0.),
-                      "G_f: energy dissipated per unit crack area (J/m^2); "
-                      "the area under the linear softening law, so that the "
-                      "opening at complete failure is u0 = 2 G_f / tau_nf.");
-    prm.declare_entry("Crack normal",
-                      "principal",
-                      Patterns::Anything(),
-                      "'principal': the direction of the largest principal "
-                      "stress when the crack starts; or a fixed direction, "
-                      "'1,0' (2D) or '1,0,0' (3D) for a crack normal to x as "
-                      "in the paper.");
-    prm.declare_entry("Crack band width",
-                      "0",
-                      Patterns::Double(0.),
-                      "h_band: the cell size of the background grid, i.e. the "
-                      "width of the band of cells that cracks. The smearing "
-                      "length is L_c = h_band max_i |n_i| (h for a crack "
-                      "parallel to a cell edge), for any number of points per "
-                      "cell. Must be positive and below M u0 / tau_nf (local "
-                      "stability).");
-    prm.declare_entry(
-      "Cracking region",
-      "1",
-      Patterns::Anything(),
-      "An expression in x, y (and z): points created where it "
-      "is > 0.5 may crack, the others stay elastic. E.g. "
-      "'abs(x) < 0.005' for a band of width 1 cm around x = 0.");
+    Parameters::declare_parameters(prm);
   }
 
 

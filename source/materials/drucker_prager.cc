@@ -16,28 +16,6 @@ namespace qsmpm
   } // namespace
 
 
-  namespace
-  {
-    template <int dim>
-    typename DruckerPrager<dim>::Matching
-    parse_matching(const std::string &text)
-    {
-      using M = typename DruckerPrager<dim>::Matching;
-      if (text == "outer cone")
-        return M::outer_cone;
-      if (text == "inner cone")
-        return M::inner_cone;
-      AssertThrow(text == "plane strain",
-                  ExcMessage("Drucker-Prager: 'Mohr-Coulomb matching' must "
-                             "be 'outer cone', 'inner cone' or 'plane "
-                             "strain', not '" +
-                             text + "'."));
-      return M::plane_strain;
-    }
-  } // namespace
-
-
-
   template <int dim>
   std::pair<double, double>
   DruckerPrager<dim>::matching_coefficients(const double   angle_deg,
@@ -107,15 +85,62 @@ namespace qsmpm
 
 
   template <int dim>
-  DruckerPrager<dim>::DruckerPrager(ParameterHandler &prm)
-    : DruckerPrager(prm.get_double("Young's modulus"),
-                    prm.get_double("Poisson's ratio"),
-                    prm.get_double("Cohesion"),
-                    prm.get_double("Friction angle"),
-                    prm.get_double("Dilatancy angle"),
-                    prm.get_double("Hardening modulus"),
-                    parse_matching<dim>(prm.get("Mohr-Coulomb matching")))
+  DruckerPrager<dim>::DruckerPrager(const Parameters &parameters)
+    : DruckerPrager(parameters.elasticity.young_modulus,
+                    parameters.elasticity.poisson_ratio,
+                    parameters.cohesion,
+                    parameters.friction_angle,
+                    parameters.dilatancy_angle,
+                    parameters.hardening_modulus,
+                    parameters.matching)
   {
+  }
+
+
+
+  template <int dim>
+  DruckerPrager<dim>::DruckerPrager(ParameterHandler &prm)
+    : DruckerPrager(Parameters::from(prm))
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  DruckerPrager<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    elasticity.add_parameters(prm);
+    prm.add_parameter("Cohesion",
+                      cohesion,
+                      "c0 >= 0: the Mohr-Coulomb cohesion (same unit as "
+                      "Young's modulus).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Friction angle",
+                      friction_angle,
+                      "phi in [0, 90): the friction angle in degrees.",
+                      Patterns::Double(0., 90.));
+    prm.add_parameter("Dilatancy angle",
+                      dilatancy_angle,
+                      "psi in [0, phi]: the dilatancy angle in degrees "
+                      "(psi = phi: associative flow).",
+                      Patterns::Double(0., 90.));
+    prm.add_parameter("Hardening modulus",
+                      hardening_modulus,
+                      "H >= 0: linear hardening of the cohesion, c = c0 + H "
+                      "alpha (0: perfect plasticity).",
+                      Patterns::Double(0.));
+    Utils::add_selection<Matching>(
+      prm,
+      "Mohr-Coulomb matching",
+      matching,
+      {{"outer cone", Matching::outer_cone},
+       {"inner cone", Matching::inner_cone},
+       {"plane strain", Matching::plane_strain}},
+      "How the cone is fitted to Mohr-Coulomb: through its "
+      "compressive (outer cone) or tensile (inner cone) "
+      "meridians, or to give Mohr-Coulomb's limit loads in "
+      "plane strain with associative flow (plane strain).");
   }
 
 
@@ -124,33 +149,7 @@ namespace qsmpm
   void
   DruckerPrager<dim>::declare_parameters(ParameterHandler &prm)
   {
-    IsotropicPlasticity<dim>::declare_elastic_parameters(prm);
-    prm.declare_entry("Cohesion",
-                      "1e-3",
-                      Patterns::Double(0.),
-                      "c0 >= 0: the Mohr-Coulomb cohesion (same unit as "
-                      "Young's modulus).");
-    prm.declare_entry("Friction angle",
-                      "30",
-                      Patterns::Double(0., 90.),
-                      "phi in [0, 90): the friction angle in degrees.");
-    prm.declare_entry("Dilatancy angle",
-                      "0",
-                      Patterns::Double(0., 90.),
-                      "psi in [0, phi]: the dilatancy angle in degrees "
-                      "(psi = phi: associative flow).");
-    prm.declare_entry("Hardening modulus",
-                      "0",
-                      Patterns::Double(0.),
-                      "H >= 0: linear hardening of the cohesion, c = c0 + H "
-                      "alpha (0: perfect plasticity).");
-    prm.declare_entry("Mohr-Coulomb matching",
-                      "plane strain",
-                      Patterns::Selection("outer cone|inner cone|plane strain"),
-                      "How the cone is fitted to Mohr-Coulomb: through its "
-                      "compressive (outer cone) or tensile (inner cone) "
-                      "meridians, or to give Mohr-Coulomb's limit loads in "
-                      "plane strain with associative flow (plane strain).");
+    Parameters::declare_parameters(prm);
   }
 
 

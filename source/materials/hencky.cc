@@ -16,8 +16,7 @@ namespace qsmpm
 
   template <int dim>
   Hencky<dim>::Hencky(ParameterHandler &prm)
-    : Hencky(prm.get_double("Young's modulus"),
-             prm.get_double("Poisson's ratio"))
+    : IsotropicHyperelastic<dim>(IsotropicElasticity::from(prm))
   {
   }
 

@@ -16,10 +16,19 @@ namespace qsmpm
 
 
   template <int dim>
+  IsotropicHyperelastic<dim>::IsotropicHyperelastic(
+    const IsotropicElasticity &parameters)
+    : IsotropicHyperelastic(parameters.young_modulus, parameters.poisson_ratio)
+  {
+  }
+
+
+
+  template <int dim>
   void
   IsotropicHyperelastic<dim>::declare_parameters(ParameterHandler &prm)
   {
-    LinearElastic<dim>::declare_isotropic_parameters(prm);
+    IsotropicElasticity::declare_parameters(prm);
   }
 
 

@@ -74,15 +74,6 @@ namespace qsmpm
 
 
   template <int dim>
-  void
-  IsotropicPlasticity<dim>::declare_elastic_parameters(ParameterHandler &prm)
-  {
-    LinearElastic<dim>::declare_isotropic_parameters(prm);
-  }
-
-
-
-  template <int dim>
   std::vector<StateField>
   IsotropicPlasticity<dim>::state_fields() const
   {

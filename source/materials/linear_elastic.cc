@@ -48,27 +48,48 @@ namespace qsmpm
 
 
   template <int dim>
-  LinearElastic<dim>::LinearElastic(ParameterHandler &prm)
-    : LinearElastic(prm.get_double("Young's modulus"),
-                    prm.get_double("Poisson's ratio"),
-                    prm.get_bool("Plane stress"))
+  LinearElastic<dim>::LinearElastic(const Parameters &parameters)
+    : LinearElastic(parameters.elasticity.young_modulus,
+                    parameters.elasticity.poisson_ratio,
+                    parameters.plane_stress)
   {
   }
 
 
 
   template <int dim>
-  void
-  LinearElastic<dim>::declare_isotropic_parameters(ParameterHandler &prm)
+  LinearElastic<dim>::LinearElastic(ParameterHandler &prm)
+    : LinearElastic(Parameters::from(prm))
   {
-    prm.declare_entry("Young's modulus",
-                      "1.0",
-                      Patterns::Double(0.),
-                      "Young's modulus E (Pa, or any consistent unit).");
-    prm.declare_entry("Poisson's ratio",
-                      "0.3",
-                      Patterns::Double(-1., 0.5),
-                      "Poisson's ratio nu, in (-1, 0.5).");
+  }
+
+
+
+  void
+  IsotropicElasticity::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter("Young's modulus",
+                      young_modulus,
+                      "Young's modulus E (Pa, or any consistent unit).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Poisson's ratio",
+                      poisson_ratio,
+                      "Poisson's ratio nu, in (-1, 0.5).",
+                      Patterns::Double(-1., 0.5));
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    elasticity.add_parameters(prm);
+    prm.add_parameter("Plane stress",
+                      plane_stress,
+                      "2D only: plane stress (sigma_zz = 0) instead of plane "
+                      "strain (eps_zz = 0).",
+                      Patterns::Bool());
   }
 
 
@@ -77,12 +98,7 @@ namespace qsmpm
   void
   LinearElastic<dim>::declare_parameters(ParameterHandler &prm)
   {
-    declare_isotropic_parameters(prm);
-    prm.declare_entry("Plane stress",
-                      "false",
-                      Patterns::Bool(),
-                      "2D only: plane stress (sigma_zz = 0) instead of plane "
-                      "strain (eps_zz = 0).");
+    Parameters::declare_parameters(prm);
   }
 
 

@@ -17,8 +17,7 @@ namespace qsmpm
 
   template <int dim>
   NeoHookean<dim>::NeoHookean(ParameterHandler &prm)
-    : NeoHookean(prm.get_double("Young's modulus"),
-                 prm.get_double("Poisson's ratio"))
+    : IsotropicHyperelastic<dim>(IsotropicElasticity::from(prm))
   {
   }
 

@@ -38,12 +38,40 @@ namespace qsmpm
 
 
   template <int dim>
-  VonMises<dim>::VonMises(ParameterHandler &prm)
-    : VonMises(prm.get_double("Young's modulus"),
-               prm.get_double("Poisson's ratio"),
-               prm.get_double("Yield stress"),
-               prm.get_double("Hardening modulus"))
+  VonMises<dim>::VonMises(const Parameters &parameters)
+    : VonMises(parameters.elasticity.young_modulus,
+               parameters.elasticity.poisson_ratio,
+               parameters.yield_stress,
+               parameters.hardening_modulus)
   {
+  }
+
+
+
+  template <int dim>
+  VonMises<dim>::VonMises(ParameterHandler &prm)
+    : VonMises(Parameters::from(prm))
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  VonMises<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    elasticity.add_parameters(prm);
+    prm.add_parameter("Yield stress",
+                      yield_stress,
+                      "sigma_y0 > 0: the initial uniaxial yield stress "
+                      "(same unit as Young's modulus).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Hardening modulus",
+                      hardening_modulus,
+                      "H >= 0: linear isotropic hardening, sigma_y = "
+                      "sigma_y0 + H alpha with the equivalent plastic strain "
+                      "alpha (0: perfect plasticity).",
+                      Patterns::Double(0.));
   }
 
 
@@ -52,18 +80,7 @@ namespace qsmpm
   void
   VonMises<dim>::declare_parameters(ParameterHandler &prm)
   {
-    IsotropicPlasticity<dim>::declare_elastic_parameters(prm);
-    prm.declare_entry("Yield stress",
-                      "1e-3",
-                      Patterns::Double(0.),
-                      "sigma_y0 > 0: the initial uniaxial yield stress "
-                      "(same unit as Young's modulus).");
-    prm.declare_entry("Hardening modulus",
-                      "0",
-                      Patterns::Double(0.),
-                      "H >= 0: linear isotropic hardening, sigma_y = "
-                      "sigma_y0 + H alpha with the equivalent plastic strain "
-                      "alpha (0: perfect plasticity).");
+    Parameters::declare_parameters(prm);
   }
 
 

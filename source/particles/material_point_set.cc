@@ -5,89 +5,105 @@
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
+#include <tuple>
 
 namespace qsmpm
 {
   template <int dim>
   void
-  MaterialPointSet<dim>::Parameters::declare_parameters(ParameterHandler &prm)
+  MaterialPointSet<dim>::Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material points");
     {
-      prm.declare_entry("Points per cell per direction",
-                        "2",
-                        Patterns::Integer(1, 10),
-                        "n: each filled cell receives n^dim material points.");
-      prm.declare_entry("Placement",
-                        "regular",
-                        Patterns::Selection("regular|gauss"),
-                        "regular: points at the centres of an n^dim "
-                        "subdivision of the cell, equal volumes; gauss: "
-                        "points at the n-point Gauss rule with volumes equal "
-                        "to the Gauss weights times the cell volume (MPM then "
-                        "coincides with the finite element method at the "
-                        "first step).");
-      prm.declare_entry("Region lower corner",
-                        "",
-                        Patterns::Anything(),
+      prm.add_parameter("Points per cell per direction",
+                        points_per_direction,
+                        "n: each filled cell receives n^dim material points.",
+                        Patterns::Integer(1, 10));
+      Utils::add_selection<Placement>(
+        prm,
+        "Placement",
+        placement,
+        {{"regular", Placement::regular}, {"gauss", Placement::gauss}},
+        "regular: points at the centres of an n^dim "
+        "subdivision of the cell, equal volumes; gauss: "
+        "points at the n-point Gauss rule with volumes equal "
+        "to the Gauss weights times the cell volume (MPM then "
+        "coincides with the finite element method at the "
+        "first step).");
+      prm.add_parameter("Region lower corner",
+                        region_lower_corner,
                         "If given (with the upper corner), only points in "
-                        "this box are kept; empty: the whole grid is filled.");
-      prm.declare_entry("Region upper corner", "", Patterns::Anything(), "");
-      prm.declare_entry("Update volumes",
-                        "true",
-                        Patterns::Bool(),
+                        "this box are kept; empty: the whole grid is filled.",
+                        Patterns::Anything());
+      prm.add_parameter("Region upper corner",
+                        region_upper_corner,
+                        "",
+                        Patterns::Anything());
+      prm.add_parameter("Update volumes",
+                        update_volumes,
                         "Update point volumes with J (paper eqs. 2.23-2.24). "
                         "false keeps the initial volumes: a geometrically "
                         "linear model, identical to linear finite elements "
-                        "when the points sit at Gauss points.");
-      prm.declare_entry("Kinematics",
-                        "small strain",
-                        Patterns::Selection("small strain|finite strain"),
-                        "small strain: the paper's formulation (strain "
-                        "increments sym grad du, Cauchy stress updated "
-                        "incrementally). finite strain: updated Lagrangian "
-                        "on the reset grid, Delta F = I + grad du at the "
-                        "points, F = Delta F F, Kirchhoff stress from a "
-                        "hyperelastic (or finite-strain) model, internal "
-                        "force on the current volume det(F) Omega_0. Needs "
-                        "a model that supports finite strain (hencky, "
-                        "neo-Hookean, von Mises, Drucker-Prager).");
-      prm.declare_entry("Shape functions",
-                        "linear",
-                        Patterns::Selection("linear|uGIMP|cpGIMP"),
-                        "linear: the FE_Q(1) functions of the point's cell "
-                        "(the paper). uGIMP: generalized interpolation "
-                        "material point weights (averages of the linear "
-                        "functions over the point's box-shaped domain, "
-                        "Bardenhagen & Kober 2004), which reach the nodes of "
-                        "neighbouring cells and remove the cell-crossing "
-                        "error; the domain keeps its initial size. cpGIMP: "
-                        "the domain's half-lengths follow the stretch of "
-                        "the point (l_d = l_d^0 U_dd, F = R U). GIMP needs "
-                        "a uniform grid; a domain is at most half a cell "
-                        "wide in each direction.");
-      prm.declare_entry("Volumetric locking",
-                        "none",
-                        Patterns::Selection("none|F-bar"),
-                        "none: every point uses its own kinematics (the "
-                        "paper). F-bar: the volume change of each point is "
-                        "replaced by the volume-weighted mean over the "
-                        "points of its cell (Coombs et al. 2018; at small "
-                        "strain the same on tr d eps), which removes the "
-                        "volumetric locking of plastic flow and nearly "
-                        "incompressible materials on bilinear/trilinear "
-                        "cells.");
-      prm.declare_entry(
+                        "when the points sit at Gauss points.",
+                        Patterns::Bool());
+      Utils::add_selection<Kinematics>(
+        prm,
+        "Kinematics",
+        formulation.kinematics,
+        {{"small strain", Kinematics::small_strain},
+         {"finite strain", Kinematics::finite_strain}},
+        "small strain: the paper's formulation (strain "
+        "increments sym grad du, Cauchy stress updated "
+        "incrementally). finite strain: updated Lagrangian "
+        "on the reset grid, Delta F = I + grad du at the "
+        "points, F = Delta F F, Kirchhoff stress from a "
+        "hyperelastic (or finite-strain) model, internal "
+        "force on the current volume det(F) Omega_0. Needs "
+        "a model that supports finite strain (hencky, "
+        "neo-Hookean, von Mises, Drucker-Prager).");
+      Utils::add_selection<ShapeFunctions>(
+        prm,
+        "Shape functions",
+        formulation.shape_functions,
+        {{"linear", ShapeFunctions::linear},
+         {"uGIMP", ShapeFunctions::ugimp},
+         {"cpGIMP", ShapeFunctions::cpgimp}},
+        "linear: the FE_Q(1) functions of the point's cell "
+        "(the paper). uGIMP: generalized interpolation "
+        "material point weights (averages of the linear "
+        "functions over the point's box-shaped domain, "
+        "Bardenhagen & Kober 2004), which reach the nodes of "
+        "neighbouring cells and remove the cell-crossing "
+        "error; the domain keeps its initial size. cpGIMP: "
+        "the domain's half-lengths follow the stretch of "
+        "the point (l_d = l_d^0 U_dd, F = R U). GIMP needs "
+        "a uniform grid; a domain is at most half a cell "
+        "wide in each direction.");
+      Utils::add_selection<VolumetricTreatment>(
+        prm,
+        "Volumetric locking",
+        formulation.volumetric,
+        {{"none", VolumetricTreatment::none},
+         {"F-bar", VolumetricTreatment::fbar}},
+        "none: every point uses its own kinematics (the "
+        "paper). F-bar: the volume change of each point is "
+        "replaced by the volume-weighted mean over the "
+        "points of its cell (Coombs et al. 2018; at small "
+        "strain the same on tr d eps), which removes the "
+        "volumetric locking of plastic flow and nearly "
+        "incompressible materials on bilinear/trilinear "
+        "cells.");
+      prm.add_parameter(
         "Minimum nodal volume",
-        "0",
-        Patterns::Double(0., 1.),
+        min_nodal_volume_fraction,
         "Nodes whose support holds less material than this fraction of a "
         "cell's volume (sum_p Omega_p N_i(x_p) / h^dim) are held fixed in "
         "the step, like the nodes without points (paper Section 2.2). 0: "
         "only nodes without points. With GIMP a node that a point's domain "
         "only just reaches has a nearly vanishing stiffness, which makes "
         "Newton stall at large deformation (most of all with F-bar); a "
-        "value of about 0.01 removes those nodes.");
+        "value of about 0.01 removes those nodes.",
+        Patterns::Double(0., 1.));
     }
     prm.leave_subsection();
   }
@@ -95,38 +111,38 @@ namespace qsmpm
 
 
   template <int dim>
-  void
-  MaterialPointSet<dim>::Parameters::parse_parameters(ParameterHandler &prm)
+  bool
+  MaterialPointSet<dim>::Parameters::restrict_to_box() const
   {
-    prm.enter_subsection("Material points");
-    {
-      points_per_direction = prm.get_integer("Points per cell per direction");
-      placement =
-        prm.get("Placement") == "gauss" ? Placement::gauss : Placement::regular;
-      update_volumes         = prm.get_bool("Update volumes");
-      formulation.kinematics = parse_kinematics(prm.get("Kinematics"));
-      formulation.shape_functions =
-        parse_shape_functions(prm.get("Shape functions"));
-      formulation.volumetric =
-        parse_volumetric_treatment(prm.get("Volumetric locking"));
-      min_nodal_volume_fraction = prm.get_double("Minimum nodal volume");
-      AssertThrow(update_volumes || !formulation.finite_strain(),
-                  ExcMessage("Material points: <Update volumes = false> "
-                             "(a geometrically linear model) contradicts "
-                             "<Kinematics = finite strain>."));
-      const std::string lower = prm.get("Region lower corner");
-      const std::string upper = prm.get("Region upper corner");
-      AssertThrow(lower.empty() == upper.empty(),
-                  ExcMessage("Material points: give both <Region lower "
-                             "corner> and <Region upper corner>, or neither."));
-      restrict_to_box = !lower.empty();
-      if (restrict_to_box)
-        {
-          region_lower = Utils::parse_point<dim>(lower, "Region lower corner");
-          region_upper = Utils::parse_point<dim>(upper, "Region upper corner");
-        }
-    }
-    prm.leave_subsection();
+    return !region_lower_corner.empty() || !region_upper_corner.empty();
+  }
+
+
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  MaterialPointSet<dim>::Parameters::region() const
+  {
+    AssertThrow(region_lower_corner.empty() == region_upper_corner.empty(),
+                ExcMessage("Material points: give both <Region lower "
+                           "corner> and <Region upper corner>, or neither."));
+    return {Utils::parse_point<dim>(region_lower_corner, "Region lower corner"),
+            Utils::parse_point<dim>(region_upper_corner,
+                                    "Region upper corner")};
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::Parameters::check() const
+  {
+    AssertThrow(update_volumes || !formulation.finite_strain(),
+                ExcMessage("Material points: <Update volumes = false> "
+                           "(a geometrically linear model) contradicts "
+                           "<Kinematics = finite strain>."));
+    if (restrict_to_box())
+      region();
   }
 
 
@@ -309,9 +325,11 @@ namespace qsmpm
   void
   MaterialPointSet<dim>::fill(const Parameters &parameters)
   {
-    const Parameters p = parameters;
-    if (p.restrict_to_box)
+    const bool restrict_to_box = parameters.restrict_to_box();
+    Point<dim> region_lower, region_upper;
+    if (restrict_to_box)
       {
+        std::tie(region_lower, region_upper) = parameters.region();
         // A box reaching beyond the grid is clipped to it; say so, since a
         // body smaller than intended changes every result.
         const Point<dim> &lower = grid.lower_corner(),
@@ -320,27 +338,27 @@ namespace qsmpm
         bool         outside    = false;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            AssertThrow(p.region_lower[d] < p.region_upper[d],
+            AssertThrow(region_lower[d] < region_upper[d],
                         ExcMessage("Material points: <Region lower corner> "
                                    "must lie below <Region upper corner> in "
                                    "every direction."));
-            outside = outside || p.region_lower[d] < lower[d] - tolerance ||
-                      p.region_upper[d] > upper[d] + tolerance;
+            outside = outside || region_lower[d] < lower[d] - tolerance ||
+                      region_upper[d] > upper[d] + tolerance;
           }
         if (outside &&
             Utilities::MPI::this_mpi_process(grid.get_communicator()) == 0)
           std::cerr << "Warning: Material points: the region box ("
-                    << p.region_lower << ") - (" << p.region_upper
+                    << region_lower << ") - (" << region_upper
                     << ") reaches beyond the grid (" << lower << ") - ("
                     << upper << "); points are created only inside the grid."
                     << std::endl;
       }
     fill(
-      [p](const Point<dim> &x) {
-        if (!p.restrict_to_box)
+      [restrict_to_box, region_lower, region_upper](const Point<dim> &x) {
+        if (!restrict_to_box)
           return true;
         for (unsigned int d = 0; d < dim; ++d)
-          if (x[d] < p.region_lower[d] || x[d] > p.region_upper[d])
+          if (x[d] < region_lower[d] || x[d] > region_upper[d])
             return false;
         return true;
       },

@@ -28,13 +28,6 @@ namespace qsmpm
     parse_point(const std::string &text, const std::string &what);
 
     /**
-     * Parse a list of @p dim unsigned integers ("8,4").
-     */
-    template <int dim>
-    std::array<unsigned int, dim>
-    parse_subdivisions(const std::string &text, const std::string &what);
-
-    /**
      * Parse a component string such as "xy", "x", "xyz" or "n" into a mask.
      * The letter "n" (normal component) is returned as an empty mask together
      * with @p normal_only = true.

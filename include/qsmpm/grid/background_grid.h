@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <qsmpm/base/parameter_struct.h>
 #include <vector>
 
 namespace qsmpm
@@ -45,18 +46,30 @@ namespace qsmpm
     /**
      * The subsection "Geometry" of a .prm file.
      */
-    struct Parameters
+    struct Parameters : ParameterStruct<Parameters>
     {
       Point<dim>                    lower_corner;
       Point<dim>                    upper_corner;
       std::array<unsigned int, dim> subdivisions;
-      /// Directions in which the box is periodic (empty: none).
-      std::vector<unsigned int> periodic_directions;
+      /// Letters of the directions in which the box is periodic ("xy";
+      /// empty: none).
+      std::string periodic;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// The defaults: the unit box, 8 cells in each direction.
+      Parameters();
+
+      /// Declare the entries, bound to the members.
       void
-      parse_parameters(ParameterHandler &prm);
+      add_parameters(ParameterHandler &prm);
+
+      /// The directions of the letters in <tt>periodic</tt>; throws on a
+      /// letter that is not one of them.
+      std::vector<unsigned int>
+      periodic_directions() const;
+
+      /// The letters and a box of positive extent.
+      void
+      check() const;
     };
 
     explicit BackgroundGrid(const MPI_Comm communicator);

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <fstream>
 #include <memory>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <string>
@@ -26,7 +27,7 @@ namespace qsmpm
     /**
      * The subsection "Output" of a .prm file.
      */
-    struct Parameters
+    struct Parameters : ParameterStruct<Parameters>
     {
       std::string  directory       = "output";
       unsigned int interval        = 1;
@@ -34,10 +35,9 @@ namespace qsmpm
       /// Write a checkpoint every this many accepted steps; 0: never.
       unsigned int checkpoint_interval = 0;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// Declare the entries, bound to the members.
       void
-      parse_parameters(ParameterHandler &prm);
+      add_parameters(ParameterHandler &prm);
     };
 
     OutputWriter(const Parameters &parameters, const MPI_Comm communicator);

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <iosfwd>
+#include <qsmpm/base/parameter_struct.h>
 #include <string>
 
 namespace qsmpm
@@ -45,7 +46,7 @@ namespace qsmpm
     /**
      * The subsection "Load stepping" of a .prm file.
      */
-    struct Parameters
+    struct Parameters : ParameterStruct<Parameters>
     {
       unsigned int n_steps           = 1;
       double       final_load_factor = 1.;
@@ -63,10 +64,9 @@ namespace qsmpm
       /// Energy dissipated per step with dissipation control.
       double dissipation_increment = 0.;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// Declare the entries, bound to the members.
       void
-      parse_parameters(ParameterHandler &prm);
+      add_parameters(ParameterHandler &prm);
     };
 
     explicit LoadStepper(const Parameters &parameters);

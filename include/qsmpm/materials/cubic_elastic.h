@@ -1,8 +1,10 @@
 #ifndef qsmpm_materials_cubic_elastic_h
 #define qsmpm_materials_cubic_elastic_h
 
+#include <array>
 #include <deal.II/base/tensor.h>
 #include <functional>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/materials/constitutive_model.h>
 
 namespace qsmpm
@@ -53,6 +55,22 @@ namespace qsmpm
                  const double                 C12,
                  const double                 C44,
                  const std::array<double, 3> &euler_angles = {{0., 0., 0.}});
+
+    /// The subsection "cubic elastic".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      double C11 = 249.;
+      double C12 = 155.;
+      double C44 = 114.;
+      /// Bunge angles phi1, Phi, phi2 in degrees.
+      std::array<double, 3> euler_angles = {{0., 0., 0.}};
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+    };
+
+    explicit CubicElastic(const Parameters &parameters);
 
     /// Construct from the subsection "cubic elastic".
     explicit CubicElastic(ParameterHandler &prm);

@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <functional>
 #include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/materials/linear_elastic.h>
 
 namespace qsmpm
 {
@@ -90,6 +91,26 @@ namespace qsmpm
                const double          fracture_energy,
                const Tensor<1, dim> &fixed_normal,
                const double          band_width);
+
+    /// The subsection "decohesion".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      /// E, nu and plane stress as for linear elasticity.
+      typename LinearElastic<dim>::Parameters elastic;
+      double                                  tensile_strength = 1.;
+      double                                  fracture_energy  = 1.;
+      /// "principal" or a direction "1,0" ("1,0,0").
+      std::string crack_normal     = "principal";
+      double      crack_band_width = 0.;
+      /// An expression in x, y (, z): cracking where it is > 0.5.
+      std::string cracking_region = "1";
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+    };
+
+    explicit Decohesion(const Parameters &parameters);
 
     /// Construct from the subsection "decohesion".
     explicit Decohesion(ParameterHandler &prm);

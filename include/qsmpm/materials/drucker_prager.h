@@ -2,6 +2,7 @@
 #define qsmpm_materials_drucker_prager_h
 
 #include <qsmpm/materials/isotropic_plasticity.h>
+#include <qsmpm/materials/linear_elastic.h>
 
 namespace qsmpm
 {
@@ -111,6 +112,23 @@ namespace qsmpm
                   const double   dilatancy_angle_deg = 0.,
                   const double   hardening_modulus   = 0.,
                   const Matching matching            = Matching::plane_strain);
+
+    /// The subsection "Drucker-Prager".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      IsotropicElasticity elasticity;
+      double              cohesion          = 1e-3;
+      double              friction_angle    = 30.;
+      double              dilatancy_angle   = 0.;
+      double              hardening_modulus = 0.;
+      Matching            matching          = Matching::plane_strain;
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+    };
+
+    explicit DruckerPrager(const Parameters &parameters);
 
     /// Construct from the subsection "Drucker-Prager".
     explicit DruckerPrager(ParameterHandler &prm);

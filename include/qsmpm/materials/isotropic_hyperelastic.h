@@ -21,6 +21,8 @@ namespace qsmpm
     IsotropicHyperelastic(const double young_modulus,
                           const double poisson_ratio);
 
+    explicit IsotropicHyperelastic(const IsotropicElasticity &parameters);
+
     /// "Young's modulus" and "Poisson's ratio" (no plane stress).
     static void
     declare_parameters(ParameterHandler &prm);

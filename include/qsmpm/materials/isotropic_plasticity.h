@@ -78,8 +78,9 @@ namespace qsmpm
    * with L = d ln b / d b at b_e_trial (TensorFunctions::log_derivative())
    * and D_alg the algorithmic tangent of the return mapping. At Delta F = I
    * (the tangent at the start of a step) the rule of tangent() applies:
-   * D_alg is replaced by the elastic D. For det Delta F <= 0 or det F <= 0 (or not finite) tau is
-   * NaN, which the Newton line search treats as a failed trial.
+   * D_alg is replaced by the elastic D. For det Delta F <= 0 or det F <= 0 (or
+   * not finite) tau is NaN, which the Newton line search treats as a failed
+   * trial.
    *
    * Parameters (in the derived model's subsection): "Young's modulus",
    * "Poisson's ratio", and the model's own.
@@ -222,10 +223,6 @@ namespace qsmpm
     extract(const Tensor<4, 3> &t);
 
   protected:
-    /// "Young's modulus" and "Poisson's ratio".
-    static void
-    declare_elastic_parameters(ParameterHandler &prm);
-
     const double                lambda;
     const double                mu;
     const double                K;

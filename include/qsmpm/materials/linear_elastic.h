@@ -1,11 +1,28 @@
 #ifndef qsmpm_materials_linear_elastic_h
 #define qsmpm_materials_linear_elastic_h
 
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <utility>
 
 namespace qsmpm
 {
+  /**
+   * The entries "Young's modulus" and "Poisson's ratio" of the subsections
+   * of the isotropic models.
+   */
+  struct IsotropicElasticity : ParameterStruct<IsotropicElasticity>
+  {
+    double young_modulus = 1.;
+    double poisson_ratio = 0.3;
+
+    /// Declare the entries, bound to the members.
+    void
+    add_parameters(ParameterHandler &prm);
+  };
+
+
+
   /**
    * Isotropic linear elasticity, sigma^{k+1} = sigma^k + C : d_epsilon
    * (paper eqs. 2.20-2.21 with a constant C). In 2D the model is plane strain
@@ -27,6 +44,19 @@ namespace qsmpm
     LinearElastic(const double young_modulus,
                   const double poisson_ratio,
                   const bool   plane_stress = false);
+
+    /// The subsection "linear elastic".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      IsotropicElasticity elasticity;
+      bool                plane_stress = false;
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+    };
+
+    explicit LinearElastic(const Parameters &parameters);
 
     /// Construct from the subsection "linear elastic".
     explicit LinearElastic(ParameterHandler &prm);
@@ -54,10 +84,6 @@ namespace qsmpm
      */
     static std::pair<double, double>
     lame_parameters(const double young_modulus, const double poisson_ratio);
-
-    /// The entries "Young's modulus" and "Poisson's ratio".
-    static void
-    declare_isotropic_parameters(ParameterHandler &prm);
 
     /**
      * The isotropic stiffness for E, nu; in 2D plane strain or, with

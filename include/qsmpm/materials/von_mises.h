@@ -2,6 +2,7 @@
 #define qsmpm_materials_von_mises_h
 
 #include <qsmpm/materials/isotropic_plasticity.h>
+#include <qsmpm/materials/linear_elastic.h>
 
 namespace qsmpm
 {
@@ -56,6 +57,20 @@ namespace qsmpm
              const double poisson_ratio,
              const double yield_stress,
              const double hardening_modulus = 0.);
+
+    /// The subsection "von Mises".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      IsotropicElasticity elasticity;
+      double              yield_stress      = 1e-3;
+      double              hardening_modulus = 0.;
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+    };
+
+    explicit VonMises(const Parameters &parameters);
 
     /// Construct from the subsection "von Mises".
     explicit VonMises(ParameterHandler &prm);

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/formulation.h>
@@ -42,14 +43,14 @@ namespace qsmpm
     /**
      * The subsection "Material points" of a .prm file.
      */
-    struct Parameters
+    struct Parameters : ParameterStruct<Parameters>
     {
       unsigned int points_per_direction = 2;
       Placement    placement            = Placement::regular;
-      /// If set, only the box [region_lower, region_upper] is filled.
-      bool       restrict_to_box = false;
-      Point<dim> region_lower;
-      Point<dim> region_upper;
+      /// The corners "x,y" ("x,y,z") of the box to fill, both or neither;
+      /// empty: the whole grid.
+      std::string region_lower_corner;
+      std::string region_upper_corner;
       /// Omega_p follows J_p (2.23-2.24); false keeps Omega_p^0.
       bool update_volumes = true;
       /// Small or finite strain; linear or GIMP shape functions.
@@ -58,10 +59,22 @@ namespace qsmpm
       /// are held fixed in a step like nodes without points.
       double min_nodal_volume_fraction = 0.;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// Declare the entries, bound to the members.
       void
-      parse_parameters(ParameterHandler &prm);
+      add_parameters(ParameterHandler &prm);
+
+      /// Whether only a box is filled (a region corner is given).
+      bool
+      restrict_to_box() const;
+
+      /// The region box (lower, upper corner); throws if only one corner
+      /// is given or one is not a point.
+      std::pair<Point<dim>, Point<dim>>
+      region() const;
+
+      /// The region and the agreement of volume update and kinematics.
+      void
+      check() const;
     };
 
     /// Offsets of the fields every point carries.

@@ -2,6 +2,7 @@
 #define qsmpm_solvers_newton_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <qsmpm/base/parameter_struct.h>
 #include <string>
 
 namespace qsmpm
@@ -10,9 +11,10 @@ namespace qsmpm
 
   /**
    * The subsection "Nonlinear solver": Newton's method of paper Appendix A.1
-   * with GMRES (A.2) on the finite-difference Jacobian (A.3-A.4).
+   * with GMRES (A.2) on the finite-difference Jacobian (A.3-A.4). The
+   * initializers are the defaults of the entries.
    */
-  struct NewtonParameters
+  struct NewtonParameters : ParameterStruct<NewtonParameters>
   {
     /// gamma of the stopping test ||R_n|| <= gamma max(floor, ||R_0||).
     double tolerance = 1e-6;
@@ -44,10 +46,9 @@ namespace qsmpm
     /// solver).
     bool verbose = false;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declare the entries, bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 } // namespace qsmpm
 
