@@ -26,6 +26,7 @@
 //    tolerances (1e-3 for Newton and GMRES) every step needs 1 or 2 Newton
 //    iterations.
 // The reaction and the points' L2 norms are printed to stdout.
+#include "fem_reference.h"
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -107,33 +108,10 @@ struct FEMReference
     solution.reinit(dof_handler.n_dofs());
 
     const QIterated<dim> quadrature(QMidpoint<1>(), points_per_direction);
-    FEValues<dim>        fe_values(
-      fe, quadrature, update_values | update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    const unsigned int                   m = fe.dofs_per_cell;
-    FullMatrix<double>                   K_cell(m, m);
-    Vector<double>                       f_cell(m);
-    std::vector<types::global_dof_index> dofs(m);
-    Tensor<1, dim>                       weight;
+    Tensor<1, dim>       weight;
     weight[1] = -2.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        K_cell = 0;
-        f_cell = 0;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          for (unsigned int i = 0; i < m; ++i)
-            {
-              const auto eps_i = fe_values[u].symmetric_gradient(i, q);
-              for (unsigned int j = 0; j < m; ++j)
-                K_cell(i, j) += eps_i * C *
-                                fe_values[u].symmetric_gradient(j, q) *
-                                fe_values.JxW(q);
-              f_cell(i) += fe_values[u].value(i, q) * weight * fe_values.JxW(q);
-            }
-        cell->get_dof_indices(dofs);
-        constraints.distribute_local_to_global(K_cell, f_cell, dofs, K, f);
-      }
+    FEM::assemble_elasticity(
+      dof_handler, quadrature, C, weight, constraints, K, f);
     // The point load on the dofs of its node (once).
     bool found = false;
     for (const auto &cell : dof_handler.active_cell_iterators())

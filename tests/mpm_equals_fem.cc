@@ -7,6 +7,7 @@
 // a traction on the right and a body force. Tolerance 1e-8 relative: the
 // JFNK solve is converged to 1e-12, so only round-off and the
 // finite-difference Jacobian limit the agreement.
+#include "fem_reference.h"
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -84,47 +85,32 @@ fem_solution(const DoFHandler<dim>         &dof_handler,
   SparseMatrix<double> K(sparsity);
   Vector<double>       f(dof_handler.n_dofs()), solution(dof_handler.n_dofs());
 
-  const QGauss<dim>                    quadrature(2);
-  const QGauss<dim - 1>                face_quadrature(2);
-  FEValues<dim>                        fe_values(fe,
-                          quadrature,
-                          update_values | update_gradients | update_JxW_values);
-  FEFaceValues<dim>                    fe_face(fe,
+  const QGauss<dim>     quadrature(2);
+  const QGauss<dim - 1> face_quadrature(2);
+  FEFaceValues<dim>     fe_face(fe,
                             face_quadrature,
                             update_values | update_JxW_values);
-  const unsigned int                   n = fe.dofs_per_cell;
-  FullMatrix<double>                   K_cell(n, n);
-  Vector<double>                       f_cell(n);
-  std::vector<types::global_dof_index> dofs(n);
-  for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      fe_values.reinit(cell);
-      K_cell = 0;
-      f_cell = 0;
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const auto eps_i = fe_values[u].symmetric_gradient(i, q);
-            for (unsigned int j = 0; j < n; ++j)
-              K_cell(i, j) += eps_i * C *
-                              fe_values[u].symmetric_gradient(j, q) *
-                              fe_values.JxW(q);
-            f_cell(i) +=
-              fe_values[u].value(i, q) * body_force<dim>() * fe_values.JxW(q);
-          }
-      for (const unsigned int face : cell->face_indices())
-        if (cell->face(face)->at_boundary() &&
-            cell->face(face)->boundary_id() == 1)
-          {
-            fe_face.reinit(cell, face);
-            for (const unsigned int q : fe_face.quadrature_point_indices())
-              for (unsigned int i = 0; i < n; ++i)
-                f_cell(i) +=
-                  fe_face[u].value(i, q) * traction<dim>() * fe_face.JxW(q);
-          }
-      cell->get_dof_indices(dofs);
-      constraints.distribute_local_to_global(K_cell, f_cell, dofs, K, f);
-    }
+  // The traction on boundary 1.
+  const auto tractions = [&](const auto &cell, Vector<double> &f_cell) {
+    for (const unsigned int face : cell->face_indices())
+      if (cell->face(face)->at_boundary() &&
+          cell->face(face)->boundary_id() == 1)
+        {
+          fe_face.reinit(cell, face);
+          for (const unsigned int q : fe_face.quadrature_point_indices())
+            for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+              f_cell(i) +=
+                fe_face[u].value(i, q) * traction<dim>() * fe_face.JxW(q);
+        }
+  };
+  FEM::assemble_elasticity<dim>(dof_handler,
+                                quadrature,
+                                C,
+                                body_force<dim>(),
+                                constraints,
+                                K,
+                                f,
+                                tractions);
   SparseDirectUMFPACK direct;
   direct.initialize(K);
   direct.vmult(solution, f);
