@@ -114,7 +114,7 @@ main()
   check_that("... allowed at the last cut-back", resumed.allow_limit());
   check_that("3 cut-backs: dissipation and forward limit / 8, backward "
              "range 10 x 1e-4",
-             std::abs(resumed.dissipation_target() - 0.02 / 8.) < 1e-15 &&
+             std::abs(resumed.constraint_target() - 0.02 / 8.) < 1e-15 &&
                std::abs(resumed.increment_limit() - 1e-4 / 8.) < 1e-15 &&
                std::abs(resumed.backward_limit() - 1e-3) < 1e-15);
 }

@@ -430,27 +430,26 @@ namespace qsmpm
 
   template <int dim>
   bool
-  QuasiStaticProblem<dim>::advance_path_following(const double  t_old,
-                                                  const bool    allow_limit,
-                                                  const double  dissipation,
-                                                  const double  limit,
-                                                  const double  back_limit,
-                                                  const double  peak_force,
-                                                  NewtonReport &report,
-                                                  double       &t_new,
-                                                  double       &force_new)
+  QuasiStaticProblem<dim>::advance_path_following(const LoadStepper &stepper,
+                                                  NewtonReport      &report,
+                                                  double            &t_new,
+                                                  double            &force_new)
   {
+    const std::string &control = stepper.control();
+    const double       t_old   = stepper.current();
     // Path following scales the prescribed displacements with the unknown
     // load factor; loads that are functions of t would need their own
-    // scaling, and the dissipation formula assumes that the prescribed
-    // displacements are the only work-conjugate of the load factor.
+    // scaling, and the generalized force (the sign guard) assumes that the
+    // prescribed displacements are the only work-conjugate of the load
+    // factor.
     AssertThrow(!bcs.has_loads() && !bcs.has_macroscopic_gradient(),
-                ExcMessage("Load stepping: Control = dissipation needs a "
-                           "problem loaded by prescribed displacements only "
-                           "(no body force, traction, point load or "
-                           "macroscopic displacement gradient)."));
+                ExcMessage("Load stepping: Control = " + control +
+                           " needs a problem loaded by prescribed "
+                           "displacements only (no body force, traction, "
+                           "point load or macroscopic displacement "
+                           "gradient)."));
 
-    AssertThrow(model->computes_dissipation(),
+    AssertThrow(control != "dissipation" || model->computes_dissipation(),
                 ExcMessage("Load stepping: Control = dissipation needs a "
                            "material model that computes its dissipation; <" +
                            model->name() + "> does not."));
@@ -462,14 +461,14 @@ namespace qsmpm
     g = 0.;
     step_constraints.distribute(g);
     AssertThrow(g.linfty_norm() > 0.,
-                ExcMessage("Load stepping: Control = dissipation needs a "
-                           "displacement condition that changes with the "
-                           "load factor; none does."));
+                ExcMessage("Load stepping: Control = " + control +
+                           " needs a displacement condition that changes "
+                           "with the load factor; none does."));
     if (!proportionality_checked)
       {
-        // Delta D = (F_0 Delta t - Delta F t_0) / 2 holds for prescribed
-        // displacements t g; with another dependence on t the dissipation
-        // would be wrong without any sign of it.
+        // The increments of a step are Delta lambda g only if the
+        // prescribed displacements are t g; with another dependence on t
+        // the step would be wrong without any sign of it.
         AffineConstraints<double> doubled;
         make_step_constraints(t_old, t_old + 2., doubled);
         double mismatch = 0.;
@@ -480,12 +479,28 @@ namespace qsmpm
                        std::abs(doubled.get_inhomogeneity(i) - 2. * g[i]));
         mismatch = dealii::Utilities::MPI::max(mismatch, communicator);
         AssertThrow(mismatch <= 1e-10 * g.linfty_norm(),
-                    ExcMessage("Load stepping: Control = dissipation needs "
-                               "prescribed displacements proportional to "
-                               "the load factor t (u = t g(x))."));
+                    ExcMessage("Load stepping: Control = " + control +
+                               " needs prescribed displacements "
+                               "proportional to the load factor t (u = t "
+                               "g(x))."));
         // (make_step_constraints() also recorded the dofs of the reactions
         // again: the same ones.)
         proportionality_checked = true;
+      }
+
+    // The opening of the gauge as a function of du, for this step's shape
+    // functions.
+    VectorType w;
+    if (control == "opening")
+      {
+        if (!gauge)
+          gauge = std::make_unique<OpeningGauge<dim>>(
+            stepper.get_parameters().opening_gauge);
+        w.reinit(du);
+        gauge->make_vector(cache,
+                           points().get_offsets().displacement,
+                           communicator,
+                           w);
       }
 
     double delta_lambda = 0.;
@@ -494,11 +509,21 @@ namespace qsmpm
       const StepOperator<dim> op(*residual, step_constraints, preconditioner);
       using Solver = PathFollowingNewton<StepOperator<dim>, VectorType>;
       const Solver newton(prm_values.nonlinear_solver, &progress);
-      // The energy the points dissipate in the step (see
-      // PathFollowingNewton for why not the global formula of Gutierrez).
-      const typename Solver::Constraint constraint{0., 0., 1., dissipation};
+      // Either the energy the points dissipate in the step (see
+      // PathFollowingNewton for why not the global formula of Gutierrez)
+      // or the opening of the gauge.
+      typename Solver::Constraint constraint{0., 0., 0., 0.};
+      constraint.value = stepper.constraint_target();
+      if (control == "opening")
+        {
+          constraint.gauge        = &w;
+          constraint.gauge_weight = 1.;
+        }
+      else
+        constraint.dissipation_weight = 1.;
       // The load keeps the sign of its peak, up to 1e-3 of the peak (the
       // noise of a converged step in the tail is far below that).
+      const double                      peak_force = stepper.peak_force();
       const typename Solver::ForceGuard guard{peak_force > 0. ?
                                                 1. :
                                                 (peak_force < 0. ? -1. : 0.),
@@ -506,9 +531,9 @@ namespace qsmpm
       report = newton.solve(op,
                             g,
                             constraint,
-                            limit,
-                            back_limit,
-                            allow_limit,
+                            stepper.increment_limit(),
+                            stepper.backward_limit(),
+                            stepper.allow_limit(),
                             du,
                             delta_lambda,
                             R,
@@ -588,6 +613,11 @@ namespace qsmpm
       progress << "resumed from the checkpoint of step " << stepper.step()
                << ", t = " << stepper.current() << std::endl;
 
+    // A malformed gauge stops the run before any output.
+    if (stepper.control() == "opening")
+      gauge = std::make_unique<OpeningGauge<dim>>(
+        stepper.get_parameters().opening_gauge);
+
     if (!from_checkpoint && writer.fields_due(0))
       {
         TimerOutput::Scope scope(timer_output, "output");
@@ -602,21 +632,14 @@ namespace qsmpm
         double       t_new = stepper.target(), force_new = 0.;
         const bool   converged =
           stepper.path_following() ?
-              advance_path_following(t_old,
-                                   stepper.allow_limit(),
-                                   stepper.dissipation_target(),
-                                   stepper.increment_limit(),
-                                   stepper.backward_limit(),
-                                   stepper.peak_force(),
-                                   newton,
-                                   t_new,
-                                   force_new) :
+              advance_path_following(stepper, newton, t_new, force_new) :
               advance(t_old, t_new, newton);
         if (!converged)
           {
             progress << "  step " << stepper.step() + 1 << ": t = " << t_old;
             if (stepper.path_following())
-              progress << ", dissipation " << stepper.dissipation_target();
+              progress << ", " << stepper.control() << " "
+                       << stepper.constraint_target();
             else
               progress << " -> " << t_new;
             progress << " failed (" << newton.failure << "), cutting back"

@@ -52,10 +52,12 @@ namespace qsmpm
       prm.add_parameter("Maximum increment",
                         max_increment,
                         "Largest |increment| reached by growth; 0: no "
-                        "limit but the final load factor. With <Control> = "
-                        "dissipation: the largest increment of a step (an "
-                        "elastic step takes it under displacement control); "
-                        "0: the nominal increment final / K.",
+                        "limit but the final load factor. With path "
+                        "following (<Control> = dissipation or opening): "
+                        "the largest increment of a step (a step that "
+                        "cannot meet its constraint below it takes it under "
+                        "displacement control); 0: the nominal increment "
+                        "final / K.",
                         Patterns::Double(0.));
       prm.add_parameter(
         "Control",
@@ -67,15 +69,32 @@ namespace qsmpm
         "(Gutierrez 2004; Verhoosel, Remmers and Gutierrez 2009), so that "
         "snap-backs are traced; steps that would need more than <Maximum "
         "increment> are displacement-controlled. Needs a model that "
-        "computes its dissipation (decohesion), displacement conditions "
-        "proportional to t and no other loads.",
-        Patterns::Selection("displacement|dissipation"));
+        "computes its dissipation (decohesion). opening: path following "
+        "in which each step opens the <Opening gauge> by <Opening "
+        "increment> (crack-mouth opening displacement control). Both need "
+        "displacement conditions proportional to t and no other loads.",
+        Patterns::Selection("displacement|dissipation|opening"));
       prm.add_parameter("Dissipation increment",
                         dissipation_increment,
                         "With <Control> = dissipation: the energy the "
                         "material points dissipate in each step (in 2D per "
                         "unit thickness, J/m).",
                         Patterns::Double(0.));
+      prm.add_parameter("Opening increment",
+                        opening_increment,
+                        "With <Control> = opening: the increase of the "
+                        "gauge's opening in each step (a length).",
+                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Opening gauge",
+        opening_gauge,
+        "With <Control> = opening: two positions x_a; x_b (dim "
+        "coordinates each, separated by ';', e.g. -0.01,0.3; 0.01,0.3). The "
+        "gauge is the pair of material points that were nearest to them "
+        "at the start of the run, and its opening is the increase of "
+        "(u_b - u_a) . (x_b - x_a)/|x_b - x_a|, u the points' "
+        "displacements.",
+        Patterns::Anything());
     }
     prm.leave_subsection();
   }
@@ -94,22 +113,39 @@ namespace qsmpm
                            ">= 1."));
     if (path_following())
       {
-        AssertThrow(parameters.dissipation_increment > 0.,
-                    ExcMessage("Load stepping: <Dissipation increment> must "
-                               "be > 0 with Control = dissipation."));
+        const std::string &name = parameters.control;
+        AssertThrow(name == "dissipation" || name == "opening",
+                    ExcMessage("Load stepping: unknown <Control> = " + name +
+                               "."));
+        const std::string entry =
+          name == "dissipation" ? "Dissipation increment" : "Opening increment";
+        nominal_target = name == "dissipation" ?
+                           parameters.dissipation_increment :
+                           parameters.opening_increment;
+        AssertThrow(nominal_target > 0.,
+                    ExcMessage("Load stepping: <" + entry +
+                               "> must be > 0 with Control = " + name + "."));
         AssertThrow(parameters.growth_factor == 1.,
                     ExcMessage("Load stepping: <Increment growth factor> "
-                               "must be 1 with Control = dissipation (the "
-                               "step size follows from the dissipation)."));
+                               "must be 1 with Control = " +
+                               name +
+                               " (the step size follows from the "
+                               "constraint)."));
         AssertThrow(parameters.final_load_factor > 0.,
                     ExcMessage("Load stepping: <Final load factor> must be "
-                               "> 0 with Control = dissipation."));
-        AssertThrow(parameters.control == "dissipation",
-                    ExcMessage("Load stepping: unknown <Control> = " +
-                               parameters.control + "."));
-        increment   = increment_cap();
-        dissipation = parameters.dissipation_increment;
+                               "> 0 with Control = " +
+                               name + "."));
+        increment    = increment_cap();
+        target_value = nominal_target;
       }
+  }
+
+
+
+  const LoadStepper::Parameters &
+  LoadStepper::get_parameters() const
+  {
+    return parameters;
   }
 
 
@@ -131,10 +167,18 @@ namespace qsmpm
 
 
 
-  double
-  LoadStepper::dissipation_target() const
+  const std::string &
+  LoadStepper::control() const
   {
-    return dissipation;
+    return parameters.control;
+  }
+
+
+
+  double
+  LoadStepper::constraint_target() const
+  {
+    return target_value;
   }
 
 
@@ -189,9 +233,9 @@ namespace qsmpm
       F_peak = force_new;
     F = force_new;
     ++n_steps;
-    cut_backs   = 0;
-    increment   = increment_cap();
-    dissipation = parameters.dissipation_increment;
+    cut_backs    = 0;
+    increment    = increment_cap();
+    target_value = nominal_target;
   }
 
 
@@ -276,7 +320,7 @@ namespace qsmpm
       }
     ++cut_backs;
     increment *= parameters.cut_back_factor;
-    dissipation *= parameters.cut_back_factor;
+    target_value *= parameters.cut_back_factor;
   }
 
 
@@ -299,8 +343,8 @@ namespace qsmpm
   {
     out << std::setprecision(std::numeric_limits<double>::max_digits10) << t
         << ' ' << increment << ' ' << n_steps;
-    // Path following needs the force of the last step for the dissipation
-    // of the next one, and whether it went back (allow_limit()).
+    // Path following needs the peak force (the sign guard) and whether
+    // the last step went back (allow_limit()).
     if (path_following())
       out << ' ' << F << ' ' << went_back << ' ' << F_peak;
   }

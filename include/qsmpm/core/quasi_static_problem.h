@@ -17,6 +17,7 @@
 #include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
+#include <qsmpm/loading/opening_gauge.h>
 #include <qsmpm/loading/reaction_forces.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/materials/constitutive_model.h>
@@ -152,25 +153,21 @@ namespace qsmpm
 
     /**
      * One attempt at a step of path following (Load stepping/Control =
-     * dissipation) from load factor @p t_old: the load factor is an
-     * unknown, and the step dissipates @p dissipation, or, if that needs a
-     * larger increment and @p allow_limit, goes to t_old + @p limit (see
-     * PathFollowingNewton); it may go back by at most @p back_limit, and its
-     * load must keep the sign of @p peak_force (up to 1e-3 of it). If Newton
-     * converges, commit it, set @p t_new and @p force_new (the generalized
-     * force, the work-conjugate of the load factor) and return true; otherwise
-     * leave every point untouched and return false.
+     * dissipation or opening) from the load factor of @p stepper: the load
+     * factor is an unknown, and the step dissipates, or opens the gauge by,
+     * stepper.constraint_target(), or, if that needs a larger increment
+     * and stepper.allow_limit(), goes to the increment_limit() (see
+     * PathFollowingNewton); it may go back by at most backward_limit(), and
+     * its load must keep the sign of peak_force() (up to 1e-3 of it). If
+     * Newton converges, commit it, set @p t_new and @p force_new (the
+     * generalized force, the work-conjugate of the load factor) and return
+     * true; otherwise leave every point untouched and return false.
      */
     bool
-    advance_path_following(const double  t_old,
-                           const bool    allow_limit,
-                           const double  dissipation,
-                           const double  limit,
-                           const double  back_limit,
-                           const double  peak_force,
-                           NewtonReport &report,
-                           double       &t_new,
-                           double       &force_new);
+    advance_path_following(const LoadStepper &stepper,
+                           NewtonReport      &report,
+                           double            &t_new,
+                           double            &force_new);
 
     /// Reports of the accepted steps of run().
     const std::vector<StepReport> &
@@ -249,6 +246,8 @@ namespace qsmpm
     /// Whether path following has checked that the prescribed
     /// displacements are proportional to the load factor.
     bool proportionality_checked = false;
+    /// With Control = opening: the gauge (made by run()).
+    std::unique_ptr<OpeningGauge<dim>> gauge;
 
     MPI_Comm                                  communicator;
     ConditionalOStream                        progress;

@@ -39,6 +39,13 @@ namespace qsmpm
    * displacement control instead. The stepper then hands out the target
    * dissipation and the largest increment, both cut back by a failed
    * attempt, and accept(t, force) records where the step ended.
+   *
+   * <tt>Control = opening</tt> is path following as well, with a linear
+   * constraint instead: each step opens a gauge between two material
+   * points ("Opening gauge", e.g. across the mouth of a notch) by "Opening
+   * increment" (crack-mouth opening displacement control, the way
+   * softening fracture tests are run in the laboratory). The opening grows
+   * monotonically also where the load-point displacement snaps back.
    */
   class LoadStepper
   {
@@ -59,10 +66,15 @@ namespace qsmpm
       /// Largest |increment| when growing; 0 = no limit. With dissipation
       /// control: largest increment of a step, 0 = the nominal one.
       double max_increment = 0.;
-      /// "displacement" (the paper's) or "dissipation" (path following).
+      /// "displacement" (the paper's), "dissipation" or "opening" (path
+      /// following).
       std::string control = "displacement";
       /// Energy dissipated per step with dissipation control.
       double dissipation_increment = 0.;
+      /// Opening of the gauge per step with opening control.
+      double opening_increment = 0.;
+      /// With opening control: the gauge, "x_a; x_b" (see OpeningGauge).
+      std::string opening_gauge = "";
 
       /// Declare the entries, bound to the members.
       void
@@ -70,6 +82,10 @@ namespace qsmpm
     };
 
     explicit LoadStepper(const Parameters &parameters);
+
+    /// The parameters the stepper was made with.
+    const Parameters &
+    get_parameters() const;
 
     /// Whether the final load factor has been reached.
     bool
@@ -99,13 +115,18 @@ namespace qsmpm
     reject(const std::string &reason);
 
     /// Whether the load factor is an unknown of each step (Control =
-    /// dissipation).
+    /// dissipation or opening).
     bool
     path_following() const;
 
-    /// With path following: the energy the next attempt must dissipate.
+    /// The entry Control: "displacement", "dissipation" or "opening".
+    const std::string &
+    control() const;
+
+    /// With path following: what the next attempt must dissipate (Control
+    /// = dissipation) or open the gauge by (Control = opening).
     double
-    dissipation_target() const;
+    constraint_target() const;
 
     /// With path following: the largest load-factor increment of the next
     /// attempt.
@@ -115,8 +136,8 @@ namespace qsmpm
     /**
      * With path following: the largest decrease of the load factor in one
      * step, ten times the uncut increment limit. It is not cut back with
-     * the dissipation: a snap-back needs the same step back however small
-     * the energy of the step.
+     * the target: a snap-back needs the same step back however small
+     * the energy (or opening) of the step.
      */
     double
     backward_limit() const;
@@ -178,9 +199,11 @@ namespace qsmpm
     double           increment = 0.;
     unsigned int     n_steps   = 0;
     unsigned int     cut_backs = 0;
-    /// Path following: the cut-back target dissipation and the force.
-    double dissipation = 0.;
-    double F           = 0.;
+    /// Path following: the nominal and the cut-back target of a step's
+    /// constraint (dissipation or opening), and the force.
+    double nominal_target = 0.;
+    double target_value   = 0.;
+    double F              = 0.;
     /// Path following: the last accepted step decreased the load factor.
     bool went_back = false;
     /// Path following: the force of largest magnitude so far.

@@ -20,13 +20,17 @@ namespace qsmpm
    * unit change of the load factor, and one more equation, the path
    * constraint
    *
-   *   phi(du, Delta lambda) = a Delta lambda + b F(du) + c D(du) - d = 0,
+   *   phi(du, Delta lambda) = a Delta lambda + b F(du) + c D(du)
+   *                           + e w . du - d = 0,
    *
    * fixes Delta lambda. F(du) = -g . R(du) is the generalized force, the
    * work-conjugate of the load factor (the reaction on the constrained
    * rows of the residual, weighted with g), D(du) the energy the points
    * dissipate in the step (Operator::dissipation() after a residual
-   * evaluation; ConstitutiveModel::dissipation()). The dissipation-based
+   * evaluation; ConstitutiveModel::dissipation()), w . du a linear
+   * function of the increment, e.g. the opening of a gauge across a crack
+   * (crack-mouth opening displacement control: c = 0, e = 1, d = the
+   * opening increment; de Borst 1987). The dissipation-based
    * constraint of Gutierrez (2004) for a prescribed displacement is of this
    * form: the energy dissipated in a step, for a material that unloads
    * secantly, is
@@ -82,6 +86,14 @@ namespace qsmpm
       double force_weight;
       double dissipation_weight;
       double value;
+      /**
+       * Optional linear term gauge_weight (w . du): the opening of a gauge
+       * between two material points (crack-mouth opening control), w the
+       * vector that maps the grid increment to it (OpeningGauge). Its
+       * derivatives are exact (w . v), without residual evaluations.
+       */
+      const VectorType *gauge        = nullptr;
+      double            gauge_weight = 0.;
     };
 
     /**
@@ -142,7 +154,7 @@ namespace qsmpm
       op.residual(du, R);
       force       = -(g * R);
       double norm = internal::free_norm(op, R, rhs);
-      double phi  = constraint_value(constraint, delta_lambda, force, op);
+      double phi  = constraint_value(constraint, delta_lambda, du, force, op);
       report.initial_residual = norm;
       report.residual_history.push_back(norm);
       // The stopping test of NewtonKrylov relative to the residual of the
@@ -163,8 +175,8 @@ namespace qsmpm
             }
           if (n > 0 && norm <= target && at_limit && !allow_limit)
             {
-              report.failure = "the dissipation cannot be reached with the "
-                               "largest increment";
+              report.failure = "the path constraint cannot be met with "
+                               "the largest increment";
               return report;
             }
           if (n > 0 && norm <= target &&
@@ -193,7 +205,7 @@ namespace qsmpm
 
           // dR/dlambda: the response of the full residual to the prescribed
           // increments, and the generalized force's share of it.
-          const double psi = measure(constraint, g, R, op);
+          const double psi = measure(constraint, g, du, R, op);
           J.vmult(rhs, g);
           rhs *= -1.;
           unsigned int iterations = solve_linear(op, J, rhs, y, report);
@@ -271,7 +283,7 @@ namespace qsmpm
           du = trial;
           delta_lambda += alpha * d_lambda;
           force = -(g * R);
-          phi   = constraint_value(constraint, delta_lambda, force, op);
+          phi   = constraint_value(constraint, delta_lambda, du, force, op);
           report.newton_iterations = n + 1;
           report.residual_history.push_back(norm);
 
@@ -297,32 +309,43 @@ namespace qsmpm
     }
 
   private:
-    /// phi at the state of the last op.residual() with force @p force.
+    /// phi at @p du, the state of the last op.residual(), with force
+    /// @p force.
     static double
     constraint_value(const Constraint &c,
                      const double      delta_lambda,
+                     const VectorType &du,
                      const double      force,
                      const Operator   &op)
     {
       return c.load_factor_weight * delta_lambda + c.force_weight * force +
              (c.dissipation_weight != 0. ?
                 c.dissipation_weight * op.dissipation() :
-                0.) -
-             c.value;
+                0.) +
+             gauge_term(c, du) - c.value;
     }
 
-    /// psi = b F + c D at the state of the last op.residual(), which gave
-    /// @p R.
+    /// e w . du.
+    static double
+    gauge_term(const Constraint &c, const VectorType &du)
+    {
+      return c.gauge != nullptr ? c.gauge_weight * (*c.gauge * du) : 0.;
+    }
+
+    /// psi = b F + c D + e w . du at @p du, the state of the last
+    /// op.residual(), which gave @p R.
     static double
     measure(const Constraint &c,
             const VectorType &g,
+            const VectorType &du,
             const VectorType &R,
             const Operator   &op)
     {
       return (c.force_weight != 0. ? -c.force_weight * (g * R) : 0.) +
              (c.dissipation_weight != 0. ?
                 c.dissipation_weight * op.dissipation() :
-                0.);
+                0.) +
+             gauge_term(c, du);
     }
 
     /**
@@ -344,6 +367,9 @@ namespace qsmpm
                VectorType       &scratch) const
     {
       (void)R;
+      // A constraint linear in du needs no residual evaluation.
+      if (constraint.force_weight == 0. && constraint.dissipation_weight == 0.)
+        return gauge_term(constraint, v);
       const double v_norm = v.l2_norm();
       if (v_norm == 0.)
         return 0.;
@@ -353,7 +379,7 @@ namespace qsmpm
       VectorType perturbed(du);
       perturbed.add(h, v);
       op.residual(perturbed, scratch);
-      return (measure(constraint, g, scratch, op) - psi) / h;
+      return (measure(constraint, g, perturbed, scratch, op) - psi) / h;
     }
 
     /// GMRES as in NewtonKrylov (right preconditioning); returns its
