@@ -94,6 +94,7 @@ namespace CompactTension
   {
     double      stop_fraction;
     bool        to_complete_failure;
+    bool        end_at_final_load_factor;
     double      partial_failure_fraction;
     std::string plot_label;
 
@@ -117,6 +118,15 @@ namespace CompactTension
                         "then the whole work of fracture. The tail takes "
                         "load-point displacements of several mm: use "
                         "<Load stepping/Increment growth factor>.");
+      prm.declare_entry("End at final load factor",
+                        "false",
+                        Patterns::Bool(),
+                        "true: a run that reaches <Load stepping/Final load "
+                        "factor> before its end criterion (fraction of the "
+                        "peak or complete failure) ends there normally, "
+                        "with the energy balance at that load-point "
+                        "displacement; false: that is an error (the curve is "
+                        "incomplete).");
       prm.declare_entry("Partial failure at fraction of peak",
                         "0.5",
                         Patterns::Double(0., 1.),
@@ -134,8 +144,9 @@ namespace CompactTension
     parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Run");
-      stop_fraction       = prm.get_double("Stop below fraction of peak");
-      to_complete_failure = prm.get_bool("Run to complete failure");
+      stop_fraction            = prm.get_double("Stop below fraction of peak");
+      to_complete_failure      = prm.get_bool("Run to complete failure");
+      end_at_final_load_factor = prm.get_bool("End at final load factor");
       partial_failure_fraction =
         prm.get_double("Partial failure at fraction of peak");
       plot_label = prm.get("Label");
@@ -551,15 +562,18 @@ namespace CompactTension
   //
   // The run must have reached the end of the curve: if the load never fell
   // below the stop fraction, the load stepping ended first, and the
-  // energy balance of the summary would be meaningless. The point fields
-  // of the last step are written all the same, to see how far it got.
+  // energy balance of the summary would be meaningless -- unless the user
+  // asked for a curve up to the final load factor (<Run/End at final load
+  // factor>, e.g. a path-following run up to a chosen displacement). The
+  // point fields of the last step are written all the same, to see how far
+  // it got.
   template <int dim>
   void
   CompactTensionTest<dim>::write_results() const
   {
     if (!complete)
       write_point_csv(directory + "/points_final.csv");
-    AssertThrow(complete,
+    AssertThrow(complete || run_parameters.end_at_final_load_factor,
                 ExcMessage(
                   "compact_tension: " +
                   (run_parameters.to_complete_failure ?

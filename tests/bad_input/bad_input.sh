@@ -236,6 +236,14 @@ driver_case sliding_only "rigid-body motion" 1 \
 noconv=$'subsection Nonlinear solver\n set Maximum Newton iterations = 1\n set Tolerance = 1e-14\n set Residual floor = 0\n set Linear tolerance = 1e-2\nend\nsubsection Load stepping\n set Maximum cut-backs = 1\nend'
 driver_case not_converging "Maximum cut-backs" 1 "$noconv"
 driver_case not_converging_2_ranks "Maximum cut-backs" 2 "$noconv"
+# Opening control: a gauge of one position, a gauge of two equal ones, no
+# opening increment.
+driver_case opening_gauge_one_position "Opening gauge" 1 \
+  $'subsection Load stepping\n set Control = opening\n set Opening increment = 1e-3\n set Opening gauge = 0.5,0.5\nend'
+driver_case opening_gauge_same_positions "Opening gauge" 1 \
+  $'subsection Load stepping\n set Control = opening\n set Opening increment = 1e-3\n set Opening gauge = 0.5,0.5; 0.5,0.5\nend'
+driver_case opening_increment_zero "Opening increment" 1 \
+  $'subsection Load stepping\n set Control = opening\n set Opening gauge = 0.1,0.5; 0.9,0.5\nend'
 
 # ---------------------------------------------------------------------
 # compact_tension: b15.prm with 3 cm cells (a 13 x 10 grid) and its output
