@@ -5,7 +5,9 @@
 //   elastic until sigma_xx = tau_nf (initiation), then on the softening line
 //   sigma_xx = tau_nf (1 - w/u0) with w = (M eps - tau_nf)/(M/L_c -
 //   tau_nf/u0); unloading and reloading elastic at the current opening;
-//   complete failure at w = u0, after which sigma_xx <= 0 for good;
+//   complete failure at w = u0, after which sigma_xx <= 0 for good; the
+//   preconditioner's stiffness tangent() of a softening point is the secant
+//   of the band, sigma_xx / eps_xx;
 // - a stress state with principal directions at 30 degrees: with the
 //   principal-stress normal the crack normal is (cos 30, sin 30) and
 //   L_c = h cos 30; with the normal fixed to x the same state has
@@ -136,6 +138,15 @@ main()
   check("  softening: |sigma_yy - nu sigma_xx| / tau_nf",
         (p.stress[1][1] - nu * p.stress[0][0]) / tau,
         1e-12);
+  // The stiffness for the preconditioner: across a softening crack the
+  // secant of the band, here sigma_xx / eps_xx of the committed state.
+  check(
+    "  softening: |tangent_xxxx - sigma_xx / eps_xx| / M (secant)",
+    (model.tangent(
+       {p.strain, p.stress, ArrayView<const double>(p.state), 1.})[0][0][0][0] -
+     p.stress[0][0] / eps) /
+      M,
+    1e-12);
   // Unloading, into compression.
   const double sigma1 = p.stress[0][0];
   step(model, p, uniaxial(-2. * sigma1 / M));

@@ -300,13 +300,25 @@ namespace qsmpm
   SymmetricTensor<4, dim>
   Decohesion<dim>::tangent(const PointState<dim> &old) const
   {
-    if (old.state[opening_offset] < u0)
+    const double w = old.state[opening_offset];
+    if (w <= 0.)
       return C;
     Tensor<1, dim> n;
     for (unsigned int d = 0; d < dim; ++d)
       n[d] = old.state[normal_offset + d];
     const SymmetricTensor<2, dim> Cnn = C * symmetrize(outer_product(n, n));
-    return C - outer_product(Cnn, Cnn) / M;
+    if (w >= u0)
+      return C - outer_product(Cnn, Cnn) / M;
+    // A softening crack: the secant normal stiffness k of the crack band,
+    // the traction of the softening line tau_n = tau_nf (1 - w/u0) over the
+    // normal strain tau_n / M + w / L_c that carries it (elastic part and
+    // smeared opening), k / M = tau_n / (tau_n + M w / L_c). It falls from
+    // M at initiation to 0 at complete failure, where it meets the tangent
+    // above, and unlike the consistent tangent (negative across a loading
+    // crack) it keeps the matrix positive definite for AMG.
+    const double tau_n    = tau_nf * (1. - w / u0);
+    const double k_over_M = tau_n / (tau_n + M * w / smearing_length(n));
+    return C - (1. - k_over_M) * outer_product(Cnn, Cnn) / M;
   }
 
 

@@ -165,8 +165,10 @@ namespace qsmpm
     }
 
     /**
-     * The elastic stiffness, but with no normal stiffness across completely
-     * failed cracks (C - C:nn (x) nn:C / M), for preconditioning.
+     * For preconditioning: the elastic stiffness C, with the secant normal
+     * stiffness k across a softening crack, C - (1 - k/M) C:nn (x) nn:C / M,
+     * k / M = tau_n / (tau_n + M w / L_c), tau_n = tau_nf (1 - w/u0), and no
+     * normal stiffness across a completely failed one (k = 0).
      */
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;
