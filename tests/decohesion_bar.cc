@@ -35,9 +35,9 @@
 // - energy per unit area, h/2 against h, 3 %: without crack-band scaling
 //   the energy scales with h, 100 % apart; 2 x 2 against 1 point, 2 %: a
 //   smearing length of the point size h/2 would halve it.
+#include "softening_bar.h"
 #include "tests.h"
 
-#include <deal.II/base/function.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
 #include <qsmpm/materials/decohesion.h>
@@ -49,48 +49,13 @@ namespace
   const double E = 1000., tau = 1., G_f = 0.005, L = 1.;
   const double u0 = 2. * G_f / tau;
 
-  /// u_x = t.
-  class Pull : public Function<2>
-  {
-  public:
-    Pull()
-      : Function<2>(2)
-    {
-    }
-    double
-    value(const Point<2> &, const unsigned int c) const override
-    {
-      return c == 0 ? get_time() : 0.;
-    }
-  };
-
   LoadDisplacementCurve
   run_bar(const unsigned int n_cells, const unsigned int points_per_direction)
   {
-    const double          h = L / n_cells;
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     problem.pcout().set_condition(false);
-    problem.grid().make_box(Point<2>(), Point<2>(L, h), {{n_cells, 1}});
-    Tensor<1, 2> x_normal;
-    x_normal[0] = 1.;
-    auto model =
-      std::make_unique<Decohesion<2>>(E, 0., true, tau, G_f, x_normal, h);
-    const double x_band = (n_cells / 2 + 0.5) * h;
-    model->set_crack_region(
-      [=](const Point<2> &x) { return std::abs(x[0] - x_band) < 0.5 * h; });
-    problem.set_model(std::move(model));
-    problem.points().fill([](const Point<2> &) { return true; },
-                          points_per_direction,
-                          MaterialPointSet<2>::Placement::regular);
-
-    auto               &bcs = problem.boundary_conditions();
-    std::array<bool, 2> x_only{{true, false}}, y_only{{false, true}};
-    const auto          zero = std::make_shared<Functions::ZeroFunction<2>>(2);
-    bcs.add_dirichlet_boundary(0, x_only, zero);
-    bcs.add_dirichlet_nodes(
-      "all y", [](const Point<2> &) { return true; }, y_only, zero);
-    const unsigned int right = bcs.dirichlet_conditions().size();
-    bcs.add_dirichlet_boundary(1, x_only, std::make_shared<Pull>());
+    const unsigned int right = make_softening_bar(
+      problem, E, tau, G_f, L, n_cells, points_per_direction);
 
     auto &prm                                  = problem.parameters();
     prm.nonlinear_solver.tolerance             = 1e-9;

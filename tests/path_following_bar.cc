@@ -55,9 +55,9 @@
 //   cells, so the gauge spans g = u_b - u_a more of elastic material than
 //   2h, an extra g sigma / E = (g/u0) s (tau_nf/E) u0 <= 0.4e-3 u0 here
 //   (g s <= 0.4 u0 on the branch, tau_nf / E = 1e-3; measured 4.1e-4 u0).
+#include "softening_bar.h"
 #include "tests.h"
 
-#include <deal.II/base/function.h>
 #include <iostream>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
@@ -70,24 +70,6 @@ namespace
   const double E = 1000., tau = 1., G_f = 0.005, L = 20.;
   const double u0 = 2. * G_f / tau;
 
-  /// u_x = t.
-  class Pull : public Function<2>
-  {
-  public:
-    Pull()
-      : Function<2>(2)
-    {
-    }
-    double
-    value(const Point<2> &, const unsigned int c) const override
-    {
-      return c == 0 ? get_time() : 0.;
-    }
-  };
-} // namespace
-
-namespace
-{
   /// The opening (u_b - u_a)_x of the material points at @p x_a and @p x_b
   /// (at most h/2 from them: the points move by a few u0).
   double
@@ -119,29 +101,11 @@ namespace
     deallog << "Control = " << control << std::endl;
     const unsigned int    n_cells = 20;
     const double          h = L / n_cells, A = h;
+    const double          x_band = (n_cells / 2 + 0.5) * h;
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     problem.pcout().set_condition(false);
-    problem.grid().make_box(Point<2>(), Point<2>(L, h), {{n_cells, 1}});
-    Tensor<1, 2> x_normal;
-    x_normal[0] = 1.;
-    auto model =
-      std::make_unique<Decohesion<2>>(E, 0., true, tau, G_f, x_normal, h);
-    const double x_band = (n_cells / 2 + 0.5) * h;
-    model->set_crack_region(
-      [=](const Point<2> &x) { return std::abs(x[0] - x_band) < 0.5 * h; });
-    problem.set_model(std::move(model));
-    problem.points().fill([](const Point<2> &) { return true; },
-                          1,
-                          MaterialPointSet<2>::Placement::regular);
-
-    auto               &bcs = problem.boundary_conditions();
-    std::array<bool, 2> x_only{{true, false}}, y_only{{false, true}};
-    const auto          zero = std::make_shared<Functions::ZeroFunction<2>>(2);
-    bcs.add_dirichlet_boundary(0, x_only, zero);
-    bcs.add_dirichlet_nodes(
-      "all y", [](const Point<2> &) { return true; }, y_only, zero);
-    const unsigned int right = bcs.dirichlet_conditions().size();
-    bcs.add_dirichlet_boundary(1, x_only, std::make_shared<Pull>());
+    const unsigned int right =
+      make_softening_bar(problem, E, tau, G_f, L, n_cells, 1);
 
     // Dissipation: 20 steps of G_f A / 20 on the softening branch; elastic
     // steps (and those after complete failure) of u0 / 20. Opening: steps
