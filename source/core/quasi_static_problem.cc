@@ -499,6 +499,7 @@ namespace qsmpm
         w.reinit(du);
         gauge->make_vector(cache,
                            points().get_offsets().displacement,
+                           background_grid.min_cell_size(),
                            communicator,
                            w);
       }

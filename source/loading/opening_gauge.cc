@@ -6,6 +6,7 @@
 #include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/opening_gauge.h>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,7 @@ namespace qsmpm
   OpeningGauge<dim>::find_point(const ShapeCache<dim> &cache,
                                 const unsigned int     displacement,
                                 const Point<dim>      &x,
+                                const double           max_distance,
                                 const MPI_Comm         communicator) const
   {
     // A point's initial position.
@@ -65,9 +67,17 @@ namespace qsmpm
     for (unsigned int p = 0; p < cache.n_points(); ++p)
       nearest = std::min(nearest, initial_position(p).distance(x));
     nearest = dealii::Utilities::MPI::min(nearest, communicator);
-    AssertThrow(std::isfinite(nearest),
-                ExcMessage("Load stepping: the <Opening gauge> finds no "
-                           "material points."));
+    if (!(nearest <= max_distance))
+      {
+        std::ostringstream message;
+        message << "Load stepping: the <Opening gauge> position " << x
+                << " has no material point within " << max_distance
+                << " (one cell); the nearest is "
+                << (std::isfinite(nearest) ? std::to_string(nearest) :
+                                             std::string("none"))
+                << " away. Place the gauge's ends inside the body.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
 
     // Points as near as the nearest up to round-off (X is x - u, which
     // changes in the last digits from step to step) are ties; of those, the
@@ -110,6 +120,7 @@ namespace qsmpm
   void
   OpeningGauge<dim>::make_vector(const ShapeCache<dim>         &cache,
                                  const unsigned int             displacement,
+                                 const double                   max_distance,
                                  const MPI_Comm                 communicator,
                                  TrilinosWrappers::MPI::Vector &w) const
   {
@@ -119,7 +130,8 @@ namespace qsmpm
     const std::pair<Point<dim>, double> ends[2] = {{x_a, -1.}, {x_b, 1.}};
     for (const auto &[x, sign] : ends)
       {
-        const unsigned int p = find_point(cache, displacement, x, communicator);
+        const unsigned int p =
+          find_point(cache, displacement, x, max_distance, communicator);
         if (p == numbers::invalid_unsigned_int)
           continue;
         unsigned int c = 0;

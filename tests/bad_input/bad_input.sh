@@ -244,6 +244,9 @@ driver_case opening_gauge_same_positions "Opening gauge" 1 \
   $'subsection Load stepping\n set Control = opening\n set Opening increment = 1e-3\n set Opening gauge = 0.5,0.5; 0.5,0.5\nend'
 driver_case opening_increment_zero "Opening increment" 1 \
   $'subsection Load stepping\n set Control = opening\n set Opening gauge = 0.1,0.5; 0.9,0.5\nend'
+# A gauge outside the body (the top is pulled, no body force).
+driver_case opening_gauge_outside "Opening gauge" 1 \
+  $'subsection Boundary conditions\n set Dirichlet boundaries = 2:xy, 3:y\n subsection Body force\n  set Function expression = 0; 0\n end\n subsection Displacement\n  set Function expression = 0; 0.01*t*y\n end\nend\nsubsection Load stepping\n set Control = opening\n set Opening increment = 1e-3\n set Opening gauge = 0.5,5; 0.5,6\nend'
 
 # ---------------------------------------------------------------------
 # compact_tension: b15.prm with 3 cm cells (a 13 x 10 grid) and its output

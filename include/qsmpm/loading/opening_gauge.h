@@ -54,11 +54,13 @@ namespace qsmpm
      * increment du of the step whose shape functions @p cache holds. @p w
      * must have the layout of du; it is overwritten. @p displacement: the
      * offset of the points' displacement u_p in their properties. Throws if
-     * there are no points. Collective.
+     * a position of the gauge has no point within @p max_distance (a
+     * gauge outside the body). Collective.
      */
     void
     make_vector(const ShapeCache<dim>         &cache,
                 const unsigned int             displacement,
+                const double                   max_distance,
                 const MPI_Comm                 communicator,
                 TrilinosWrappers::MPI::Vector &w) const;
 
@@ -73,6 +75,7 @@ namespace qsmpm
     find_point(const ShapeCache<dim> &cache,
                const unsigned int     displacement,
                const Point<dim>      &x,
+               const double           max_distance,
                const MPI_Comm         communicator) const;
 
     Point<dim>     x_a;
