@@ -9,6 +9,8 @@
 // tolerance. The second case, a von Mises block pressed beyond yield,
 // checks that "direct" also works where K (elastic at the committed state)
 // is only an approximation of the Jacobian: same reaction as with AMG.
+// Preconditioner = auto must take the direct factorization below its
+// threshold of dofs and AMG above.
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -44,7 +46,8 @@ struct Result
 Result
 solve(const std::string &preconditioner,
       const bool         plastic,
-      const unsigned int reuse_steps = 1)
+      const unsigned int reuse_steps      = 1,
+      const unsigned int direct_threshold = 20000)
 {
   constexpr int                dim = 2;
   qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
@@ -83,6 +86,7 @@ solve(const std::string &preconditioner,
   prm.nonlinear_solver.gmres_restart              = 200;
   prm.load_stepping.n_steps                       = plastic ? 8 : 1;
   prm.nonlinear_solver.preconditioner_reuse_steps = reuse_steps;
+  prm.nonlinear_solver.direct_threshold           = direct_threshold;
   prm.output.directory                            = "results";
   prm.output.interval                             = 0;
   problem.run();
@@ -132,6 +136,15 @@ main(int argc, char *argv[])
   check("  |du_direct - du_amg| / |du_amg|",
         difference.l2_norm() / amg.increment.l2_norm(),
         1e-6);
+  // Preconditioner = auto: direct up to the threshold of dofs (4290 here),
+  // amg above; told apart by the GMRES iterations as above.
+  check("  auto, threshold 20000: GMRES iterations per Newton step (direct)",
+        solve("auto", false).gmres_per_newton,
+        2.);
+  check_at_least(
+    "  auto, threshold 4000: GMRES iterations per Newton step (amg)",
+    solve("auto", false, 1, 4000).gmres_per_newton,
+    3.);
 
   deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain "
              "in 8 steps"

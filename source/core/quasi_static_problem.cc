@@ -199,8 +199,18 @@ namespace qsmpm
           points(),
           cache,
           prm_values.material_points.update_volumes);
-        preconditioner = Preconditioner<dim>(Preconditioner<dim>::parse_type(
-          prm_values.nonlinear_solver.preconditioner));
+        // auto: a direct factorization for small problems, where its cost
+        // is that of a few AMG set-ups and it needs no tuning; AMG above,
+        // where the fill-in of the factors grows faster than the dofs.
+        const auto &solver_prm = prm_values.nonlinear_solver;
+        std::string type       = solver_prm.preconditioner;
+        if (type == "auto")
+          type = background_grid.get_dof_handler().n_dofs() <=
+                     solver_prm.direct_threshold ?
+                   "direct" :
+                   "amg";
+        preconditioner =
+          Preconditioner<dim>(Preconditioner<dim>::parse_type(type));
         preconditioner_age = 0;
         if (preconditioner.needs_matrix())
           tangent.reinit(background_grid, points().get_formulation().gimp());

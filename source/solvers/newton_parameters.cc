@@ -48,8 +48,15 @@ namespace qsmpm
                         "multigrid with the rigid-body near-null space), or "
                         "direct (a sparse LU factorization by Amesos KLU on "
                         "one rank: for small problems, up to a few 10^4 "
-                        "dofs).",
-                        Patterns::Selection("none|jacobi|amg|direct"));
+                        "dofs), or auto (direct up to <Direct solver "
+                        "threshold> dofs, amg above).",
+                        Patterns::Selection("none|jacobi|amg|direct|auto"));
+      prm.add_parameter("Direct solver threshold",
+                        direct_threshold,
+                        "With <Preconditioner> = auto: the largest number of "
+                        "degrees of freedom for which the direct "
+                        "factorization is used instead of AMG.",
+                        Patterns::Integer(0));
       prm.add_parameter(
         "Preconditioner reuse steps",
         preconditioner_reuse_steps,

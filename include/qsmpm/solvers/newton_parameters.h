@@ -27,8 +27,11 @@ namespace qsmpm
     unsigned int gmres_restart         = 50;
     /// sqrt(eps_prec) of Kelley's difference parameter (A.4).
     double sqrt_eps_prec = 1e-7;
-    /// none, jacobi, amg or direct (see Preconditioner).
+    /// none, jacobi, amg, direct (see Preconditioner) or auto (direct up
+    /// to direct_threshold dofs, amg above).
     std::string preconditioner = "amg";
+    /// With preconditioner = auto: the largest number of dofs for direct.
+    unsigned int direct_threshold = 20000;
     /// Load steps a preconditioner may serve before it is rebuilt (1 = a
     /// new one every step, the default).
     unsigned int preconditioner_reuse_steps = 1;
