@@ -33,15 +33,6 @@ namespace qsmpm
 
 
   template <int dim>
-  const Tensor<1, dim> &
-  OpeningGauge<dim>::direction() const
-  {
-    return e;
-  }
-
-
-
-  template <int dim>
   unsigned int
   OpeningGauge<dim>::find_point(const ShapeCache<dim> &cache,
                                 const unsigned int     displacement,

@@ -64,10 +64,6 @@ namespace qsmpm
                 const MPI_Comm                 communicator,
                 TrilinosWrappers::MPI::Vector &w) const;
 
-    /// The direction e of the gauge.
-    const Tensor<1, dim> &
-    direction() const;
-
   private:
     /// The cache index of the point nearest to @p x in the initial
     /// configuration if this rank owns it, else invalid. Collective.
