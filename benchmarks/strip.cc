@@ -67,8 +67,8 @@ main(int argc, char *argv[])
                             2,
                             qsmpm::MaterialPointSet<2>::Placement::regular);
       const double rss_points = Benchmarks::resident_memory();
-      auto        &bcs = problem.boundary_conditions();
-      const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+      auto        &bcs        = problem.boundary_conditions();
+      const auto   zero       = std::make_shared<Functions::ZeroFunction<2>>(2);
       bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
       bcs.add_dirichlet_boundary(0, {{true, false}}, zero);
       bcs.add_dirichlet_boundary(1, {{true, false}}, zero);

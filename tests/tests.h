@@ -71,8 +71,8 @@ namespace qsmpm_tests
     if (std::getenv("QSMPM_VERBOSE") != nullptr &&
         (!Utilities::MPI::job_supports_mpi() ||
          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0))
-      std::cout << "value of " << what << ": " << std::setprecision(6)
-                << value << std::endl;
+      std::cout << "value of " << what << ": " << std::setprecision(6) << value
+                << std::endl;
   }
 
   /**
