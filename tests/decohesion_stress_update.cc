@@ -14,7 +14,13 @@
 //   sigma_xx = 1.2 cos^2 30 - 0.3 sin^2 30 = 0.825 tau_nf and does not crack;
 // - one increment gives the same state as many small ones (closed form);
 // - points outside the cracking region stay elastic;
-// - the local stability limit L_c < M u0 / tau_nf is enforced.
+// - the local stability limit L_c < M u0 / tau_nf is enforced;
+// - linear shear retention: the shear traction is (1 - w/u0) mu gamma
+//   whether shear or opening comes first, independent of the increments,
+//   zero at complete failure (and close to zero just before it, where
+//   abrupt retention still carries mu gamma); the dissipation summed to
+//   complete failure is G_f / L_c plus the elastic shear energy
+//   mu gamma^2 / 2; the preconditioner's shear stiffness is beta mu.
 //
 // Tolerance 1e-12 (relative to tau_nf, u0 or h): the updates are closed
 // form, so only round-off remains (measured <= 6e-14; strains of order
@@ -270,6 +276,97 @@ main()
     check_that("  L_c > M u0 / tau_nf is rejected with a message", thrown);
     check("  stability_limit() = M u0 / tau_nf, relative error",
           (model.stability_limit() - limit) / limit,
+          1e-12);
+  }
+
+  deallog << "Linear shear retention" << std::endl;
+  {
+    // Shear retention = linear: the shear traction across the crack is
+    // t_s = beta mu gamma, beta = max(0, 1 - w/u0), with gamma the band's
+    // engineering shear strain (2 eps_xy), whatever the order in which
+    // shear and opening were applied; abrupt retention keeps mu gamma until
+    // complete failure.
+    Decohesion<2> linear(E, nu, true, tau, G_f, x_normal, h);
+    linear.set_shear_retention(Decohesion<2>::ShearRetention::linear);
+    const double          mu    = E / (2. * (1. + nu));
+    const double          gamma = 0.5 * eps_i;
+    SymmetricTensor<2, 2> shear;
+    shear[0][1]      = 0.5 * gamma;
+    const auto w_lin = offset(linear, Decohesion<2>::crack_opening_name);
+    const auto D     = [&](const MaterialPoint &a, const MaterialPoint &b) {
+      return linear.dissipation(
+        {a.strain, a.stress, ArrayView<const double>(a.state), 1.},
+        ArrayView<const double>(b.state));
+    };
+
+    // Shear first (elastic), then opening in ten steps to complete failure
+    // (w / u0 = 0.15 after the first).
+    MaterialPoint a = make_point(linear, dealii::Point<2>());
+    step(linear, a, shear);
+    double dissipated = 0.;
+    for (unsigned int i = 0; i < 10; ++i)
+      {
+        MaterialPoint before = a;
+        step(linear, a, uniaxial(eps_i + 0.15 * u0 / L));
+        dissipated += D(before, a);
+        if (i == 0)
+          {
+            const double beta = 1. - a.state[w_lin] / u0;
+            check("  shear, then opening: |sigma_xy - beta mu gamma| / tau_nf",
+                  (a.stress[0][1] - beta * mu * gamma) / tau,
+                  1e-12);
+            check("  opening unaffected: |sigma_xx - tau_nf beta| / tau_nf",
+                  (a.stress[0][0] - tau * beta) / tau,
+                  1e-12);
+          }
+      }
+    check_at_least("  the crack has failed completely: w / u0",
+                   a.state[w_lin] / u0,
+                   1.);
+    check("  after complete failure: |sigma_xy| / tau_nf",
+          a.stress[0][1] / tau,
+          1e-12);
+    // All of the fracture energy and all of the elastic shear energy.
+    const double expected = G_f / L + 0.5 * mu * gamma * gamma;
+    check("  sum of dissipation() = G_f / L_c + mu gamma^2 / 2, relative",
+          (dissipated - expected) / expected,
+          1e-12);
+
+    // Opening first, then shear in one or in 50 increments.
+    MaterialPoint b = make_point(linear, dealii::Point<2>()), c;
+    step(linear, b, uniaxial(eps_i + 0.3 * u0 / L));
+    c = b;
+    step(linear, b, shear);
+    for (unsigned int i = 0; i < 50; ++i)
+      step(linear, c, shear / 50.);
+    const double beta = 1. - b.state[w_lin] / u0;
+    check("  opening, then shear: |sigma_xy - beta mu gamma| / tau_nf",
+          (b.stress[0][1] - beta * mu * gamma) / tau,
+          1e-12);
+    check("  one shear increment = 50: |sigma_one - sigma_many| / tau_nf",
+          (b.stress - c.stress).norm() / tau,
+          1e-12);
+    // Continuity at complete failure: just before it the traction is
+    // (1 - w/u0) mu gamma, small; abrupt retention still carries mu gamma.
+    MaterialPoint e = make_point(linear, dealii::Point<2>());
+    MaterialPoint f = make_point(model, dealii::Point<2>());
+    step(linear, e, shear);
+    step(model, f, shear);
+    // The strain at which w = 0.995 u0 on the softening line.
+    const SymmetricTensor<2, 2> near_failure =
+      uniaxial((0.995 * u0 * (M / L - tau / u0) + tau) / M);
+    step(linear, e, near_failure);
+    step(model, f, near_failure);
+    check_that("  near failure (w / u0 in (0.99, 1)): linear carries "
+               "|sigma_xy| <= 0.01 mu gamma, abrupt mu gamma",
+               e.state[w_lin] / u0 > 0.99 && e.state[w_lin] / u0 < 1. &&
+                 std::abs(e.stress[0][1]) <= 0.01 * mu * gamma &&
+                 std::abs(f.stress[0][1] - mu * gamma) < 1e-12 * tau);
+    // The preconditioner's tangent: the secant shear stiffness beta mu.
+    const auto T = linear.tangent(
+      {b.strain, b.stress, ArrayView<const double>(b.state), 1.});
+    check("  tangent: |C_xyxy - beta mu| / mu",
+          (T[0][1][0][1] - beta * mu) / mu,
           1e-12);
   }
 }

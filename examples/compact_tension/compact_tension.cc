@@ -521,28 +521,35 @@ namespace CompactTension
   //
   // The PVTU output holds every point field, including the normalized crack
   // opening $[[u_n]]/u_0$ and stresses $\sigma_{xx}/\tau_{nf}$,
-  // $\sigma_{yy}/\tau_{nf}$ that the decohesion model keeps for this purpose.
-  // For pictures without ParaView we also write these three fields of all
-  // points into a small CSV file at the three moments of the paper's
-  // Fig. 4. Each rank sends its points to rank 0, which writes the file.
+  // $\sigma_{yy}/\tau_{nf}$ that the decohesion model computes as output
+  // fields (from the committed opening and stress; they are not stored on
+  // the points). For pictures without ParaView we also write these three
+  // fields of all points into a small CSV file at the three moments of the
+  // paper's Fig. 4. Each rank sends its points to rank 0, which writes the
+  // file.
   template <int dim>
   void
   CompactTensionTest<dim>::write_point_csv(const std::string &filename) const
   {
-    const auto        &layout = problem.points().get_layout();
-    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
-                       sxx =
-                         layout.offset(Decohesion<dim>::sigma_xx_ratio_name),
-                       syy =
-                         layout.offset(Decohesion<dim>::sigma_yy_ratio_name);
-    std::vector<double> local;
-    for (const auto &particle : problem.points().get_particle_handler())
+    const auto    &points = problem.points();
+    PropertyLayout output_layout;
+    for (const auto &field : points.get_model().output_fields())
+      output_layout.add(field.name,
+                        field.n_components,
+                        PropertyLayout::Kind::scalar);
+    const unsigned int w = output_layout.offset(
+                         Decohesion<dim>::opening_ratio_name),
+                       sxx = output_layout.offset(
+                         Decohesion<dim>::sigma_xx_ratio_name),
+                       syy = output_layout.offset(
+                         Decohesion<dim>::sigma_yy_ratio_name);
+    std::vector<double> local, values(output_layout.size());
+    for (const auto &particle : points.get_particle_handler())
       {
-        const auto properties = particle.get_properties();
-        const auto x          = particle.get_location();
-        local.insert(
-          local.end(),
-          {x[0], x[1], properties[w], properties[sxx], properties[syy]});
+        points.compute_output_fields(particle, ArrayView<double>(values));
+        const auto x = particle.get_location();
+        local.insert(local.end(),
+                     {x[0], x[1], values[w], values[sxx], values[syy]});
       }
     const auto all = Utilities::MPI::gather(communicator, local, 0);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)

@@ -569,11 +569,17 @@ namespace CompactTension
     const MPI_Comm                 communicator) const
   {
     const auto        &layout = problem.points().get_layout();
-    const unsigned int w = layout.offset(Decohesion<dim>::opening_ratio_name),
+    const unsigned int w = layout.offset(Decohesion<dim>::crack_opening_name),
                        allowed =
                          layout.offset(Decohesion<dim>::crack_allowed_name),
-                       u_y    = problem.points().get_offsets().displacement + 1;
-    const auto initial_height = [&](const auto &particle) {
+                       u_y = problem.points().get_offsets().displacement + 1;
+    const auto *const decohesion =
+      dynamic_cast<const Decohesion<dim> *>(&problem.points().get_model());
+    AssertThrow(decohesion != nullptr,
+                ExcMessage("Compact tension: the material model must be "
+                           "<decohesion>."));
+    const double u0             = decohesion->critical_opening();
+    const auto   initial_height = [&](const auto &particle) {
       return particle.get_location()[1] - particle.get_properties()[u_y];
     };
     double lowest = std::numeric_limits<double>::max();
@@ -587,7 +593,7 @@ namespace CompactTension
           initial_height(particle) > lowest + 1e-6 * cell_size())
         {
           ++n_band;
-          if (particle.get_properties()[w] >= 1.)
+          if (particle.get_properties()[w] / u0 >= 1.)
             ++n_failed;
         }
     return {Utilities::MPI::sum(n_band, communicator),

@@ -1,5 +1,6 @@
 #include <cctype>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -133,6 +134,26 @@ namespace qsmpm
             space = false;
           }
       return result;
+    }
+
+
+
+    void
+    throw_if_any_rank(const std::string &message, const MPI_Comm communicator)
+    {
+      const unsigned int n_ranks =
+        dealii::Utilities::MPI::n_mpi_processes(communicator);
+      const unsigned int first =
+        dealii::Utilities::MPI::min(message.empty() ?
+                                      n_ranks :
+                                      dealii::Utilities::MPI::this_mpi_process(
+                                        communicator),
+                                    communicator);
+      if (first == n_ranks)
+        return;
+      const std::string text =
+        dealii::Utilities::MPI::broadcast(communicator, message, first);
+      AssertThrow(false, dealii::ExcMessage(text));
     }
 
 

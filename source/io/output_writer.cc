@@ -77,16 +77,84 @@ namespace qsmpm
 
 
 
+  namespace
+  {
+    /**
+     * deal.II's particle output with the model's output fields appended:
+     * the stored properties of each point as Particles::DataOut writes
+     * them, then the values of ConstitutiveModel::output_fields(), which
+     * are computed here from the committed state and never stored.
+     */
+    template <int dim>
+    class PointDataOut : public Particles::DataOut<dim>
+    {
+    public:
+      explicit PointDataOut(const MaterialPointSet<dim> &points)
+      {
+        const auto &handler = points.get_particle_handler();
+        this->build_patches(handler,
+                            points.get_layout().component_names(dim),
+                            points.get_layout().component_interpretations());
+        patches = Particles::DataOut<dim>::get_patches();
+        names   = Particles::DataOut<dim>::get_dataset_names();
+
+        PropertyLayout output_layout;
+        for (const auto &field : points.get_model().output_fields())
+          output_layout.add(field.name,
+                            field.n_components,
+                            PropertyLayout::Kind::scalar);
+        const unsigned int n_output = output_layout.size();
+        if (n_output == 0)
+          return;
+        for (const auto &name : output_layout.component_names(dim))
+          names.push_back(name);
+
+        // The patches are in the order of the particles in the handler.
+        std::vector<double> values(n_output);
+        unsigned int        i = 0;
+        for (const auto &particle : handler)
+          {
+            points.compute_output_fields(particle, ArrayView<double>(values));
+            auto              &data = patches[i++].data;
+            const unsigned int n    = data.n_rows();
+            Table<2, float>    extended(n + n_output, 1);
+            for (unsigned int c = 0; c < n; ++c)
+              extended(c, 0) = data(c, 0);
+            for (unsigned int c = 0; c < n_output; ++c)
+              extended(n + c, 0) = values[c];
+            data.swap(extended);
+          }
+        AssertThrow(i == patches.size(), ExcInternalError());
+      }
+
+    protected:
+      const std::vector<DataOutBase::Patch<0, dim>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return names;
+      }
+
+    private:
+      std::vector<DataOutBase::Patch<0, dim>> patches;
+      std::vector<std::string>                names;
+    };
+  } // namespace
+
+
+
   template <int dim>
   void
   OutputWriter<dim>::write_points(const MaterialPointSet<dim> &points,
                                   const unsigned int           step,
                                   const double                 load_factor)
   {
-    Particles::DataOut<dim> data_out;
-    data_out.build_patches(points.get_particle_handler(),
-                           points.get_layout().component_names(dim),
-                           points.get_layout().component_interpretations());
+    PointDataOut<dim> data_out(points);
     const std::string name = data_out.write_vtu_with_pvtu_record(
       parameters.directory + "/", "points", step, communicator, 5);
     point_records.emplace_back(load_factor, name);

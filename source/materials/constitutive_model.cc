@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 #include <map>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/materials/material_map.h>
 
 namespace qsmpm
 {
@@ -21,6 +23,38 @@ namespace qsmpm
   {
     for (double &s : state)
       s = 0.;
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::initialize_material_state(
+    const Point<dim> &x,
+    const unsigned int,
+    ArrayView<double> state) const
+  {
+    initialize_state(x, state);
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  ConstitutiveModel<dim>::output_fields() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::compute_output_fields(const PointState<dim> &,
+                                                ArrayView<double> values) const
+  {
+    for (double &v : values)
+      v = 0.;
   }
 
 
@@ -118,6 +152,18 @@ namespace qsmpm
 
 
 
+  template <int dim>
+  unsigned int
+  ConstitutiveModel<dim>::n_output_components() const
+  {
+    unsigned int n = 0;
+    for (const auto &field : output_fields())
+      n += field.n_components;
+    return n;
+  }
+
+
+
   namespace
   {
     template <int dim>
@@ -178,6 +224,7 @@ namespace qsmpm
     struct ModelChoice : ParameterStruct<ModelChoice<dim>>
     {
       std::string model = "linear elastic";
+      std::string models_by_id;
 
       void
       add_parameters(ParameterHandler &prm)
@@ -195,8 +242,65 @@ namespace qsmpm
                           model,
                           documentation,
                           Patterns::Selection(selection));
+        prm.add_parameter(
+          "Models by material id",
+          models_by_id,
+          "Models for particular material ids (Material points/<Material "
+          "id>), as 'id: model, id: model', e.g. '1: von Mises'; points of "
+          "other ids use <Model>. Each model takes its parameters from its "
+          "subsection here, so two ids with the same model share them (a "
+          "map of differently parameterized models of one kind is built in "
+          "C++ with MaterialMap). Empty: <Model> for every point.",
+          Patterns::Anything());
       }
     };
+
+    /// The model named @p name, from its subsection of "Material" (where
+    /// @p prm is).
+    template <int dim>
+    std::unique_ptr<ConstitutiveModel<dim>>
+    create_named(ParameterHandler &prm, const std::string &name)
+    {
+      AssertThrow(registry<dim>().count(name) == 1,
+                  ExcMessage("Material: unknown model <" + name + ">."));
+      prm.enter_subsection(name);
+      auto model = registry<dim>()[name].create(prm);
+      prm.leave_subsection();
+      return model;
+    }
+
+    /// The pairs (id, model name) of "Models by material id".
+    template <int dim>
+    std::vector<std::pair<unsigned int, std::string>>
+    parse_models_by_id(const std::string &text)
+    {
+      std::vector<std::pair<unsigned int, std::string>> result;
+      const auto fail = [&text](const std::string &why) {
+        AssertThrow(false,
+                    ExcMessage("Material: <Models by material id> = <" + text +
+                               ">: " + why +
+                               " (expected 'id: model, id: model')."));
+      };
+      for (const std::string &item :
+           dealii::Utilities::split_string_list(text, ','))
+        {
+          const auto colon = item.find(':');
+          if (colon == std::string::npos)
+            fail("<" + item + "> has no ':'");
+          const std::string id_text =
+            dealii::Utilities::trim(item.substr(0, colon));
+          const std::string name =
+            dealii::Utilities::trim(item.substr(colon + 1));
+          if (id_text.empty() ||
+              id_text.find_first_not_of("0123456789") != std::string::npos ||
+              id_text.size() > 9)
+            fail("<" + id_text + "> is not a material id");
+          if (registry<dim>().count(name) == 0)
+            fail("<" + name + "> is not a model");
+          result.emplace_back(std::stoul(id_text), name);
+        }
+      return result;
+    }
   } // namespace
 
 
@@ -225,12 +329,19 @@ namespace qsmpm
   ConstitutiveModelFactory<dim>::create(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    const std::string name = ModelChoice<dim>::from(prm).model;
-    AssertThrow(registry<dim>().count(name) == 1,
-                ExcMessage("Material: unknown <Model> = <" + name + ">."));
-    prm.enter_subsection(name);
-    auto model = registry<dim>()[name].create(prm);
-    prm.leave_subsection();
+    const ModelChoice<dim> choice = ModelChoice<dim>::from(prm);
+    std::unique_ptr<ConstitutiveModel<dim>> model;
+    if (dealii::Utilities::trim(choice.models_by_id).empty())
+      model = create_named<dim>(prm, choice.model);
+    else
+      {
+        const auto by_id = parse_models_by_id<dim>(choice.models_by_id);
+        auto       map   = std::make_unique<MaterialMap<dim>>();
+        map->set_default(create_named<dim>(prm, choice.model));
+        for (const auto &[id, name] : by_id)
+          map->add(id, create_named<dim>(prm, name));
+        model = std::move(map);
+      }
     prm.leave_subsection();
     return model;
   }

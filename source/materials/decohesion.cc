@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <memory>
@@ -85,9 +86,19 @@ namespace qsmpm
         AssertThrow(false, ExcMessage(message.str()));
       }
 
+    compute_offsets();
+  }
+
+
+
+  template <int dim>
+  void
+  Decohesion<dim>::compute_offsets()
+  {
     // Offsets of the state fields, by name: the order is defined once, in
     // state_fields().
     unsigned int offset = 0;
+    slip_offset         = numbers::invalid_unsigned_int;
     for (const auto &field : state_fields())
       {
         if (field.name == crack_allowed_name)
@@ -96,14 +107,20 @@ namespace qsmpm
           normal_offset = offset;
         else if (field.name == crack_opening_name)
           opening_offset = offset;
-        else if (field.name == opening_ratio_name)
-          opening_ratio_offset = offset;
-        else if (field.name == sigma_xx_ratio_name)
-          sigma_xx_offset = offset;
-        else if (field.name == sigma_yy_ratio_name)
-          sigma_yy_offset = offset;
+        else if (field.name == crack_slip_name)
+          slip_offset = offset;
         offset += field.n_components;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Decohesion<dim>::set_shear_retention(const ShearRetention retention)
+  {
+    shear_retention = retention;
+    compute_offsets();
   }
 
 
@@ -119,6 +136,7 @@ namespace qsmpm
                  parameters.crack_band_width)
   {
     crack_region = parse_region<dim>(parameters.cracking_region);
+    set_shear_retention(parameters.shear_retention);
   }
 
 
@@ -163,6 +181,18 @@ namespace qsmpm
                       "cell. Must be positive and below M u0 / tau_nf (local "
                       "stability).",
                       Patterns::Double(0.));
+    Utils::add_selection<ShearRetention>(
+      prm,
+      "Shear retention",
+      shear_retention,
+      {{"abrupt", ShearRetention::abrupt}, {"linear", ShearRetention::linear}},
+      "abrupt: the crack carries shear tractions elastically until complete "
+      "failure and releases them at once (the paper's runs). linear: the "
+      "band's secant shear stiffness falls with the opening, t_s = (1 - "
+      "[[u_n]]/u0) mu gamma_s (a shear retention factor), so that the "
+      "traction vanishes continuously at complete failure; the stress "
+      "update has no jump there, which path following through complete "
+      "failure needs.");
     prm.add_parameter("Cracking region",
                       cracking_region,
                       "An expression in x, y (and z): points created where it "
@@ -196,12 +226,35 @@ namespace qsmpm
   std::vector<StateField>
   Decohesion<dim>::state_fields() const
   {
-    return {{crack_allowed_name, 1},
-            {crack_normal_name, dim},
-            {crack_opening_name, 1},
-            {opening_ratio_name, 1},
+    std::vector<StateField> fields = {{crack_allowed_name, 1},
+                                      {crack_normal_name, dim},
+                                      {crack_opening_name, 1}};
+    if (shear_retention == ShearRetention::linear)
+      fields.push_back({crack_slip_name, dim});
+    return fields;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  Decohesion<dim>::output_fields() const
+  {
+    return {{opening_ratio_name, 1},
             {sigma_xx_ratio_name, 1},
             {sigma_yy_ratio_name, 1}};
+  }
+
+
+
+  template <int dim>
+  void
+  Decohesion<dim>::compute_output_fields(const PointState<dim> &point,
+                                         ArrayView<double>      values) const
+  {
+    values[0] = point.state[opening_offset] / u0;
+    values[1] = point.stress[0][0] / tau_nf;
+    values[2] = point.stress[1][1] / tau_nf;
   }
 
 
@@ -214,6 +267,34 @@ namespace qsmpm
     std::fill(state.begin(), state.end(), 0.);
     state[allowed_offset] = crack_region(x) ? 1. : 0.;
   }
+
+
+
+  namespace
+  {
+    /// dim - 1 unit vectors orthogonal to the unit vector @p n and to each
+    /// other.
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangents(const Tensor<1, dim> &n)
+    {
+      if constexpr (dim == 2)
+        return {{Tensor<1, 2>({-n[1], n[0]})}};
+      else
+        {
+          // Start from the axis least aligned with n.
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(n[d]) < std::abs(n[axis]))
+              axis = d;
+          Tensor<1, dim> e;
+          e[axis]          = 1.;
+          Tensor<1, dim> t = e - (e * n) * n;
+          t /= t.norm();
+          return {{t, cross_product_3d(n, t)}};
+        }
+    }
+  } // namespace
 
 
 
@@ -279,19 +360,38 @@ namespace qsmpm
             // tangential jump du_s = L_c t_s / mu (for isotropic C,
             // C:sym(du_s (x) n).n = mu du_s when du_s is normal to n, which
             // leaves tau_n = 0 unchanged).
-            if (w >= u0)
+            if (w >= u0 && shear_retention == ShearRetention::abrupt)
               {
                 const Tensor<1, dim> t    = stress * n;
                 const Tensor<1, dim> slip = t - (t * n) * n;
                 stress -= (C * symmetrize(outer_product(slip, n))) / mu;
               }
           }
+        // Linear shear retention: with the band's shear strain gamma_s since
+        // initiation, mu gamma_s = t_tr + (mu / L_c) s_old (the trial shear
+        // traction plus what the committed slip s_old released), the
+        // traction is beta mu gamma_s, i.e. the slip is
+        // s = L_c (1 - beta) gamma_s. The normal correction above leaves the
+        // shear traction alone (isotropic C), and a slip normal to n leaves
+        // tau_n alone, so the two updates are independent.
+        if (shear_retention == ShearRetention::linear)
+          {
+            const double         L_c  = smearing_length(n);
+            const double         beta = std::max(0., 1. - w / u0);
+            const Tensor<1, dim> t    = stress * n;
+            Tensor<1, dim>       s_old;
+            for (unsigned int d = 0; d < dim; ++d)
+              s_old[d] = old.state[slip_offset + d];
+            const Tensor<1, dim> mu_gamma =
+              t - (t * n) * n + (mu / L_c) * s_old;
+            const Tensor<1, dim> s_new = (L_c / mu) * (1. - beta) * mu_gamma;
+            stress -= (C * symmetrize(outer_product(s_new - s_old, n))) / L_c;
+            for (unsigned int d = 0; d < dim; ++d)
+              new_state[slip_offset + d] = s_new[d];
+          }
       }
 
-    new_state[opening_offset]       = w;
-    new_state[opening_ratio_offset] = w / u0;
-    new_state[sigma_xx_offset]      = stress[0][0] / tau_nf;
-    new_state[sigma_yy_offset]      = stress[1][1] / tau_nf;
+    new_state[opening_offset] = w;
   }
 
 
@@ -307,8 +407,21 @@ namespace qsmpm
     for (unsigned int d = 0; d < dim; ++d)
       n[d] = old.state[normal_offset + d];
     const SymmetricTensor<2, dim> Cnn = C * symmetrize(outer_product(n, n));
+    // Linear shear retention: the secant shear stiffness beta mu on the
+    // crack plane, C : S = 2 beta mu S for S = sym(t (x) n), t a unit
+    // tangent (S : S = 1/2).
+    SymmetricTensor<4, dim> shear_loss;
+    if (shear_retention == ShearRetention::linear)
+      {
+        const double beta = std::max(0., 1. - w / u0);
+        for (const Tensor<1, dim> &t : tangents(n))
+          {
+            const SymmetricTensor<2, dim> S = symmetrize(outer_product(t, n));
+            shear_loss += (1. - beta) * 4. * mu * outer_product(S, S);
+          }
+      }
     if (w >= u0)
-      return C - outer_product(Cnn, Cnn) / M;
+      return C - outer_product(Cnn, Cnn) / M - shear_loss;
     // A softening crack: the secant normal stiffness k of the crack band,
     // the traction of the softening line tau_n = tau_nf (1 - w/u0) over the
     // normal strain tau_n / M + w / L_c that carries it (elastic part and
@@ -318,7 +431,7 @@ namespace qsmpm
     // crack) it keeps the matrix positive definite for AMG.
     const double tau_n    = tau_nf * (1. - w / u0);
     const double k_over_M = tau_n / (tau_n + M * w / smearing_length(n));
-    return C - (1. - k_over_M) * outer_product(Cnn, Cnn) / M;
+    return C - (1. - k_over_M) * outer_product(Cnn, Cnn) / M - shear_loss;
   }
 
 
@@ -388,7 +501,27 @@ namespace qsmpm
       const double v = std::min(w, u0);
       return tau_nf * (v - 0.5 * v * v / u0);
     };
-    return (work(w_new) - work(w_old)) / smearing_length(n);
+    const double L_c    = smearing_length(n);
+    double       result = (work(w_new) - work(w_old)) / L_c;
+    // Linear shear retention: the secant shear stiffness falls from
+    // beta_old mu to beta_new mu at the shear strain gamma_s, which releases
+    // (beta_old - beta_new) mu |gamma_s|^2 / 2; gamma_s from the new slip,
+    // s = L_c (1 - beta) gamma_s.
+    if (shear_retention == ShearRetention::linear)
+      {
+        const double beta_old = std::max(0., 1. - w_old / u0),
+                     beta_new = std::max(0., 1. - w_new / u0);
+        if (beta_new < 1.)
+          {
+            double slip_squared = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              slip_squared +=
+                new_state[slip_offset + d] * new_state[slip_offset + d];
+            const double L = L_c * (1. - beta_new);
+            result += 0.5 * (beta_old - beta_new) * mu * slip_squared / (L * L);
+          }
+      }
+    return result;
   }
 
 

@@ -1,3 +1,5 @@
+#include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <iostream>
@@ -5,6 +7,7 @@
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
+#include <sstream>
 #include <tuple>
 
 namespace qsmpm
@@ -39,6 +42,14 @@ namespace qsmpm
                         region_upper_corner,
                         "",
                         Patterns::Anything());
+      prm.add_parameter(
+        "Material id",
+        material_id,
+        "The material id of the points, an expression in x, y (and z) "
+        "evaluated where each point is created; its value must be a "
+        "non-negative integer, e.g. 'if(y > 0.5, 1, 0)' for two layers. "
+        "Material/<Models by material id> chooses a model per id.",
+        Patterns::Anything());
       prm.add_parameter("Update volumes",
                         update_volumes,
                         "Update point volumes with J (paper eqs. 2.23-2.24). "
@@ -241,6 +252,20 @@ namespace qsmpm
     const Quadrature<dim>                         &rule,
     const unsigned int                             material_id)
   {
+    fill(inside, rule, [material_id](const Point<dim> &) {
+      return material_id;
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::fill(
+    const std::function<bool(const Point<dim> &)>         &inside,
+    const Quadrature<dim>                                 &rule,
+    const std::function<unsigned int(const Point<dim> &)> &material_id)
+  {
     // Reference positions and volume fractions of the points in a cell.
     const std::vector<Point<dim>> &reference_points = rule.get_points();
     const std::vector<double>     &fractions        = rule.get_weights();
@@ -259,6 +284,7 @@ namespace qsmpm
       Point<dim>                                        reference;
       double                                            volume;
       double                                            fraction;
+      unsigned int                                      material_id;
     };
     std::vector<NewPoint> new_points;
     for (const auto &cell : grid.get_triangulation().active_cell_iterators())
@@ -275,9 +301,36 @@ namespace qsmpm
                                       x,
                                       reference_points[q],
                                       volume * fractions[q],
-                                      fractions[q]});
+                                      fractions[q],
+                                      0});
             }
         }
+
+    // The material ids and the model's initial state of every point. An
+    // error here (an id that is not an integer, an id without a model) may
+    // arise on some ranks only; all ranks stop with the first rank's
+    // message instead of waiting for each other in the collective calls
+    // below.
+    const unsigned int  n_state = model.n_state_components();
+    std::vector<double> initial_states(new_points.size() * n_state);
+    std::string         error;
+    try
+      {
+        for (std::size_t i = 0; i < new_points.size(); ++i)
+          {
+            NewPoint &p   = new_points[i];
+            p.material_id = material_id(p.location);
+            model.initialize_material_state(
+              p.location,
+              p.material_id,
+              ArrayView<double>(initial_states.data() + i * n_state, n_state));
+          }
+      }
+    catch (const std::exception &exc)
+      {
+        error = Utils::error_message(exc);
+      }
+    Utils::throw_if_any_rank(error, grid.get_communicator());
 
     const MPI_Comm              comm     = grid.get_communicator();
     const types::particle_index n_local  = new_points.size();
@@ -293,7 +346,6 @@ namespace qsmpm
     first_id += particle_handler.n_global_particles();
 
     std::vector<double> properties(layout.size(), 0.);
-    const unsigned int  n_state = model.n_state_components();
     for (types::particle_index i = 0; i < n_local; ++i)
       {
         const NewPoint &p = new_points[i];
@@ -301,7 +353,7 @@ namespace qsmpm
         properties[offsets.initial_volume] = p.volume;
         properties[offsets.volume]         = p.volume;
         properties[offsets.J]              = 1.;
-        properties[offsets.material_id]    = material_id;
+        properties[offsets.material_id]    = p.material_id;
         if (formulation.finite_strain())
           for (unsigned int d = 0; d < dim; ++d)
             properties[offsets.deformation_gradient + d * dim + d] = 1.;
@@ -310,9 +362,9 @@ namespace qsmpm
             properties[offsets.initial_half_length + d] =
               0.5 * p.cell->extent_in_direction(d) *
               std::pow(p.fraction, 1. / dim);
-        model.initialize_state(
-          p.location,
-          ArrayView<double>(properties.data() + offsets.state, n_state));
+        std::copy(initial_states.begin() + i * n_state,
+                  initial_states.begin() + (i + 1) * n_state,
+                  properties.begin() + offsets.state);
         particle_handler.insert_particle(
           p.location, p.reference, first_id + i, p.cell, properties);
       }
@@ -353,6 +405,39 @@ namespace qsmpm
                     << upper << "); points are created only inside the grid."
                     << std::endl;
       }
+    // The material id expression, checked at every point: a value that is
+    // not a non-negative integer is a mistake in the .prm, not something to
+    // round.
+    FunctionParser<dim> id_parser(1);
+    try
+      {
+        id_parser.initialize(dim == 2 ? "x,y" : "x,y,z",
+                             parameters.material_id,
+                             std::map<std::string, double>());
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage("Material points: <Material id> = <" +
+                               parameters.material_id +
+                               "> is not an expression in x, y" +
+                               (dim == 3 ? ", z." : ".")));
+      }
+    const auto material_id = [&](const Point<dim> &x) -> unsigned int {
+      const double value = id_parser.value(x);
+      if (!(std::isfinite(value) && value >= 0. && value < 1e9 &&
+            std::abs(value - std::round(value)) < 1e-9))
+        {
+          std::ostringstream message;
+          message << "Material points: <Material id> = <"
+                  << parameters.material_id << "> is " << value << " at (" << x
+                  << "); it must be a non-negative integer.";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+      return static_cast<unsigned int>(std::round(value));
+    };
+    std::array<unsigned int, dim> n_per_direction;
+    n_per_direction.fill(parameters.points_per_direction);
     fill(
       [restrict_to_box, region_lower, region_upper](const Point<dim> &x) {
         if (!restrict_to_box)
@@ -362,8 +447,8 @@ namespace qsmpm
             return false;
         return true;
       },
-      parameters.points_per_direction,
-      parameters.placement);
+      reference_rule(parameters.placement, n_per_direction),
+      material_id);
   }
 
 
@@ -405,6 +490,34 @@ namespace qsmpm
     const types::particle_index before = particle_handler.n_global_particles();
     particle_handler.sort_particles_into_subdomains_and_cells();
     return before - particle_handler.n_global_particles();
+  }
+
+
+
+  template <int dim>
+  PointState<dim>
+  MaterialPointSet<dim>::point_state(
+    const Particles::ParticleAccessor<dim> &particle) const
+  {
+    const double *data = particle.get_properties().data();
+    return {Utils::read_symmetric<dim>(data + offsets.strain),
+            Utils::read_symmetric<dim>(data + offsets.stress),
+            ArrayView<const double>(data + offsets.state,
+                                    model.n_state_components()),
+            data[offsets.volume],
+            static_cast<unsigned int>(data[offsets.material_id]),
+            particle.get_location()};
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::compute_output_fields(
+    const Particles::ParticleAccessor<dim> &particle,
+    ArrayView<double>                       values) const
+  {
+    model.compute_output_fields(point_state(particle), values);
   }
 
 

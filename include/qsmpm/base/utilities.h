@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <exception>
+#include <mpi.h>
 #include <string>
 #include <vector>
 
@@ -102,6 +103,16 @@ namespace qsmpm
      */
     std::string
     error_message(const std::exception &exc);
+
+    /**
+     * Collective: if @p message is not empty on any rank of
+     * @p communicator, throw on every rank an exception with the message of
+     * the lowest such rank. For errors that only some ranks detect (in
+     * their own points or cells), so that no rank waits forever in the
+     * next collective call for one that has stopped.
+     */
+    void
+    throw_if_any_rank(const std::string &message, const MPI_Comm communicator);
 
     /**
      * The entry "Dimension" (2 or 3, default 2) of the parameter file

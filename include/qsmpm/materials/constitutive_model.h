@@ -94,6 +94,35 @@ namespace qsmpm
     initialize_state(const Point<dim> &x, ArrayView<double> state) const;
 
     /**
+     * Initial values of the model's fields for a point of material id
+     * @p material_id created at @p x; what MaterialPointSet calls. The
+     * default ignores the id and calls initialize_state(x, state); a
+     * MaterialMap passes the point on to the model of its id.
+     */
+    virtual void
+    initialize_material_state(const Point<dim>  &x,
+                              const unsigned int material_id,
+                              ArrayView<double>  state) const;
+
+    /**
+     * Fields that are written with the points but are not state: functions
+     * of a point's committed state (e.g. a crack opening normalized by the
+     * critical opening), computed by compute_output_fields() when the
+     * points are written, never stored on the points. Default: none.
+     */
+    virtual std::vector<StateField>
+    output_fields() const;
+
+    /**
+     * The values of output_fields() for the committed point state
+     * @p point; @p values has the size of output_fields() and must be
+     * written completely.
+     */
+    virtual void
+    compute_output_fields(const PointState<dim> &point,
+                          ArrayView<double>      values) const;
+
+    /**
      * Trial stress and history for the strain increment @p strain_increment
      * applied to the committed point state @p old. @p new_state has the size
      * of the model's fields and must be written completely.
@@ -179,6 +208,10 @@ namespace qsmpm
     /// Total number of doubles in state_fields().
     unsigned int
     n_state_components() const;
+
+    /// Total number of doubles in output_fields().
+    unsigned int
+    n_output_components() const;
   };
 
 

@@ -92,6 +92,23 @@ namespace qsmpm
                const Tensor<1, dim> &fixed_normal,
                const double          band_width);
 
+    /**
+     * What the crack does with the shear traction on its plane.
+     */
+    enum class ShearRetention
+    {
+      /// Carried elastically until complete failure, then released at once
+      /// (the default; the results of the paper's runs).
+      abrupt,
+      /// A secant shear stiffness that falls linearly with the opening: the
+      /// shear traction across the band is t_s = beta mu gamma_s,
+      /// beta = max(0, 1 - [[u_n]]/u0), where gamma_s is the band's shear
+      /// strain since initiation (Rots' shear retention factor). The
+      /// traction goes to zero continuously at complete failure instead of
+      /// jumping there.
+      linear
+    };
+
     /// The subsection "decohesion".
     struct Parameters : ParameterStruct<Parameters>
     {
@@ -103,7 +120,8 @@ namespace qsmpm
       std::string crack_normal     = "principal";
       double      crack_band_width = 0.;
       /// An expression in x, y (, z): cracking where it is > 0.5.
-      std::string cracking_region = "1";
+      std::string    cracking_region = "1";
+      ShearRetention shear_retention = ShearRetention::abrupt;
 
       /// Declare the entries, bound to the members.
       void
@@ -126,12 +144,32 @@ namespace qsmpm
     void
     set_crack_region(const std::function<bool(const Point<dim> &)> &region);
 
+    /**
+     * Choose the shear retention (abrupt by default). With
+     * ShearRetention::linear the points carry the crack's tangential slip
+     * as one more state field ("crack_slip"); call this before points are
+     * made.
+     */
+    void
+    set_shear_retention(const ShearRetention retention);
+
     std::vector<StateField>
     state_fields() const override;
 
     void
     initialize_state(const Point<dim> &x,
                      ArrayView<double> state) const override;
+
+    /**
+     * For pictures of the crack (paper Fig. 4): the opening over the
+     * critical opening, w / u0, and sigma_xx / tau_nf, sigma_yy / tau_nf.
+     */
+    std::vector<StateField>
+    output_fields() const override;
+
+    void
+    compute_output_fields(const PointState<dim> &point,
+                          ArrayView<double>      values) const override;
 
     /**
      * The closed-form return mapping. With the trial stress
@@ -194,9 +232,11 @@ namespace qsmpm
     stiffness() const;
 
     /// Names of the model's state fields (see state_fields()).
-    static constexpr const char *crack_allowed_name  = "crack_allowed";
-    static constexpr const char *crack_normal_name   = "crack_normal";
-    static constexpr const char *crack_opening_name  = "crack_opening";
+    static constexpr const char *crack_allowed_name = "crack_allowed";
+    static constexpr const char *crack_normal_name  = "crack_normal";
+    static constexpr const char *crack_opening_name = "crack_opening";
+    static constexpr const char *crack_slip_name    = "crack_slip";
+    /// Names of the model's output fields (see output_fields()).
     static constexpr const char *opening_ratio_name  = "opening_over_u0";
     static constexpr const char *sigma_xx_ratio_name = "sigma_xx_over_tau_nf";
     static constexpr const char *sigma_yy_ratio_name = "sigma_yy_over_tau_nf";
@@ -219,9 +259,16 @@ namespace qsmpm
     const double                            mu;
     std::function<bool(const Point<dim> &)> crack_region;
 
-    /// Offsets of the fields within the model's state (from state_fields()).
+    ShearRetention shear_retention = ShearRetention::abrupt;
+
+    /// Offsets of the fields within the model's state (from state_fields();
+    /// slip_offset only with linear shear retention).
     unsigned int allowed_offset, normal_offset, opening_offset,
-      opening_ratio_offset, sigma_xx_offset, sigma_yy_offset;
+      slip_offset = numbers::invalid_unsigned_int;
+
+    /// Recompute the offsets from state_fields().
+    void
+    compute_offsets();
   };
 } // namespace qsmpm
 

@@ -58,6 +58,9 @@ namespace qsmpm
       /// Nodes holding less material than this fraction of a cell's volume
       /// are held fixed in a step like nodes without points.
       double min_nodal_volume_fraction = 0.;
+      /// The material id of a point created at x, an expression in x, y
+      /// (and z) whose value is a non-negative integer.
+      std::string material_id = "0";
 
       /// Declare the entries, bound to the members.
       void
@@ -132,6 +135,16 @@ namespace qsmpm
          const unsigned int                             material_id = 0);
 
     /**
+     * As above, with the material id of each point given by @p material_id
+     * at the point's position: layers, inclusions, a footing on soil. The
+     * model's initialize_material_state() sees the id.
+     */
+    void
+    fill(const std::function<bool(const Point<dim> &)>         &inside,
+         const Quadrature<dim>                                 &rule,
+         const std::function<unsigned int(const Point<dim> &)> &material_id);
+
+    /**
      * The reference positions and volume fractions of @p placement with
      * @p n[d] points in direction d: the centres of a uniform
      * n[0] x n[1] (x n[2]) subdivision with equal weights (regular), or the
@@ -176,6 +189,21 @@ namespace qsmpm
     get_model() const;
     const Formulation &
     get_formulation() const;
+
+    /**
+     * The committed state of @p particle as its constitutive model sees it
+     * (the state view points into the particle's properties).
+     */
+    PointState<dim>
+    point_state(const Particles::ParticleAccessor<dim> &particle) const;
+
+    /**
+     * The values of the model's output fields (ConstitutiveModel::
+     * output_fields()) at @p particle, written into @p values.
+     */
+    void
+    compute_output_fields(const Particles::ParticleAccessor<dim> &particle,
+                          ArrayView<double>                       values) const;
 
     /// Number of points on all ranks.
     types::particle_index
