@@ -29,6 +29,24 @@
 // |W / (G_f b d) - 1| <= 5 % (W <= G_f b d as well), and the curve on 1
 // and 2 ranks the same within 1e-3 of the peak load (see the reason below).
 //
+// Then the same specimen with path following instead of growing steps
+// (issue 12): Load stepping/Control = opening, every step opening a clip
+// gauge across the notch mouth by 0.025 mm (the gauge joins the points of
+// the top cells beside the notch), no increment growth, and the decohesion
+// model's continuous shear release (Shear retention = linear). Opening
+// control traces the snap-backs of the tail instead of jumping them, so
+// the energy must lie between two bounds that follow from the model: the
+// unbroken hinge keeps its share h/8 of b (2.1 %) out of W, and the shear
+// energy that linear retention releases on top of G_f adds to W. Checked:
+// 1 - h/(8b) - 0.005 <= W / (G_f b d) <= 1.02, where 0.005 allows for the
+// points' volume changes (the crack area of a point is its volume over
+// L_c) and the trapezoidal rule, and 1.02 is the issue's 2 % (measured
+// 0.9783 with this Newton tolerance; 0.982 with the paper's 1e-3 in the
+// example on 1, 2 and 3 ranks). The same curve on
+// 1 and 2 ranks within 1e-3 of the peak, compared step by step (each step
+// opens the gauge by the same amount on any number of ranks; measured
+// 3.4e-4 on 2 ranks, 4.4e-4 on 3).
+//
 // The Newton tolerance is 1e-5 with GMRES at 1e-3: asking GMRES for 1e-6
 // with finite-difference Jacobian products (sqrt(eps) = 1e-7) breaks down.
 #include "tests.h"
@@ -68,19 +86,31 @@ namespace
     return band.first > 0 && band.second == band.first;
   }
 
+  /// How the load is stepped.
+  enum class Control
+  {
+    /// Displacement control with steps growing from delta = 0.5 mm on.
+    growing_displacement,
+    /// Crack-mouth opening control with constant steps, linear shear
+    /// retention.
+    opening
+  };
+
   Result
-  run(const MPI_Comm communicator, const CompactTensionGeometry<2> &geometry)
+  run(const MPI_Comm                   communicator,
+      const CompactTensionGeometry<2> &geometry,
+      const Control                    control)
   {
     QuasiStaticProblem<2> problem(communicator);
     problem.pcout().set_condition(false);
     Tensor<1, 2> x_normal;
-    x_normal[0]              = 1.;
+    x_normal[0] = 1.;
+    auto model  = std::make_unique<Decohesion<2>>(
+      E, nu, true, tau_nf, G_f, x_normal, geometry.cell_size());
+    if (control == Control::opening)
+      model->set_shear_retention(Decohesion<2>::ShearRetention::linear);
     const unsigned int right = geometry.setup(
-      problem,
-      std::make_unique<Decohesion<2>>(
-        E, nu, true, tau_nf, G_f, x_normal, geometry.cell_size()),
-      1,
-      MaterialPointSet<2>::Placement::regular);
+      problem, std::move(model), 1, MaterialPointSet<2>::Placement::regular);
 
     auto &prm                                  = problem.parameters();
     prm.nonlinear_solver.tolerance             = 1e-5;
@@ -89,10 +119,24 @@ namespace
     prm.load_stepping.n_steps                  = 4000;
     prm.load_stepping.final_load_factor        = 2e-2;
     prm.load_stepping.max_cut_backs            = 6;
-    prm.load_stepping.growth_factor            = 1.05;
-    prm.load_stepping.growth_start             = 5e-4;
-    prm.output.directory                       = "results";
-    prm.output.interval                        = 0;
+    if (control == Control::growing_displacement)
+      {
+        prm.load_stepping.growth_factor = 1.05;
+        prm.load_stepping.growth_start  = 5e-4;
+      }
+    else
+      {
+        const double h = geometry.cell_size(), y = geometry.height() - 0.5 * h;
+        prm.load_stepping.control           = "opening";
+        prm.load_stepping.opening_increment = 2.5e-5;
+        prm.load_stepping.opening_gauge =
+          std::to_string(-h) + "," + std::to_string(y) + "; " +
+          std::to_string(h) + "," + std::to_string(y);
+        prm.load_stepping.max_increment = 1e-3;
+        prm.load_stepping.n_steps       = 100000;
+      }
+    prm.output.directory = "results";
+    prm.output.interval  = 0;
 
     Result result;
     result.max_newton       = 0;
@@ -125,50 +169,70 @@ main(int argc, char *argv[])
   parameters.back_face_refinement = 8;
   const CompactTensionGeometry<2> geometry(parameters);
 
-  const Result parallel = run(MPI_COMM_WORLD, geometry);
-  const auto  &curve    = parallel.curve;
-  const double b = geometry.ligament(), d = geometry.depth();
-  deallog << "Coarse CTS: b = " << b << " m, h = " << geometry.cell_size()
-          << " m, one point per cell, 1 x 8 in the back-face band cell"
-          << std::endl;
-  check_that("complete failure: every band point but the hinge has w >= u0",
-             parallel.complete_failure);
-  check("load at complete failure / peak load",
-        curve.points().back().force / curve.peak_force(),
-        1e-3);
-  check_that("Newton iterations per step within 1 to 20",
-             parallel.max_newton >= 1 && parallel.max_newton <= 20);
-  check("|integral P d(delta) / (G_f b d) - 1|",
-        curve.work() / (G_f * b * d) - 1.,
-        0.05);
-  check_that("integral P d(delta) <= G_f b d", curve.work() <= G_f * b * d);
-
-  // The same on one rank.
-  const Result serial             = run(MPI_COMM_SELF, geometry);
-  double       largest_difference = 0.;
-  const auto  &p = curve.points(), &q = serial.curve.points();
-  for (unsigned int i = 0; i < std::min(p.size(), q.size()); ++i)
-    largest_difference =
-      std::max(largest_difference, std::abs(p[i].force - q[i].force));
-  check_that("same number of steps on this communicator and on one rank",
-             p.size() == q.size());
-  // The partitioned AMG gives other (equally converged) iterates on 2
-  // ranks; each step's solution differs within the Newton tolerance (1e-5
-  // of the step's initial residual) and a softening, path-dependent
-  // material carries these differences over hundreds of steps and through
-  // the discrete events of crack initiation and failure. The tolerance,
-  // 1e-3 of the peak load, is our choice (not the paper's: the paper's 1e-3
-  // is its Newton and GMRES tolerance, a relative residual, not a
-  // difference of loads): 50 times below the energy check above, so a
-  // difference it lets pass cannot decide that check.
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << "max |P - P_serial| / P_max = "
-              << largest_difference / curve.peak_force()
-              << ", load at the end / peak = "
-              << curve.points().back().force / curve.peak_force()
-              << ", W / (G_f b d) = " << curve.work() / (G_f * b * d)
+  for (const Control control :
+       {Control::growing_displacement, Control::opening})
+    {
+      const Result parallel = run(MPI_COMM_WORLD, geometry, control);
+      const auto  &curve    = parallel.curve;
+      const double b = geometry.ligament(), d = geometry.depth();
+      deallog << "Coarse CTS: b = " << b << " m, h = " << geometry.cell_size()
+              << " m, one point per cell, 1 x 8 in the back-face band cell, "
+              << (control == Control::opening ?
+                    "crack-mouth opening control, linear shear retention" :
+                    "displacement control with growing steps")
               << std::endl;
-  check("max |P - P_serial| / P_max",
-        largest_difference / curve.peak_force(),
-        1e-3);
+      check_that("complete failure: every band point but the hinge has w >= u0",
+                 parallel.complete_failure);
+      check("load at complete failure / peak load",
+            curve.points().back().force / curve.peak_force(),
+            1e-3);
+      check_that("Newton iterations per step within 1 to 20",
+                 parallel.max_newton >= 1 && parallel.max_newton <= 20);
+      const double energy_ratio = curve.work() / (G_f * b * d);
+      if (control == Control::growing_displacement)
+        {
+          check("|integral P d(delta) / (G_f b d) - 1|",
+                energy_ratio - 1.,
+                0.05);
+          check_that("integral P d(delta) <= G_f b d", energy_ratio <= 1.);
+        }
+      else
+        {
+          const double hinge_share = geometry.cell_size() / (8. * b);
+          check_that("integral P d(delta) / (G_f b d) >= 1 - h/(8b) - 0.005 "
+                     "(the unbroken hinge)",
+                     energy_ratio >= 1. - hinge_share - 0.005);
+          check_that("integral P d(delta) / (G_f b d) <= 1.02",
+                     energy_ratio <= 1.02);
+        }
+
+      // The same on one rank.
+      const Result serial             = run(MPI_COMM_SELF, geometry, control);
+      double       largest_difference = 0.;
+      const auto  &p = curve.points(), &q = serial.curve.points();
+      for (unsigned int i = 0; i < std::min(p.size(), q.size()); ++i)
+        largest_difference =
+          std::max(largest_difference, std::abs(p[i].force - q[i].force));
+      check_that("same number of steps on this communicator and on one rank",
+                 p.size() == q.size());
+      // The partitioned AMG gives other (equally converged) iterates on 2
+      // ranks; each step's solution differs within the Newton tolerance (1e-5
+      // of the step's initial residual) and a softening, path-dependent
+      // material carries these differences over hundreds of steps and through
+      // the discrete events of crack initiation and failure. The tolerance,
+      // 1e-3 of the peak load, is our choice (not the paper's: the paper's 1e-3
+      // is its Newton and GMRES tolerance, a relative residual, not a
+      // difference of loads): 50 times below the energy check above, so a
+      // difference it lets pass cannot decide that check.
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cout << "max |P - P_serial| / P_max = "
+                  << largest_difference / curve.peak_force()
+                  << ", load at the end / peak = "
+                  << curve.points().back().force / curve.peak_force()
+                  << ", W / (G_f b d) = " << curve.work() / (G_f * b * d)
+                  << std::endl;
+      check("max |P - P_serial| / P_max",
+            largest_difference / curve.peak_force(),
+            1e-3);
+    }
 }
