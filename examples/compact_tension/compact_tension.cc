@@ -531,13 +531,9 @@ namespace CompactTension
   void
   CompactTensionTest<dim>::write_point_csv(const std::string &filename) const
   {
-    const auto    &points = problem.points();
-    PropertyLayout output_layout;
-    for (const auto &field : points.get_model().output_fields())
-      output_layout.add(field.name,
-                        field.n_components,
-                        PropertyLayout::Kind::scalar);
-    const unsigned int w = output_layout.offset(
+    const auto          &points        = problem.points();
+    const PropertyLayout output_layout = points.output_layout();
+    const unsigned int   w             = output_layout.offset(
                          Decohesion<dim>::opening_ratio_name),
                        sxx = output_layout.offset(
                          Decohesion<dim>::sigma_xx_ratio_name),

@@ -175,13 +175,8 @@ namespace qsmpm
             const Tensor<2, dim> &grad_du =
               grad_du_scratch[p - range.first_point];
 
-            const PointState<dim> old{
-              Utils::read_symmetric<dim>(data + offsets.strain),
-              Utils::read_symmetric<dim>(data + offsets.stress),
-              ArrayView<const double>(data + offsets.state, n_state),
-              data[offsets.volume],
-              static_cast<unsigned int>(data[offsets.material_id]),
-              cache.position(p)};
+            const PointState<dim> old = MaterialPointSet<dim>::read_point_state(
+              data, offsets, n_state, cache.position(p));
             ArrayView<double> new_state(state_scratch.data(), n_state);
 
             // The point's share of R = f_ext - f_int: small strain

@@ -103,13 +103,11 @@ namespace qsmpm
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
-            const PointState<dim> state{
-              Utils::read_symmetric<dim>(data + offsets.strain),
-              Utils::read_symmetric<dim>(data + offsets.stress),
-              ArrayView<const double>(data + offsets.state, n_state),
-              data[offsets.volume],
-              static_cast<unsigned int>(data[offsets.material_id]),
-              cache.position(p)};
+            const PointState<dim> state =
+              MaterialPointSet<dim>::read_point_state(data,
+                                                      offsets,
+                                                      n_state,
+                                                      cache.position(p));
             Tensor<4, dim> C;
             double         volume;
             if (finite_strain)

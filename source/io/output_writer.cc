@@ -98,12 +98,8 @@ namespace qsmpm
         patches = Particles::DataOut<dim>::get_patches();
         names   = Particles::DataOut<dim>::get_dataset_names();
 
-        PropertyLayout output_layout;
-        for (const auto &field : points.get_model().output_fields())
-          output_layout.add(field.name,
-                            field.n_components,
-                            PropertyLayout::Kind::scalar);
-        const unsigned int n_output = output_layout.size();
+        const PropertyLayout output_layout = points.output_layout();
+        const unsigned int   n_output      = output_layout.size();
         if (n_output == 0)
           return;
         for (const auto &name : output_layout.component_names(dim))

@@ -7,6 +7,21 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /// The number of doubles of @p fields together.
+    unsigned int
+    count_components(const std::vector<StateField> &fields)
+    {
+      unsigned int n = 0;
+      for (const auto &field : fields)
+        n += field.n_components;
+      return n;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<StateField>
   ConstitutiveModel<dim>::state_fields() const
@@ -144,10 +159,7 @@ namespace qsmpm
   unsigned int
   ConstitutiveModel<dim>::n_state_components() const
   {
-    unsigned int n = 0;
-    for (const auto &field : state_fields())
-      n += field.n_components;
-    return n;
+    return count_components(state_fields());
   }
 
 
@@ -156,10 +168,7 @@ namespace qsmpm
   unsigned int
   ConstitutiveModel<dim>::n_output_components() const
   {
-    unsigned int n = 0;
-    for (const auto &field : output_fields())
-      n += field.n_components;
-    return n;
+    return count_components(output_fields());
   }
 
 

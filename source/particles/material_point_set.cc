@@ -495,18 +495,35 @@ namespace qsmpm
 
 
   template <int dim>
+  unsigned int
+  MaterialPointSet<dim>::n_state_components() const
+  {
+    return layout.size() - offsets.state;
+  }
+
+
+
+  template <int dim>
   PointState<dim>
   MaterialPointSet<dim>::point_state(
     const Particles::ParticleAccessor<dim> &particle) const
   {
-    const double *data = particle.get_properties().data();
-    return {Utils::read_symmetric<dim>(data + offsets.strain),
-            Utils::read_symmetric<dim>(data + offsets.stress),
-            ArrayView<const double>(data + offsets.state,
-                                    model.n_state_components()),
-            data[offsets.volume],
-            static_cast<unsigned int>(data[offsets.material_id]),
-            particle.get_location()};
+    return read_point_state(particle.get_properties().data(),
+                            offsets,
+                            n_state_components(),
+                            particle.get_location());
+  }
+
+
+
+  template <int dim>
+  PropertyLayout
+  MaterialPointSet<dim>::output_layout() const
+  {
+    PropertyLayout output;
+    for (const auto &field : model.output_fields())
+      output.add(field.name, field.n_components, PropertyLayout::Kind::scalar);
+    return output;
   }
 
 

@@ -8,6 +8,7 @@
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <qsmpm/base/parameter_struct.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/formulation.h>
@@ -191,11 +192,43 @@ namespace qsmpm
     get_formulation() const;
 
     /**
+     * The committed state of the point whose properties are @p data, at
+     * @p position, as its constitutive model sees it (the state view, of
+     * @p n_state doubles, points into @p data). The one place that reads
+     * it: the residual and the tangent call it for every point.
+     */
+    static PointState<dim>
+    read_point_state(const double      *data,
+                     const Offsets     &offsets,
+                     const unsigned int n_state,
+                     const Point<dim>  &position)
+    {
+      return {Utils::read_symmetric<dim>(data + offsets.strain),
+              Utils::read_symmetric<dim>(data + offsets.stress),
+              ArrayView<const double>(data + offsets.state, n_state),
+              data[offsets.volume],
+              static_cast<unsigned int>(data[offsets.material_id]),
+              position};
+    }
+
+    /// Number of doubles of the model's own fields per point (the last
+    /// fields of the layout).
+    unsigned int
+    n_state_components() const;
+
+    /**
      * The committed state of @p particle as its constitutive model sees it
      * (the state view points into the particle's properties).
      */
     PointState<dim>
     point_state(const Particles::ParticleAccessor<dim> &particle) const;
+
+    /**
+     * The layout of the model's output fields (ConstitutiveModel::
+     * output_fields()), in the order compute_output_fields() writes them.
+     */
+    PropertyLayout
+    output_layout() const;
 
     /**
      * The values of the model's output fields (ConstitutiveModel::
