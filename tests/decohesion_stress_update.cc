@@ -20,7 +20,9 @@
 //   zero at complete failure (and close to zero just before it, where
 //   abrupt retention still carries mu gamma); the dissipation summed to
 //   complete failure is G_f / L_c plus the elastic shear energy
-//   mu gamma^2 / 2; the preconditioner's shear stiffness is beta mu.
+//   mu gamma^2 / 2; the preconditioner's shear stiffness is beta mu; a
+//   completely failed crack closes without traction down to w = u0
+//   (contact), the abrupt one keeps its opening.
 //
 // Tolerance 1e-12 (relative to tau_nf, u0 or h): the updates are closed
 // form, so only round-off remains (measured <= 6e-14; strains of order
@@ -330,6 +332,28 @@ main()
     const double expected = G_f / L + 0.5 * mu * gamma * gamma;
     check("  sum of dissipation() = G_f / L_c + mu gamma^2 / 2, relative",
           (dissipated - expected) / expected,
+          1e-12);
+    // A completely failed crack closes without traction (w falls back by
+    // the closing times L_c, nothing dissipated), down to w = u0, where it
+    // is in contact and compressed elastically. (The paper's abrupt model
+    // keeps w: "after failure, closing" above.)
+    const double  w2     = a.state[w_lin];
+    MaterialPoint before = a;
+    step(linear, a, uniaxial(-0.1 * u0 / L));
+    check("  failed, closing: |sigma| / tau_nf (traction free)",
+          a.stress.norm() / tau,
+          1e-12);
+    check("  failed, closing: |w - (w_before - 0.1 u0)| / u0",
+          (a.state[w_lin] - (w2 - 0.1 * u0)) / u0,
+          1e-12);
+    check("  failed, closing: dissipation / (G_f / L_c)",
+          D(before, a) / (G_f / L),
+          1e-12);
+    const double w3 = a.state[w_lin];
+    step(linear, a, uniaxial(-((w3 - u0) / L + 0.2 * u0 / L)));
+    check("  closed to contact: |w / u0 - 1|", a.state[w_lin] / u0 - 1., 1e-12);
+    check("  in contact: |sigma_xx + M 0.2 u0 / L_c| / tau_nf",
+          (a.stress[0][0] + M * 0.2 * u0 / L) / tau,
           1e-12);
 
     // Opening first, then shear in one or in 50 increments.

@@ -6,6 +6,52 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /**
+     * The tangent C_akbl of the stiffness K = sum_p Omega_p B^T C B at the
+     * committed state of a point, and the volume Omega_p it is integrated
+     * over: the small-strain tangent on the current volume, or at finite
+     * strain the tangent of the first Piola stress on the initial volume.
+     */
+    template <int dim>
+    void
+    point_tangent(const ConstitutiveModel<dim>                   &model,
+                  const typename MaterialPointSet<dim>::Offsets &offsets,
+                  const bool                    finite_strain,
+                  const double                 *data,
+                  const PointState<dim>        &state,
+                  Tensor<4, dim>               &C,
+                  double                       &volume)
+    {
+      if (finite_strain)
+        {
+          // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
+          // G = grad_n d(du), on the initial volume (see
+          // QuasiStaticResidual).
+          FiniteStrainKinematics<dim> kinematics;
+          kinematics.F_old =
+            Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+          kinematics.delta_F = unit_symmetric_tensor<dim>();
+          kinematics.F       = kinematics.F_old;
+          C = model.kirchhoff_tangent(state, kinematics);
+          const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                C[a][k][k][l] -= tau[a][l];
+          volume = data[offsets.initial_volume];
+        }
+      else
+        {
+          C      = Tensor<4, dim>(model.tangent(state));
+          volume = data[offsets.volume];
+        }
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   TangentAssembler<dim>::reinit(const BackgroundGrid<dim> &grid,
@@ -110,30 +156,8 @@ namespace qsmpm
                                                       cache.position(p));
             Tensor<4, dim> C;
             double         volume;
-            if (finite_strain)
-              {
-                // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
-                // G = grad_n d(du), on the initial volume (see
-                // QuasiStaticResidual).
-                FiniteStrainKinematics<dim> kinematics;
-                kinematics.F_old =
-                  Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-                kinematics.delta_F = unit_symmetric_tensor<dim>();
-                kinematics.F       = kinematics.F_old;
-                C                  = model.kirchhoff_tangent(state, kinematics);
-                const SymmetricTensor<2, dim> tau =
-                  data[offsets.J] * state.stress;
-                for (unsigned int a = 0; a < dim; ++a)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    for (unsigned int l = 0; l < dim; ++l)
-                      C[a][k][k][l] -= tau[a][l];
-                volume = data[offsets.initial_volume];
-              }
-            else
-              {
-                C      = Tensor<4, dim>(model.tangent(state));
-                volume = data[offsets.volume];
-              }
+            point_tangent(
+              model, offsets, finite_strain, data, state, C, volume);
             // K_(v,a),(w,b) = Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l
             for (unsigned int v = 0; v < stencil; ++v)
               for (unsigned int w = 0; w < stencil; ++w)
@@ -171,6 +195,60 @@ namespace qsmpm
       if (constraints.is_constrained(dof) && K.diag_element(dof) == 0.)
         K.set(dof, dof, scale);
     K.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  TangentAssembler<dim>::assemble_diagonal(
+    const MaterialPointSet<dim>   &points,
+    const ShapeCache<dim>         &cache,
+    TrilinosWrappers::MPI::Vector &diagonal)
+  {
+    const auto        &offsets       = points.get_offsets();
+    const auto        &model         = points.get_model();
+    const unsigned int n_state       = model.n_state_components();
+    const bool         finite_strain = points.get_formulation().finite_strain();
+
+    diagonal = 0.;
+    std::vector<double> cell_diagonal(ShapeCache<dim>::max_dofs_per_group);
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        std::fill(cell_diagonal.begin(),
+                  cell_diagonal.begin() + cache.n_dofs(c),
+                  0.);
+        const auto &range = cache.cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double         *data   = cache.properties(p);
+            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const unsigned short *nodes  = cache.nodes(p);
+            const PointState<dim> state =
+              MaterialPointSet<dim>::read_point_state(data,
+                                                      offsets,
+                                                      n_state,
+                                                      cache.position(p));
+            Tensor<4, dim> C;
+            double         volume;
+            point_tangent(
+              model, offsets, finite_strain, data, state, C, volume);
+            // K_(v,a),(v,a) = Omega sum_kl dN_v/dx_k C_akal dN_v/dx_l
+            for (unsigned int v = 0; v < cache.stencil_size(p); ++v)
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  double sum = 0;
+                  for (unsigned int k = 0; k < dim; ++k)
+                    for (unsigned int l = 0; l < dim; ++l)
+                      sum += grad_N[v][k] * C[a][k][a][l] * grad_N[v][l];
+                  cell_diagonal[nodes[v] * dim + a] += volume * sum;
+                }
+          }
+        diagonal.add(cache.n_dofs(c),
+                     cache.global_dofs(c),
+                     cell_diagonal.data());
+      }
+    diagonal.compress(VectorOperation::add);
   }
 
 

@@ -236,6 +236,44 @@ namespace qsmpm
 
 
   template <int dim>
+  IndexSet
+  QuasiStaticProblem<dim>::dofs_without_stiffness() const
+  {
+    // The stiffness of each dof against its own motion, compared with the
+    // mean over the dofs that have any: relative, so that the threshold
+    // does not depend on the units or the material.
+    TrilinosWrappers::MPI::Vector diagonal(background_grid.locally_owned_dofs(),
+                                           communicator);
+    TangentAssembler<dim>::assemble_diagonal(points(), cache, diagonal);
+    double sum = 0., count = 0.;
+    for (const auto dof : background_grid.locally_owned_dofs())
+      if (diagonal(dof) > 0.)
+        {
+          sum += diagonal(dof);
+          count += 1.;
+        }
+    sum   = dealii::Utilities::MPI::sum(sum, communicator);
+    count = dealii::Utilities::MPI::sum(count, communicator);
+    const double threshold =
+      prm_values.material_points.min_nodal_stiffness_fraction *
+      (count > 0. ? sum / count : 0.);
+
+    TrilinosWrappers::MPI::Vector ghosted(background_grid.locally_owned_dofs(),
+                                          background_grid
+                                            .locally_relevant_dofs(),
+                                          communicator);
+    ghosted = diagonal;
+    IndexSet weak(background_grid.get_dof_handler().n_dofs());
+    for (const auto dof : background_grid.locally_relevant_dofs())
+      if (ghosted(dof) <= threshold)
+        weak.add_index(dof);
+    weak.compress();
+    return weak;
+  }
+
+
+
+  template <int dim>
   void
   QuasiStaticProblem<dim>::make_step_constraints(
     const double               t_old,
@@ -298,6 +336,18 @@ namespace qsmpm
     for (const auto dof : inactive)
       if (!constraints.is_constrained(dof))
         constraints.add_line(dof);
+
+    // A node may have points but no stiffness in a direction: all of them
+    // have lost it, as the points of a completely failed crack band that
+    // opens, when the intact points beside it have moved out of the node's
+    // cells. Its equation in that direction is 0 = 0 (the points carry no
+    // stress that it could balance), the step's Jacobian is singular, and
+    // Newton diverges. Holding it, like a node without points, leaves the
+    // equilibrium of the other nodes unchanged.
+    if (prm_values.material_points.min_nodal_stiffness_fraction > 0.)
+      for (const auto dof : dofs_without_stiffness())
+        if (!constraints.is_constrained(dof))
+          constraints.add_line(dof);
     constraints.close();
   }
 

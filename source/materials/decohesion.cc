@@ -355,17 +355,37 @@ namespace qsmpm
             w += dw;
             const SymmetricTensor<2, dim> nn = symmetrize(outer_product(n, n));
             stress -= (dw / L_c) * (C * nn);
-            // A completely failed crack that opens is traction free: also
-            // the shear traction t_s = sigma.n - tau_n n is released, by a
-            // tangential jump du_s = L_c t_s / mu (for isotropic C,
-            // C:sym(du_s (x) n).n = mu du_s when du_s is normal to n, which
-            // leaves tau_n = 0 unchanged).
-            if (w >= u0 && shear_retention == ShearRetention::abrupt)
-              {
-                const Tensor<1, dim> t    = stress * n;
-                const Tensor<1, dim> slip = t - (t * n) * n;
-                stress -= (C * symmetrize(outer_product(slip, n))) / mu;
-              }
+          }
+        // With linear retention, a completely failed crack that closes does
+        // so without traction: its opening falls back, down to u0 (below
+        // that, the crack is in contact and closes elastically at constant
+        // opening, as any crack that unloads). Otherwise the slightest
+        // closing of a broken band meets the full normal stiffness M at
+        // once, at whatever opening it had reached: a strut across an open
+        // crack, which in the far tail of a fracture test carries load that
+        // no crack could. The paper's model (abrupt) keeps the opening of
+        // a crack that unloads; with its sudden shear release, a free
+        // closing makes Newton alternate between the two states.
+        else if (shear_retention == ShearRetention::linear && w > u0 &&
+                 tau_trial < 0.)
+          {
+            // (w = u0 exactly in contact.)
+            const double w_new = std::max(w + tau_trial * L_c / M, u0);
+            stress -=
+              ((w_new - w) / L_c) * (C * symmetrize(outer_product(n, n)));
+            w = w_new;
+          }
+        // A completely failed crack that opens is traction free: with
+        // abrupt retention also the shear traction t_s = sigma.n - tau_n n
+        // is released, by a tangential jump du_s = L_c t_s / mu (for
+        // isotropic C, C:sym(du_s (x) n).n = mu du_s when du_s is normal to
+        // n, which leaves tau_n = 0 unchanged).
+        if (shear_retention == ShearRetention::abrupt && excess > 0. &&
+            w >= u0)
+          {
+            const Tensor<1, dim> t    = stress * n;
+            const Tensor<1, dim> slip = t - (t * n) * n;
+            stress -= (C * symmetrize(outer_product(slip, n))) / mu;
           }
         // Linear shear retention: with the band's shear strain gamma_s since
         // initiation, mu gamma_s = t_tr + (mu / L_c) s_old (the trial shear

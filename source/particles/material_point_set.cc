@@ -115,6 +115,19 @@ namespace qsmpm
         "Newton stall at large deformation (most of all with F-bar); a "
         "value of about 0.01 removes those nodes.",
         Patterns::Double(0., 1.));
+      prm.add_parameter(
+        "Minimum nodal stiffness",
+        min_nodal_stiffness_fraction,
+        "Degrees of freedom whose stiffness against their own motion (the "
+        "diagonal of the tangent the models give at the points, K_ii = "
+        "sum_p Omega_p grad N_i . C_p . grad N_i) is at most this fraction "
+        "of its mean over the grid are held fixed in the step, like the "
+        "nodes without points. A node whose points have all lost their "
+        "stiffness in a direction -- the points of a completely failed "
+        "crack band that opens, once the intact points beside them have "
+        "left the node's cells -- has none, and the step's Jacobian would "
+        "be singular. 0: never.",
+        Patterns::Double(0., 1.));
     }
     prm.leave_subsection();
   }

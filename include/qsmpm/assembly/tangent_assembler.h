@@ -48,6 +48,20 @@ namespace qsmpm
     const TrilinosWrappers::SparseMatrix &
     matrix() const;
 
+    /**
+     * The diagonal of K without any constraint, K_(i,a),(i,a) = sum_p
+     * Omega_p grad N_i . C_p[a, ., a, .] . grad N_i: the stiffness of each
+     * degree of freedom against its own motion. @p diagonal is a vector of
+     * the grid's locally owned dofs; its entries are summed over the ranks.
+     * A node whose points have all lost their stiffness in a direction (a
+     * completely failed crack band that opens) has a zero here: the step's
+     * linear systems are singular unless that dof is held.
+     */
+    static void
+    assemble_diagonal(const MaterialPointSet<dim>   &points,
+                      const ShapeCache<dim>         &cache,
+                      TrilinosWrappers::MPI::Vector &diagonal);
+
   private:
     /// GIMP: the pattern of the couplings that the points reach this step.
     void

@@ -216,6 +216,15 @@ namespace qsmpm
     inactive_dofs() const;
 
     /**
+     * The degrees of freedom whose stiffness against their own motion (the
+     * diagonal of the tangent, TangentAssembler::assemble_diagonal()) is at
+     * most <Material points/Minimum nodal stiffness> times the mean over
+     * the dofs: held fixed in the step.
+     */
+    IndexSet
+    dofs_without_stiffness() const;
+
+    /**
      * The closed constraints of the step t_old -> t_new: those of the
      * displacement conditions (and periodicity), checked against the
      * material, and zero increments on the nodes without enough material.

@@ -59,6 +59,9 @@ namespace qsmpm
       /// Nodes holding less material than this fraction of a cell's volume
       /// are held fixed in a step like nodes without points.
       double min_nodal_volume_fraction = 0.;
+      /// Degrees of freedom whose stiffness (diagonal of the tangent) is at
+      /// most this fraction of the mean are held fixed in a step.
+      double min_nodal_stiffness_fraction = 1e-8;
       /// The material id of a point created at x, an expression in x, y
       /// (and z) whose value is a non-negative integer.
       std::string material_id = "0";
