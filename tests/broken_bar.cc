@@ -69,8 +69,8 @@ namespace
     problem.grid().make_box(Point<2>(), Point<2>(8. * h, h), {{8, 1}});
     Tensor<1, 2> x_normal;
     x_normal[0] = 1.;
-    auto model  = std::make_unique<Decohesion<2>>(
-      E, 0., true, tau, G_f, x_normal, h);
+    auto model =
+      std::make_unique<Decohesion<2>>(E, 0., true, tau, G_f, x_normal, h);
     model->set_crack_region(
       [](const Point<2> &x) { return x[0] > 2. * h && x[0] < 3. * h; });
     // The shear stiffness of the crack falls to zero with the normal one,
@@ -94,19 +94,19 @@ namespace
       x_only,
       std::make_shared<OutAndBack>());
 
-    auto &prm                                          = problem.parameters();
-    prm.nonlinear_solver.tolerance                     = 1e-9;
-    prm.nonlinear_solver.residual_floor                = 0.;
-    prm.nonlinear_solver.linear_tolerance              = 1e-10;
-    prm.nonlinear_solver.max_line_search_steps         = 4;
-    prm.nonlinear_solver.preconditioner                = "direct";
-    prm.load_stepping.n_steps                          = 1400;
-    prm.load_stepping.final_load_factor                = t_end;
-    prm.load_stepping.max_cut_backs                    = 2;
-    prm.material_points.update_volumes                 = false;
-    prm.material_points.min_nodal_stiffness_fraction   = min_nodal_stiffness;
-    prm.output.directory                               = "results";
-    prm.output.interval                                = 0;
+    auto &prm                                        = problem.parameters();
+    prm.nonlinear_solver.tolerance                   = 1e-9;
+    prm.nonlinear_solver.residual_floor              = 0.;
+    prm.nonlinear_solver.linear_tolerance            = 1e-10;
+    prm.nonlinear_solver.max_line_search_steps       = 4;
+    prm.nonlinear_solver.preconditioner              = "direct";
+    prm.load_stepping.n_steps                        = 1400;
+    prm.load_stepping.final_load_factor              = t_end;
+    prm.load_stepping.max_cut_backs                  = 2;
+    prm.material_points.update_volumes               = false;
+    prm.material_points.min_nodal_stiffness_fraction = min_nodal_stiffness;
+    prm.output.directory                             = "results";
+    prm.output.interval                              = 0;
 
     Result result;
     problem.set_step_callback(
@@ -136,8 +136,8 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
 
   const Result held = run(1e-8);
-  deallog << "with the hold: run "
-          << (held.finished ? "finished" : "stopped") << std::endl;
+  deallog << "with the hold: run " << (held.finished ? "finished" : "stopped")
+          << std::endl;
   if (!held.finished)
     deallog << held.message << std::endl;
   const auto  &points = held.curve.points();
@@ -146,19 +146,22 @@ main(int argc, char *argv[])
 
   // Work of the load up to the turn (the trapezoidal rule over the steps).
   // (from the unloaded start, which the curve does not list)
-  double work = 0.5 * points[0].force * points[0].displacement;
+  double work            = 0.5 * points[0].force * points[0].displacement;
   double largest_pulling = 0., largest_pushing = 0.;
   for (unsigned int i = 1; i < points.size(); ++i)
     {
       const double t = points[i].displacement;
       if (t <= t_turn + 1e-12)
-        work += 0.5 * (points[i].force + points[i - 1].force) * (t - points[i - 1].displacement);
+        work += 0.5 * (points[i].force + points[i - 1].force) *
+                (t - points[i - 1].displacement);
       if (t > 1.5 * u0 && t <= t_turn + 1e-12)
         largest_pulling = std::max(largest_pulling, std::abs(points[i].force));
       if (t > t_turn + 1e-12)
         largest_pushing = std::max(largest_pushing, std::abs(points[i].force));
     }
-  check("dissipated energy: |int P du / (G_f A) - 1|", work / (G_f * A) - 1., 0.02);
+  check("dissipated energy: |int P du / (G_f A) - 1|",
+        work / (G_f * A) - 1.,
+        0.02);
   check("no load pulled apart (1.5 u0 < u <= 0.8 h): max |P| / P_max",
         largest_pulling / P_max,
         1e-6);
@@ -171,9 +174,9 @@ main(int argc, char *argv[])
 
   const Result free = run(0.);
   deallog << "control without the hold (Minimum nodal stiffness = 0): run "
-          << (free.finished ? "finished" : "stopped") << " at u = "
-          << std::setprecision(2) << free.curve.points().back().displacement
-          << std::endl;
+          << (free.finished ? "finished" : "stopped")
+          << " at u = " << std::setprecision(2)
+          << free.curve.points().back().displacement << std::endl;
   check_at_least("control: 1 - t_last / 1.4 (it stops before the end)",
                  1. - free.curve.points().back().displacement / t_end,
                  1e-3);

@@ -16,13 +16,13 @@ namespace qsmpm
      */
     template <int dim>
     void
-    point_tangent(const ConstitutiveModel<dim>                   &model,
+    point_tangent(const ConstitutiveModel<dim>                  &model,
                   const typename MaterialPointSet<dim>::Offsets &offsets,
-                  const bool                    finite_strain,
-                  const double                 *data,
-                  const PointState<dim>        &state,
-                  Tensor<4, dim>               &C,
-                  double                       &volume)
+                  const bool                                     finite_strain,
+                  const double                                  *data,
+                  const PointState<dim>                         &state,
+                  Tensor<4, dim>                                &C,
+                  double                                        &volume)
     {
       if (finite_strain)
         {
@@ -34,7 +34,7 @@ namespace qsmpm
             Utils::read_tensor<dim>(data + offsets.deformation_gradient);
           kinematics.delta_F = unit_symmetric_tensor<dim>();
           kinematics.F       = kinematics.F_old;
-          C = model.kirchhoff_tangent(state, kinematics);
+          C                  = model.kirchhoff_tangent(state, kinematics);
           const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
           for (unsigned int a = 0; a < dim; ++a)
             for (unsigned int k = 0; k < dim; ++k)

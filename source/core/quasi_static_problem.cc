@@ -258,10 +258,10 @@ namespace qsmpm
       prm_values.material_points.min_nodal_stiffness_fraction *
       (count > 0. ? sum / count : 0.);
 
-    TrilinosWrappers::MPI::Vector ghosted(background_grid.locally_owned_dofs(),
-                                          background_grid
-                                            .locally_relevant_dofs(),
-                                          communicator);
+    TrilinosWrappers::MPI::Vector ghosted(
+      background_grid.locally_owned_dofs(),
+      background_grid.locally_relevant_dofs(),
+      communicator);
     ghosted = diagonal;
     IndexSet weak(background_grid.get_dof_handler().n_dofs());
     for (const auto dof : background_grid.locally_relevant_dofs())

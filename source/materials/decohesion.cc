@@ -192,7 +192,9 @@ namespace qsmpm
       "[[u_n]]/u0) mu gamma_s (a shear retention factor), so that the "
       "traction vanishes continuously at complete failure; the stress "
       "update has no jump there, which path following through complete "
-      "failure needs.");
+      "failure needs. A completely failed crack then also closes without "
+      "traction down to the opening u0 (contact); with abrupt retention a "
+      "crack that unloads keeps its opening.");
     prm.add_parameter("Cracking region",
                       cracking_region,
                       "An expression in x, y (and z): points created where it "
@@ -380,8 +382,7 @@ namespace qsmpm
         // is released, by a tangential jump du_s = L_c t_s / mu (for
         // isotropic C, C:sym(du_s (x) n).n = mu du_s when du_s is normal to
         // n, which leaves tau_n = 0 unchanged).
-        if (shear_retention == ShearRetention::abrupt && excess > 0. &&
-            w >= u0)
+        if (shear_retention == ShearRetention::abrupt && excess > 0. && w >= u0)
           {
             const Tensor<1, dim> t    = stress * n;
             const Tensor<1, dim> slip = t - (t * n) * n;

@@ -105,7 +105,9 @@ namespace qsmpm
       /// beta = max(0, 1 - [[u_n]]/u0), where gamma_s is the band's shear
       /// strain since initiation (Rots' shear retention factor). The
       /// traction goes to zero continuously at complete failure instead of
-      /// jumping there.
+      /// jumping there. A completely failed crack then also closes without
+      /// traction, down to the opening u0 (contact); with abrupt retention
+      /// a crack that unloads keeps its opening, as in the paper.
       linear
     };
 
