@@ -15,39 +15,58 @@ namespace qsmpm
      * strain the tangent of the first Piola stress on the initial volume.
      */
     template <int dim>
-    void
-    point_tangent(const ConstitutiveModel<dim>                  &model,
-                  const typename MaterialPointSet<dim>::Offsets &offsets,
-                  const bool                                     finite_strain,
-                  const double                                  *data,
-                  const PointState<dim>                         &state,
-                  Tensor<4, dim>                                &C,
-                  double                                        &volume)
+    class PointTangent
     {
-      if (finite_strain)
-        {
-          // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
-          // G = grad_n d(du), on the initial volume (see
-          // QuasiStaticResidual).
-          FiniteStrainKinematics<dim> kinematics;
-          kinematics.F_old =
-            Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-          kinematics.delta_F = unit_symmetric_tensor<dim>();
-          kinematics.F       = kinematics.F_old;
-          C                  = model.kirchhoff_tangent(state, kinematics);
-          const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int l = 0; l < dim; ++l)
-                C[a][k][k][l] -= tau[a][l];
-          volume = data[offsets.initial_volume];
-        }
-      else
-        {
-          C      = Tensor<4, dim>(model.tangent(state));
-          volume = data[offsets.volume];
-        }
-    }
+    public:
+      explicit PointTangent(const MaterialPointSet<dim> &points)
+        : model(points.get_model())
+        , offsets(points.get_offsets())
+        , n_state(model.n_state_components())
+        , finite_strain(points.get_formulation().finite_strain())
+      {
+      }
+
+      /// C and Omega of the point @p p of @p cache.
+      void
+      operator()(const ShapeCache<dim> &cache,
+                 const unsigned int     p,
+                 Tensor<4, dim>        &C,
+                 double                &volume) const
+      {
+        const double         *data  = cache.properties(p);
+        const PointState<dim> state = MaterialPointSet<dim>::read_point_state(
+          data, offsets, n_state, cache.position(p));
+        if (finite_strain)
+          {
+            // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
+            // G = grad_n d(du), on the initial volume (see
+            // QuasiStaticResidual).
+            FiniteStrainKinematics<dim> kinematics;
+            kinematics.F_old =
+              Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+            kinematics.delta_F = unit_symmetric_tensor<dim>();
+            kinematics.F       = kinematics.F_old;
+            C                  = model.kirchhoff_tangent(state, kinematics);
+            const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int k = 0; k < dim; ++k)
+                for (unsigned int l = 0; l < dim; ++l)
+                  C[a][k][k][l] -= tau[a][l];
+            volume = data[offsets.initial_volume];
+          }
+        else
+          {
+            C      = Tensor<4, dim>(model.tangent(state));
+            volume = data[offsets.volume];
+          }
+      }
+
+    private:
+      const ConstitutiveModel<dim>                  &model;
+      const typename MaterialPointSet<dim>::Offsets &offsets;
+      const unsigned int                             n_state;
+      const bool                                     finite_strain;
+    };
   } // namespace
 
 
@@ -128,10 +147,7 @@ namespace qsmpm
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints)
   {
-    const auto        &offsets       = points.get_offsets();
-    const auto        &model         = points.get_model();
-    const unsigned int n_state       = model.n_state_components();
-    const bool         finite_strain = points.get_formulation().finite_strain();
+    const PointTangent<dim> point_tangent(points);
 
     if (pattern_per_step)
       make_step_pattern(grid, cache);
@@ -145,19 +161,12 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const double         *data    = cache.properties(p);
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
-            const PointState<dim> state =
-              MaterialPointSet<dim>::read_point_state(data,
-                                                      offsets,
-                                                      n_state,
-                                                      cache.position(p));
-            Tensor<4, dim> C;
-            double         volume;
-            point_tangent(
-              model, offsets, finite_strain, data, state, C, volume);
+            Tensor<4, dim>        C;
+            double                volume;
+            point_tangent(cache, p, C, volume);
             // K_(v,a),(w,b) = Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l
             for (unsigned int v = 0; v < stencil; ++v)
               for (unsigned int w = 0; w < stencil; ++w)
@@ -206,10 +215,7 @@ namespace qsmpm
     const ShapeCache<dim>         &cache,
     TrilinosWrappers::MPI::Vector &diagonal)
   {
-    const auto        &offsets       = points.get_offsets();
-    const auto        &model         = points.get_model();
-    const unsigned int n_state       = model.n_state_components();
-    const bool         finite_strain = points.get_formulation().finite_strain();
+    const PointTangent<dim> point_tangent(points);
 
     diagonal = 0.;
     std::vector<double> cell_diagonal(ShapeCache<dim>::max_dofs_per_group);
@@ -221,18 +227,11 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const double         *data   = cache.properties(p);
             const Tensor<1, dim> *grad_N = cache.gradients(p);
             const unsigned short *nodes  = cache.nodes(p);
-            const PointState<dim> state =
-              MaterialPointSet<dim>::read_point_state(data,
-                                                      offsets,
-                                                      n_state,
-                                                      cache.position(p));
-            Tensor<4, dim> C;
-            double         volume;
-            point_tangent(
-              model, offsets, finite_strain, data, state, C, volume);
+            Tensor<4, dim>        C;
+            double                volume;
+            point_tangent(cache, p, C, volume);
             // K_(v,a),(v,a) = Omega sum_kl dN_v/dx_k C_akal dN_v/dx_l
             for (unsigned int v = 0; v < cache.stencil_size(p); ++v)
               for (unsigned int a = 0; a < dim; ++a)

@@ -258,17 +258,7 @@ namespace qsmpm
       prm_values.material_points.min_nodal_stiffness_fraction *
       (count > 0. ? sum / count : 0.);
 
-    TrilinosWrappers::MPI::Vector ghosted(
-      background_grid.locally_owned_dofs(),
-      background_grid.locally_relevant_dofs(),
-      communicator);
-    ghosted = diagonal;
-    IndexSet weak(background_grid.get_dof_handler().n_dofs());
-    for (const auto dof : background_grid.locally_relevant_dofs())
-      if (ghosted(dof) <= threshold)
-        weak.add_index(dof);
-    weak.compress();
-    return weak;
+    return background_grid.dofs_at_most(diagonal, threshold);
   }
 
 

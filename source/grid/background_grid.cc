@@ -264,6 +264,25 @@ namespace qsmpm
 
 
   template <int dim>
+  IndexSet
+  BackgroundGrid<dim>::dofs_at_most(const TrilinosWrappers::MPI::Vector &sums,
+                                    const double threshold) const
+  {
+    TrilinosWrappers::MPI::Vector ghosted(owned_dofs,
+                                          relevant_dofs,
+                                          get_communicator());
+    ghosted = sums;
+    IndexSet result(dof_handler.n_dofs());
+    for (const auto dof : relevant_dofs)
+      if (ghosted(dof) <= threshold)
+        result.add_index(dof);
+    result.compress();
+    return result;
+  }
+
+
+
+  template <int dim>
   MPI_Comm
   BackgroundGrid<dim>::get_communicator() const
   {

@@ -355,17 +355,7 @@ namespace qsmpm
           count.add(n_dofs(c), global_dofs(c), ones.data());
       }
     count.compress(VectorOperation::add);
-    TrilinosWrappers::MPI::Vector ghosted(grid.locally_owned_dofs(),
-                                          grid.locally_relevant_dofs(),
-                                          grid.get_communicator());
-    ghosted = count;
-
-    IndexSet inactive(grid.get_dof_handler().n_dofs());
-    for (const auto dof : grid.locally_relevant_dofs())
-      if (ghosted(dof) <= min_nodal_volume)
-        inactive.add_index(dof);
-    inactive.compress();
-    return inactive;
+    return grid.dofs_at_most(count, min_nodal_volume);
   }
 
 

@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/base/parameter_struct.h>
 #include <vector>
 
@@ -149,6 +150,16 @@ namespace qsmpm
     locally_relevant_dofs() const;
     MPI_Comm
     get_communicator() const;
+
+    /**
+     * The locally relevant dofs whose entry of @p sums (a vector of the
+     * locally owned dofs, its entries summed over the ranks and compressed)
+     * is at most @p threshold: the nodes without enough material or
+     * stiffness, the same on every rank that sees them.
+     */
+    IndexSet
+    dofs_at_most(const TrilinosWrappers::MPI::Vector &sums,
+                 const double                         threshold) const;
 
     /// Lower and upper corners of the box.
     const Point<dim> &
