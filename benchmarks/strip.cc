@@ -105,6 +105,15 @@ main(int argc, char *argv[])
       const double setup = sections.count("preconditioner setup") > 0 ?
                              sections.at("preconditioner setup") :
                              0.;
+      // Where the time goes: every section of the problem's timer.
+      for (const auto &[name, seconds] : sections)
+        {
+          std::string key = "seconds_" + name;
+          for (char &c : key)
+            if (c == ' ' || c == '(' || c == ')')
+              c = '_';
+          Benchmarks::print(key, seconds);
+        }
       Benchmarks::print("seconds_per_step", timer.wall_time() / n_steps);
       Benchmarks::print("preconditioner_setup_share",
                         setup / timer.wall_time());

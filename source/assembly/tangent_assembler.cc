@@ -105,6 +105,7 @@ namespace qsmpm
                                       grid.get_communicator()));
     pattern.compress();
     K.reinit(pattern);
+    ++n_patterns;
   }
 
 
@@ -136,6 +137,7 @@ namespace qsmpm
       pattern.add(dof, dof);
     pattern.compress();
     K.reinit(pattern);
+    ++n_patterns;
   }
 
 

@@ -380,11 +380,13 @@ namespace qsmpm
     // iterations. K is not reassembled either (with GIMP its pattern may
     // change, and AMG and KLU refer to it).
     const auto &solver_prm = prm_values.nonlinear_solver;
+    preconditioner_reused  = preconditioner.needs_matrix();
     if (preconditioner.needs_matrix() &&
         (preconditioner_age == 0 ||
          preconditioner_age >= solver_prm.preconditioner_reuse_steps))
       {
         preconditioner_age = 0;
+        preconditioner_reused = false;
         ++preconditioner_builds;
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
@@ -394,7 +396,10 @@ namespace qsmpm
                            step_constraints.get());
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
-        preconditioner.setup(tangent.matrix(), background_grid);
+        preconditioner.setup(tangent.matrix(),
+                             background_grid,
+                             tangent.pattern_generation() == factored_pattern);
+        factored_pattern = tangent.pattern_generation();
       }
   }
 
@@ -685,6 +690,20 @@ namespace qsmpm
           stepper.path_following() ?
               advance_path_following(stepper, newton, t_new, force_new) :
               advance(t_old, t_new, newton);
+        // A preconditioner kept from an earlier step may no longer fit
+        // (the paper's one point per cell leaves K nearly singular in its
+        // hourglass modes, and those of an older K need not be the
+        // Jacobian's): the step is tried again with a new one before its
+        // increment is cut. count_preconditioner_use() has marked it for
+        // rebuilding.
+        if (!converged && preconditioner_reused)
+          {
+            progress << "  step " << stepper.step() + 1
+                     << " failed with the preconditioner of an earlier step ("
+                     << newton.failure << "), trying again with a new one"
+                     << std::endl;
+            continue;
+          }
         if (!converged)
           {
             progress << "  step " << stepper.step() + 1 << ": t = " << t_old;

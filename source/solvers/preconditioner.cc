@@ -1,3 +1,4 @@
+#include <Amesos.h>
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
 #include <deal.II/base/exceptions.h>
@@ -100,7 +101,8 @@ namespace qsmpm
   template <int dim>
   void
   Preconditioner<dim>::setup(const TrilinosWrappers::SparseMatrix &K,
-                             const BackgroundGrid<dim>            &grid)
+                             const BackgroundGrid<dim>            &grid,
+                             const bool                            same_pattern)
   {
     if (preconditioner_type == Type::jacobi)
       jacobi.initialize(K);
@@ -136,11 +138,29 @@ namespace qsmpm
       }
     else if (preconditioner_type == Type::direct)
       {
-        direct.reset();
-        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-          direct_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-        direct->initialize(K);
+        // Amesos directly rather than deal.II's SolverDirect: the symbolic
+        // factorization (ordering, block triangular form) depends on the
+        // pattern only and is kept while it stays the same; a new K with
+        // the same pattern only needs a numeric factorization.
+        if (!direct || !same_pattern)
+          {
+            direct.reset();
+            direct_problem = std::make_unique<Epetra_LinearProblem>();
+            direct_problem->SetOperator(
+              const_cast<Epetra_CrsMatrix *>(&K.trilinos_matrix()));
+            Amesos factory;
+            direct.reset(factory.Create("Amesos_Klu", *direct_problem));
+            AssertThrow(direct != nullptr,
+                        ExcMessage("Preconditioner = direct: Trilinos was "
+                                   "built without Amesos KLU."));
+            AssertThrow(direct->SymbolicFactorization() == 0,
+                        ExcMessage("Preconditioner = direct: the symbolic "
+                                   "factorization of the stiffness failed."));
+          }
+        AssertThrow(direct->NumericFactorization() == 0,
+                    ExcMessage("Preconditioner = direct: the stiffness is "
+                               "singular (KLU's numeric factorization "
+                               "failed)."));
       }
   }
 
@@ -163,7 +183,12 @@ namespace qsmpm
           amg.vmult(dst, src);
           break;
         case Type::direct:
-          direct->solve(dst, src);
+          direct_problem->SetLHS(&dst.trilinos_vector());
+          direct_problem->SetRHS(
+            const_cast<Epetra_MultiVector *>(static_cast<const Epetra_MultiVector *>(&src.trilinos_vector())));
+          AssertThrow(direct->Solve() == 0,
+                      ExcMessage("Preconditioner = direct: KLU's solve "
+                                 "failed."));
           break;
       }
     // J ~ -K.

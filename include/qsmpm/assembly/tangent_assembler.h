@@ -49,6 +49,17 @@ namespace qsmpm
     matrix() const;
 
     /**
+     * A number that changes whenever matrix() gets a new sparsity pattern
+     * (in reinit(), and with GIMP in every assemble()): while it stays the
+     * same, a factorization may keep its symbolic part.
+     */
+    unsigned int
+    pattern_generation() const
+    {
+      return n_patterns;
+    }
+
+    /**
      * The diagonal of K without any constraint, K_(i,a),(i,a) = sum_p
      * Omega_p grad N_i . C_p[a, ., a, .] . grad N_i: the stiffness of each
      * degree of freedom against its own motion. @p diagonal is a vector of
@@ -72,6 +83,7 @@ namespace qsmpm
     AffineConstraints<double>      periodicity;
     IndexSet                       writable_rows;
     bool                           pattern_per_step = false;
+    unsigned int                   n_patterns       = 0;
   };
 } // namespace qsmpm
 

@@ -279,6 +279,10 @@ namespace qsmpm
     unsigned int                            preconditioner_age    = 0;
     double                                  preconditioner_rate   = 0.;
     unsigned int                            preconditioner_builds = 0;
+    /// Whether the last prepare_step() kept an earlier preconditioner.
+    bool preconditioner_reused = false;
+    /// TangentAssembler::pattern_generation() of the last build.
+    unsigned int factored_pattern = numbers::invalid_unsigned_int;
     StepConstraints                         step_constraints;
     VectorType                              du;
     VectorType                              R;

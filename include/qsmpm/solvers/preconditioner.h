@@ -1,6 +1,8 @@
 #ifndef qsmpm_solvers_preconditioner_h
 #define qsmpm_solvers_preconditioner_h
 
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/solver_control.h>
@@ -64,10 +66,16 @@ namespace qsmpm
     bool
     needs_matrix() const;
 
-    /// Build from the stiffness @p K of the current step.
+    /**
+     * Build from the stiffness @p K of the current step. With
+     * @p same_pattern, K has the sparsity pattern (and is the same object)
+     * of the last setup(): "direct" then keeps KLU's symbolic factorization
+     * (its fill-reducing ordering) and only refactors the values.
+     */
     void
     setup(const TrilinosWrappers::SparseMatrix &K,
-          const BackgroundGrid<dim>            &grid);
+          const BackgroundGrid<dim>            &grid,
+          const bool                            same_pattern = false);
 
     /// dst = -P^{-1} src (identity copy for none).
     void
@@ -79,9 +87,10 @@ namespace qsmpm
     TrilinosWrappers::PreconditionJacobi jacobi;
     TrilinosWrappers::PreconditionAMG    amg;
     std::unique_ptr<Epetra_MultiVector>  rigid_body_modes;
-    /// KLU's factors; solve() is not const in deal.II's interface.
-    mutable SolverControl direct_control{1, 0., false, false};
-    mutable std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    /// The problem KLU works on: K, and the vectors of each vmult().
+    mutable std::unique_ptr<Epetra_LinearProblem> direct_problem;
+    /// Amesos KLU with its symbolic and numeric factorizations of K.
+    std::unique_ptr<Amesos_BaseSolver> direct;
   };
 } // namespace qsmpm
 
