@@ -19,6 +19,7 @@ namespace qsmpm
     , model(points.get_model())
     , update_volumes(update_volumes)
     , state_scratch(points.get_model().n_state_components())
+    , track_dissipation(points.get_model().computes_dissipation())
   {
     reinit();
   }
@@ -266,7 +267,7 @@ namespace qsmpm
                   }
               }
 
-            if (!write_back)
+            if (!write_back && track_dissipation)
               dissipated +=
                 data[offsets.volume] *
                 model.dissipation(old,

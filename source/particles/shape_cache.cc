@@ -1,6 +1,7 @@
 #include <Epetra_BlockMap.h>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/fe/fe_poly.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/shape_cache.h>
 
@@ -143,20 +144,25 @@ namespace qsmpm
           cell_global_dofs.push_back(dof);
         }
 
-    // deal.II's FE_Q(1) evaluated at the points' reference locations; its
-    // shape function v belongs to vertex v.
-    const FiniteElement<dim> &q1 = grid.get_fe().base_element(0);
-    Tensor<1, dim>            reference_gradients[n_vertices];
+    // deal.II's FE_Q(1) evaluated at the points' reference locations, all
+    // shape functions in one call of its polynomial space (FE_Poly's
+    // shape_value(v, xi) is that space's v-th polynomial); shape function
+    // v belongs to vertex v.
+    const auto &q1 =
+      dynamic_cast<const FE_Poly<dim> &>(grid.get_fe().base_element(0));
+    const ScalarPolynomialsBase<dim> &polynomials = q1.get_poly_space();
+    q1_values.resize(n_vertices);
+    q1_gradients.resize(n_vertices);
+    const std::vector<Tensor<1, dim>> &reference_gradients = q1_gradients;
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         // The Jacobian of the Q1 map at the point: exact for any
         // (bi/tri)linear cell, and diagonal on the Cartesian grid.
         const Point<dim> xi = particle.get_reference_location();
+        polynomials.evaluate(
+          xi, q1_values, q1_gradients, q1_unused_2, q1_unused_3, q1_unused_4);
         for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            shape_values[p * stencil + v] = q1.shape_value(v, xi);
-            reference_gradients[v]        = q1.shape_grad(v, xi);
-          }
+          shape_values[p * stencil + v] = q1_values[v];
         Tensor<2, dim> jacobian;
         for (unsigned int v = 0; v < n_vertices; ++v)
           jacobian += outer_product(cell->vertex(v), reference_gradients[v]);

@@ -164,6 +164,10 @@ namespace qsmpm
     mutable TrilinosWrappers::MPI::Vector  du_ghosted;
     mutable std::unique_ptr<Epetra_Vector> local_force;
     mutable std::vector<double>            state_scratch;
+    /// Whether the model computes a dissipation (ConstitutiveModel::
+    /// computes_dissipation()): if not, dissipation() is 0 without asking
+    /// it at every point.
+    const bool track_dissipation;
     /// grad du at the points of the cell being evaluated.
     mutable std::vector<Tensor<2, dim>> grad_du_scratch;
     /// Communication plans owned -> relevant and back, built once: deal.II's

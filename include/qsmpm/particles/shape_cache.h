@@ -233,6 +233,15 @@ namespace qsmpm
     std::vector<Point<dim>>      point_positions;
     /// Scratch of add_gimp_cell().
     std::vector<types::global_dof_index> block_dofs;
+    /// Scratch of add_linear_cell(): the values and reference gradients of
+    /// all Q1 shape functions at one point (one call of the FE's
+    /// polynomial space instead of one per shape function), and the unused
+    /// higher derivatives.
+    std::vector<double>         q1_values;
+    std::vector<Tensor<1, dim>> q1_gradients;
+    std::vector<Tensor<2, dim>> q1_unused_2;
+    std::vector<Tensor<3, dim>> q1_unused_3;
+    std::vector<Tensor<4, dim>> q1_unused_4;
   };
 } // namespace qsmpm
 
