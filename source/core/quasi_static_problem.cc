@@ -385,7 +385,7 @@ namespace qsmpm
         (preconditioner_age == 0 ||
          preconditioner_age >= solver_prm.preconditioner_reuse_steps))
       {
-        preconditioner_age = 0;
+        preconditioner_age    = 0;
         preconditioner_reused = false;
         ++preconditioner_builds;
         {
@@ -694,10 +694,11 @@ namespace qsmpm
         // (the paper's one point per cell leaves K nearly singular in its
         // hourglass modes, and those of an older K need not be the
         // Jacobian's): the step is tried again with a new one before its
-        // increment is cut. count_preconditioner_use() has marked it for
-        // rebuilding.
+        // increment is cut. (Not only after a failed Newton solve:
+        // check_volume_ratios() may reject a converged one.)
         if (!converged && preconditioner_reused)
           {
+            preconditioner_age = 0;
             progress << "  step " << stepper.step() + 1
                      << " failed with the preconditioner of an earlier step ("
                      << newton.failure << "), trying again with a new one"

@@ -183,12 +183,20 @@ namespace qsmpm
           amg.vmult(dst, src);
           break;
         case Type::direct:
-          direct_problem->SetLHS(&dst.trilinos_vector());
-          direct_problem->SetRHS(
-            const_cast<Epetra_MultiVector *>(static_cast<const Epetra_MultiVector *>(&src.trilinos_vector())));
-          AssertThrow(direct->Solve() == 0,
-                      ExcMessage("Preconditioner = direct: KLU's solve "
-                                 "failed."));
+          {
+            // Amesos takes the vectors through the problem; they are
+            // released again so that it holds no pointer to them.
+            Epetra_MultiVector &b = const_cast<Epetra_MultiVector &>(
+              static_cast<const Epetra_MultiVector &>(src.trilinos_vector()));
+            direct_problem->SetLHS(&dst.trilinos_vector());
+            direct_problem->SetRHS(&b);
+            const int ierr = direct->Solve();
+            direct_problem->SetLHS(nullptr);
+            direct_problem->SetRHS(nullptr);
+            AssertThrow(ierr == 0,
+                        ExcMessage("Preconditioner = direct: KLU's solve "
+                                   "failed."));
+          }
           break;
       }
     // J ~ -K.

@@ -276,17 +276,17 @@ namespace qsmpm
     /// Load steps the preconditioner has served (0: build one before the
     /// next step), and its GMRES iterations per Newton iteration in the
     /// first of them (see Nonlinear solver/Preconditioner reuse steps).
-    unsigned int                            preconditioner_age    = 0;
-    double                                  preconditioner_rate   = 0.;
-    unsigned int                            preconditioner_builds = 0;
+    unsigned int preconditioner_age    = 0;
+    double       preconditioner_rate   = 0.;
+    unsigned int preconditioner_builds = 0;
     /// Whether the last prepare_step() kept an earlier preconditioner.
     bool preconditioner_reused = false;
     /// TangentAssembler::pattern_generation() of the last build.
-    unsigned int factored_pattern = numbers::invalid_unsigned_int;
-    StepConstraints                         step_constraints;
-    VectorType                              du;
-    VectorType                              R;
-    VectorType                              f_ext;
+    unsigned int    factored_pattern = numbers::invalid_unsigned_int;
+    StepConstraints step_constraints;
+    VectorType      du;
+    VectorType      R;
+    VectorType      f_ext;
     std::vector<Tensor<1, dim>>             last_reactions;
     std::vector<StepReport>                 reports;
     std::function<bool(const StepReport &)> step_callback;
