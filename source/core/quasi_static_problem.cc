@@ -380,13 +380,14 @@ namespace qsmpm
     // iterations. K is not reassembled either (with GIMP its pattern may
     // change, and AMG and KLU refer to it).
     const auto &solver_prm = prm_values.nonlinear_solver;
-    preconditioner_reused  = preconditioner.needs_matrix();
-    if (preconditioner.needs_matrix() &&
-        (preconditioner_age == 0 ||
-         preconditioner_age >= solver_prm.preconditioner_reuse_steps))
+    const bool  build =
+      preconditioner.needs_matrix() &&
+      (preconditioner_age == 0 ||
+       preconditioner_age >= solver_prm.preconditioner_reuse_steps);
+    preconditioner_reused = preconditioner.needs_matrix() && !build;
+    if (build)
       {
-        preconditioner_age    = 0;
-        preconditioner_reused = false;
+        preconditioner_age = 0;
         ++preconditioner_builds;
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
@@ -398,8 +399,7 @@ namespace qsmpm
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
                              background_grid,
-                             tangent.pattern_generation() == factored_pattern);
-        factored_pattern = tangent.pattern_generation();
+                             tangent.pattern_generation());
       }
   }
 
@@ -472,8 +472,8 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         prm_values.nonlinear_solver, &progress);
       report = newton.solve(op, du, R);
-      count_preconditioner_use(report);
       check_volume_ratios(op, report);
+      count_preconditioner_use(report);
     }
     if (!report.converged)
       return false;
@@ -595,8 +595,8 @@ namespace qsmpm
                             R,
                             force_new,
                             guard);
-      count_preconditioner_use(report);
       check_volume_ratios(op, report);
+      count_preconditioner_use(report);
     }
     t_new = t_old + delta_lambda;
     if (!report.converged)
@@ -694,11 +694,10 @@ namespace qsmpm
         // (the paper's one point per cell leaves K nearly singular in its
         // hourglass modes, and those of an older K need not be the
         // Jacobian's): the step is tried again with a new one before its
-        // increment is cut. (Not only after a failed Newton solve:
-        // check_volume_ratios() may reject a converged one.)
+        // increment is cut. count_preconditioner_use() has marked it for
+        // rebuilding.
         if (!converged && preconditioner_reused)
           {
-            preconditioner_age = 0;
             progress << "  step " << stepper.step() + 1
                      << " failed with the preconditioner of an earlier step ("
                      << newton.failure << "), trying again with a new one"

@@ -153,7 +153,6 @@ namespace qsmpm
     const ScalarPolynomialsBase<dim> &polynomials = q1.get_poly_space();
     q1_values.resize(n_vertices);
     q1_gradients.resize(n_vertices);
-    const std::vector<Tensor<1, dim>> &reference_gradients = q1_gradients;
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         // The Jacobian of the Q1 map at the point: exact for any
@@ -165,12 +164,12 @@ namespace qsmpm
           shape_values[p * stencil + v] = q1_values[v];
         Tensor<2, dim> jacobian;
         for (unsigned int v = 0; v < n_vertices; ++v)
-          jacobian += outer_product(cell->vertex(v), reference_gradients[v]);
+          jacobian += outer_product(cell->vertex(v), q1_gradients[v]);
         const Tensor<2, dim> inverse_transpose = transpose(invert(jacobian));
         for (unsigned int v = 0; v < n_vertices; ++v)
           {
             shape_gradients[p * stencil + v] =
-              inverse_transpose * reference_gradients[v];
+              inverse_transpose * q1_gradients[v];
             stencil_nodes[p * stencil + v] = v;
           }
         // ParticleAccessor::get_properties() is not const, but the

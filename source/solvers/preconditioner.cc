@@ -102,7 +102,7 @@ namespace qsmpm
   void
   Preconditioner<dim>::setup(const TrilinosWrappers::SparseMatrix &K,
                              const BackgroundGrid<dim>            &grid,
-                             const bool                            same_pattern)
+                             const unsigned int                    pattern)
   {
     if (preconditioner_type == Type::jacobi)
       jacobi.initialize(K);
@@ -142,8 +142,10 @@ namespace qsmpm
         // factorization (ordering, block triangular form) depends on the
         // pattern only and is kept while it stays the same; a new K with
         // the same pattern only needs a numeric factorization.
-        if (!direct || !same_pattern)
+        if (!direct || pattern == numbers::invalid_unsigned_int ||
+            pattern != analysed_pattern)
           {
+            analysed_pattern = pattern;
             direct.reset();
             direct_problem = std::make_unique<Epetra_LinearProblem>();
             direct_problem->SetOperator(

@@ -240,7 +240,8 @@ namespace qsmpm
     prepare_step(const double t_old, const double t_new);
 
     /// Count a step of the current preconditioner; mark it for a rebuild
-    /// after a failure or when GMRES slowed down (reuse growth).
+    /// after a failure (including a step check_volume_ratios() rejected)
+    /// or when GMRES slowed down (reuse growth).
     void
     count_preconditioner_use(const NewtonReport &report);
 
@@ -280,13 +281,11 @@ namespace qsmpm
     double       preconditioner_rate   = 0.;
     unsigned int preconditioner_builds = 0;
     /// Whether the last prepare_step() kept an earlier preconditioner.
-    bool preconditioner_reused = false;
-    /// TangentAssembler::pattern_generation() of the last build.
-    unsigned int    factored_pattern = numbers::invalid_unsigned_int;
-    StepConstraints step_constraints;
-    VectorType      du;
-    VectorType      R;
-    VectorType      f_ext;
+    bool                                    preconditioner_reused = false;
+    StepConstraints                         step_constraints;
+    VectorType                              du;
+    VectorType                              R;
+    VectorType                              f_ext;
     std::vector<Tensor<1, dim>>             last_reactions;
     std::vector<StepReport>                 reports;
     std::function<bool(const StepReport &)> step_callback;

@@ -67,15 +67,17 @@ namespace qsmpm
     needs_matrix() const;
 
     /**
-     * Build from the stiffness @p K of the current step. With
-     * @p same_pattern, K has the sparsity pattern (and is the same object)
-     * of the last setup(): "direct" then keeps KLU's symbolic factorization
-     * (its fill-reducing ordering) and only refactors the values.
+     * Build from the stiffness @p K of the current step. @p pattern names
+     * K's sparsity pattern (TangentAssembler::pattern_generation()): if it
+     * is that of the last setup(), K is the same matrix object with new
+     * values, and "direct" keeps KLU's symbolic factorization (its
+     * fill-reducing ordering) and only refactors the values. The default,
+     * an invalid number, always starts afresh.
      */
     void
     setup(const TrilinosWrappers::SparseMatrix &K,
           const BackgroundGrid<dim>            &grid,
-          const bool                            same_pattern = false);
+          const unsigned int pattern = numbers::invalid_unsigned_int);
 
     /// dst = -P^{-1} src (identity copy for none).
     void
@@ -91,6 +93,8 @@ namespace qsmpm
     mutable std::unique_ptr<Epetra_LinearProblem> direct_problem;
     /// Amesos KLU with its symbolic and numeric factorizations of K.
     std::unique_ptr<Amesos_BaseSolver> direct;
+    /// The @p pattern of the matrix KLU analysed.
+    unsigned int analysed_pattern = numbers::invalid_unsigned_int;
   };
 } // namespace qsmpm
 
