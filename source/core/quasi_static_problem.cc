@@ -211,7 +211,8 @@ namespace qsmpm
                    "amg";
         preconditioner =
           Preconditioner<dim>(Preconditioner<dim>::parse_type(type));
-        preconditioner_age = 0;
+        preconditioner_age  = 0;
+        last_load_increment = 0.;
         if (preconditioner.needs_matrix())
           tangent.reinit(background_grid, points().get_formulation().gimp());
       }
@@ -463,20 +464,47 @@ namespace qsmpm
     prepare_step(t_old, t_new);
 
     // A.1 step 1: zero initial guess but for the prescribed increments.
-    du = 0.;
+    // Extrapolation instead scales the increments of the last converged
+    // step to this step's load increment: on the fixed background grid
+    // they are nodal values of the same degrees of freedom, and under
+    // proportional loading of a nearly linear problem they are nearly this
+    // step's solution, which saves the predictor's linear solve.
+    using InitialGuess                 = NewtonParameters::InitialGuess;
+    NewtonParameters newton_parameters = prm_values.nonlinear_solver;
+    const bool       extrapolate =
+      newton_parameters.initial_guess == InitialGuess::extrapolation;
+    if (extrapolate && last_load_increment > 0.)
+      {
+        du = last_increment;
+        du *= (t_new - t_old) / last_load_increment;
+      }
+    else
+      {
+        du = 0.;
+        if (extrapolate)
+          newton_parameters.initial_guess = InitialGuess::linear_predictor;
+      }
     step_constraints.distribute(du);
 
     {
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
       const StepOperator<dim> op(*residual, step_constraints, preconditioner);
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
-        prm_values.nonlinear_solver, &progress);
+        newton_parameters, &progress);
       report = newton.solve(op, du, R);
       check_volume_ratios(op, report);
       count_preconditioner_use(report);
     }
+    // A step that failed (and is tried again with a smaller increment, or
+    // a new preconditioner) starts from the linear predictor.
+    last_load_increment = 0.;
     if (!report.converged)
       return false;
+    if (extrapolate)
+      {
+        last_increment      = du;
+        last_load_increment = t_new - t_old;
+      }
     commit_step();
     return true;
   }

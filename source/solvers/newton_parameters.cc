@@ -89,11 +89,13 @@ namespace qsmpm
                         "this many times while ||R|| does not decrease. 0 "
                         "gives the paper's full Newton steps.",
                         Patterns::Integer(0, 30));
-      Utils::add_selection<bool>(
+      Utils::add_selection<InitialGuess>(
         prm,
         "Initial guess",
-        linear_predictor,
-        {{"boundary values", false}, {"linear predictor", true}},
+        initial_guess,
+        {{"boundary values", InitialGuess::boundary_values},
+         {"linear predictor", InitialGuess::linear_predictor},
+         {"extrapolation", InitialGuess::extrapolation}},
         "boundary values: the paper's du_0, the prescribed "
         "increments on constrained degrees of freedom and "
         "zero elsewhere; linear predictor: the solution of "
@@ -101,7 +103,15 @@ namespace qsmpm
         "with the prescribed increments as data (one extra "
         "linear solve that makes the first Newton iterate "
         "independent of the cell size; a linear problem "
-        "then converges in one iteration).");
+        "then converges in one iteration); extrapolation: "
+        "the increment of the last converged load step, "
+        "scaled to this step's load increment, with the "
+        "prescribed increments on constrained degrees of "
+        "freedom (no extra solve; under proportional "
+        "loading it is close to the solution; the linear "
+        "predictor serves in the first step, after a step "
+        "that failed and after a restart; path following "
+        "(Load stepping/Control) does not use it).");
       prm.add_parameter("Verbose",
                         verbose,
                         "Print one line per Newton iteration: ||R||, GMRES "

@@ -281,9 +281,14 @@ namespace qsmpm
     double       preconditioner_rate   = 0.;
     unsigned int preconditioner_builds = 0;
     /// Whether the last prepare_step() kept an earlier preconditioner.
-    bool                                    preconditioner_reused = false;
-    StepConstraints                         step_constraints;
-    VectorType                              du;
+    bool            preconditioner_reused = false;
+    StepConstraints step_constraints;
+    VectorType      du;
+    /// With Initial guess = extrapolation: the increments of the last
+    /// converged load step and its load-factor increment (0: none, the
+    /// next step starts from the linear predictor).
+    VectorType                              last_increment;
+    double                                  last_load_increment = 0.;
     VectorType                              R;
     VectorType                              f_ext;
     std::vector<Tensor<1, dim>>             last_reactions;

@@ -28,7 +28,8 @@ namespace qsmpm
     unsigned int line_search_steps = 0;
     double       initial_residual  = 0.;
     double       final_residual    = 0.;
-    /// ||R|| (free rows) of du_0 and after every Newton iteration.
+    /// ||R|| (free rows) of the first iterate (du_0, or the caller's guess)
+    /// and after every Newton iteration.
     std::vector<double> residual_history;
     /// Why the solve failed (empty if it converged).
     std::string failure;
@@ -114,7 +115,7 @@ namespace qsmpm
      * Solve R(du) = 0 from the initial guess @p du. On return @p R holds the
      * residual of the returned @p du, including the constrained rows.
      *
-     * With NewtonParameters::linear_predictor, the first iterate is not the
+     * With InitialGuess::linear_predictor, the first iterate is not the
      * paper's du_0 (the prescribed increments on constrained components,
      * zero elsewhere) but the solution of the problem linearized about the
      * free part of du_0, with the prescribed increments as data:
@@ -129,6 +130,12 @@ namespace qsmpm
      * finite-element codes and solves a linear problem in one iteration. It
      * counts as a Newton iteration; the stopping test still uses the
      * paper's ||R(du_0)||.
+     *
+     * With InitialGuess::extrapolation, @p du is the first iterate (the
+     * caller's guess, whose constrained components are the prescribed
+     * increments); the stopping test uses ||R(du_0)|| with du_0 = g, its
+     * constrained part, as above, at the cost of one more residual.
+     * (InitialGuess::boundary_values: @p du is du_0.)
      */
     NewtonReport
     solve(const Operator &op, VectorType &du, VectorType &R) const
@@ -140,15 +147,32 @@ namespace qsmpm
       rhs.reinit(du);
       trial.reinit(du);
 
+      using InitialGuess = NewtonParameters::InitialGuess;
+      double reference   = 0.;
+      if (parameters.initial_guess == InitialGuess::extrapolation)
+        {
+          // The stopping test stays relative to the residual of the paper's
+          // du_0 = g, the constrained part of the guess: relative to that of
+          // a guess close to the solution it would ask for far more.
+          trial = du;
+          op.set_constrained_to_zero(trial);
+          s = du;
+          s -= trial;
+          op.residual(s, R);
+          reference = internal::free_norm(op, R, rhs);
+        }
       op.residual(du, R);
-      double norm             = internal::free_norm(op, R, rhs);
-      report.initial_residual = norm;
+      double norm = internal::free_norm(op, R, rhs);
+      if (parameters.initial_guess != InitialGuess::extrapolation)
+        reference = norm;
+      report.initial_residual = reference;
       report.residual_history.push_back(norm);
       const double target =
-        parameters.tolerance * std::max(parameters.residual_floor, norm);
+        parameters.tolerance * std::max(parameters.residual_floor, reference);
 
-      double forcing = parameters.linear_tolerance, previous_norm = norm;
-      if (parameters.linear_predictor && norm > target && std::isfinite(norm))
+      double forcing = parameters.linear_tolerance, previous_norm = reference;
+      if (parameters.initial_guess == InitialGuess::linear_predictor &&
+          norm > target && std::isfinite(norm))
         norm = predict(op, du, R, report);
 
       for (unsigned int n = report.newton_iterations;; ++n)
@@ -171,8 +195,15 @@ namespace qsmpm
               return report;
             }
 
-          if (parameters.eisenstat_walker && n > 0)
-            forcing = eisenstat_walker(forcing, norm, previous_norm, target);
+          // Eisenstat-Walker once there is a reduction to adapt to: after
+          // the predictor, or from an extrapolated guess that improved on
+          // du_0 (previous_norm is ||R(du_0)|| in the first iteration). A
+          // first solve from du_0 keeps the linear tolerance but does not
+          // solve further than the Newton target asks either.
+          if (parameters.eisenstat_walker)
+            forcing = (n > 0 || norm < previous_norm) ?
+                        eisenstat_walker(forcing, norm, previous_norm, target) :
+                        std::max(forcing, 0.5 * target / norm);
           previous_norm = norm;
 
           // A.1 step 4: J s = -R with constrained components of s zero.

@@ -42,9 +42,22 @@ namespace qsmpm
     bool eisenstat_walker = false;
     /// Backtracking line search on ||R|| (halving, at most this many times).
     unsigned int max_line_search_steps = 0;
-    /// First iterate from the problem linearized about zero free
-    /// increments (see NewtonKrylov::solve()) instead of the paper's du_0.
-    bool linear_predictor = true;
+    /// Where Newton's first iterate of a load step comes from.
+    enum class InitialGuess
+    {
+      /// The paper's du_0: the prescribed increments on constrained
+      /// degrees of freedom, zero elsewhere.
+      boundary_values,
+      /// The solution of the problem linearized about zero free increments
+      /// with the prescribed increments as data (see NewtonKrylov::solve()).
+      linear_predictor,
+      /// The increment of the last converged load step, scaled to this
+      /// step's load increment, with the prescribed increments on the
+      /// constrained degrees of freedom; the linear predictor where there is
+      /// no such step (see QuasiStaticProblem).
+      extrapolation
+    };
+    InitialGuess initial_guess = InitialGuess::linear_predictor;
     /// Print one line per Newton iteration (on the stream given to the
     /// solver).
     bool verbose = false;
