@@ -14,7 +14,8 @@
 // degrees of freedom, stiffness matrix). Run each configuration in its own
 // process: the peak memory is that of the process.
 //
-//   strip [--cells N] [--reuse K]     (defaults 256 and 1)
+//   strip [--cells N] [--reuse K] [--extrapolate 0|1]
+//                                     (defaults 256, 1 and 0)
 #include "benchmark_problem.h"
 
 #include <deal.II/base/timer.h>
@@ -47,7 +48,8 @@ main(int argc, char *argv[])
     {
       Utilities::MPI::MPI_InitFinalize    mpi(argc, argv, 1);
       std::map<std::string, unsigned int> option{{"--cells", 256},
-                                                 {"--reuse", 1}};
+                                                 {"--reuse", 1},
+                                                 {"--extrapolate", 0}};
       for (int i = 1; i + 1 < argc; i += 2)
         {
           AssertThrow(option.count(argv[i]) == 1,
@@ -80,6 +82,16 @@ main(int argc, char *argv[])
       prm.nonlinear_solver.linear_tolerance           = 1e-3;
       prm.nonlinear_solver.max_linear_iterations      = 2000;
       prm.nonlinear_solver.preconditioner_reuse_steps = option["--reuse"];
+      // --extrapolate 1: each step starts from the last step's increment
+      // scaled to its load increment, with Eisenstat-Walker forcing (the
+      // settings of the polycrystal .prm files, for a load that grows in
+      // proportion).
+      if (option["--extrapolate"] != 0)
+        {
+          prm.nonlinear_solver.initial_guess =
+            qsmpm::NewtonParameters::InitialGuess::extrapolation;
+          prm.nonlinear_solver.eisenstat_walker = true;
+        }
       prm.load_stepping.n_steps                       = n_steps;
       prm.load_stepping.final_load_factor             = 10.;
       prm.output.directory                            = "benchmark_output";
@@ -91,6 +103,7 @@ main(int argc, char *argv[])
 
       Benchmarks::print("cells", option["--cells"]);
       Benchmarks::print("reuse_steps", option["--reuse"]);
+      Benchmarks::print("extrapolate", option["--extrapolate"]);
       Benchmarks::print("points", problem.points().n_global_points());
       Benchmarks::print("dofs", problem.grid().get_dof_handler().n_dofs());
       for (const auto &report : problem.step_reports())

@@ -18,9 +18,15 @@ namespace qsmpm
     , cache(cache)
     , model(points.get_model())
     , update_volumes(update_volumes)
-    , state_scratch(points.get_model().n_state_components())
     , track_dissipation(points.get_model().computes_dissipation())
   {
+    const auto &offsets = points.get_offsets();
+    state_layout        = {offsets.strain,
+                           offsets.stress,
+                           offsets.volume,
+                           offsets.material_id,
+                           offsets.state,
+                           model.n_state_components()};
     reinit();
   }
 
@@ -39,6 +45,7 @@ namespace qsmpm
     importer    = std::make_unique<Epetra_Import>(relevant_map, owned_map);
     exporter    = std::make_unique<Epetra_Export>(relevant_map, owned_map);
     local_force = std::make_unique<Epetra_Vector>(relevant_map);
+    same_layout = relevant_map.SameAs(owned_map);
   }
 
 
@@ -86,10 +93,26 @@ namespace qsmpm
   QuasiStaticResidual<dim>::evaluate(const TrilinosWrappers::MPI::Vector &du,
                                      TrilinosWrappers::MPI::Vector &R) const
   {
+    ++evaluation_count;
+    if (same_layout)
+      {
+        // One rank (no ghosts): the loop reads du and adds into R = f_ext
+        // in place, without the copies of import and export.
+        R = f_ext;
+        loop<false>(du.trilinos_vector()[0], R.trilinos_vector()[0], nullptr);
+        return;
+      }
     du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
                                         *importer,
                                         Insert);
-    loop<false>(du_ghosted.trilinos_vector()[0], &R, nullptr);
+    local_force->PutScalar(0.);
+    loop<false>(du_ghosted.trilinos_vector()[0],
+                local_force->Values(),
+                nullptr);
+    R.trilinos_vector().PutScalar(0.);
+    const int ierr = R.trilinos_vector().Export(*local_force, *exporter, Add);
+    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+    R += f_ext;
   }
 
 
@@ -113,20 +136,24 @@ namespace qsmpm
   template <int dim>
   template <bool write_back>
   void
-  QuasiStaticResidual<dim>::loop(const double                  *du_values,
-                                 TrilinosWrappers::MPI::Vector *R,
-                                 MaterialPointSet<dim>         *written) const
+  QuasiStaticResidual<dim>::loop(const double          *du_values,
+                                 double                *force,
+                                 MaterialPointSet<dim> *written) const
   {
     constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
-    const auto            &offsets  = points.get_offsets();
-    const unsigned int     n_state  = state_scratch.size();
+    const unsigned int     n_state  = state_layout.n_state;
     const bool finite_strain        = points.get_formulation().finite_strain();
     const bool fbar                 = points.get_formulation().fbar();
+    // The trial fields go back to the points only if the model changes
+    // them.
+    const bool copy_state = n_state > 0 && !model.state_is_constant();
+    // Linear shape functions: every point's stencil is the cell's vertices
+    // in their order, known at compile time.
+    const bool vertex_stencil =
+      cache.stencil_size() == GeometryInfo<dim>::vertices_per_cell;
 
-    double *force = local_force->Values();
     if (!write_back)
       {
-        local_force->PutScalar(0.);
         min_volume_ratio = std::numeric_limits<double>::infinity();
         dissipated       = 0.;
       }
@@ -142,172 +169,264 @@ namespace qsmpm
             du_cell[i] = du_values[dofs[i]];
             f_cell[i]  = 0.;
           }
+        const auto        &range    = cache.cell(c);
+        const unsigned int first    = range.first_point;
+        const unsigned int n_points = range.end_point - first;
+        if (grad_du_scratch.size() < n_points)
+          {
+            grad_du_scratch.resize(n_points);
+            strain_increment_scratch.resize(n_points);
+            stress_scratch.resize(n_points);
+            force_stress_scratch.resize(n_points);
+            state_scratch.resize(n_points * n_state);
+          }
 
         // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e. in
         // the configuration at the start of the step; for all points of the
         // cell first, since F-bar needs the cell's mean volume change.
-        const auto        &range    = cache.cell(c);
-        const unsigned int n_points = range.end_point - range.first_point;
-        if (grad_du_scratch.size() < n_points)
-          grad_du_scratch.resize(n_points);
-        for (unsigned int p = range.first_point; p < range.end_point; ++p)
-          {
-            const Tensor<1, dim> *grad_N  = cache.gradients(p);
-            const unsigned int    stencil = cache.stencil_size(p);
-            const unsigned short *nodes   = cache.nodes(p);
-            Tensor<2, dim> &grad_du = grad_du_scratch[p - range.first_point];
-            grad_du                 = 0.;
-            for (unsigned int k = 0; k < stencil; ++k)
-              for (unsigned int a = 0; a < dim; ++a)
-                grad_du[a] += du_cell[nodes[k] * dim + a] * grad_N[k];
-          }
+        if (vertex_stencil)
+          cell_gradients<true>(du_cell, range);
+        else
+          cell_gradients<false>(du_cell, range);
         const double mean_volume_change =
           fbar ? cell_mean_volume_change(range, finite_strain) : 0.;
 
-        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+        // The stresses of all points of the cell, and with them the
+        // volume-weighted stress measures of the forces.
+        const PointStateBatch<dim> old(state_layout,
+                                       cache.property_arrays(first),
+                                       &cache.position(first),
+                                       n_points);
+        if (finite_strain)
+          finite_strain_stresses<write_back>(old,
+                                             first,
+                                             mean_volume_change,
+                                             written);
+        else
+          small_strain_stresses<write_back>(old,
+                                            first,
+                                            mean_volume_change,
+                                            written);
+
+        if (write_back)
           {
-            const Tensor<1, dim> *grad_N  = cache.gradients(p);
-            const unsigned int    stencil = cache.stencil_size(p);
-            const unsigned short *nodes   = cache.nodes(p);
-            const double         *data    = cache.properties(p);
-            // Where commit() writes: the same array.
-            double *const out =
-              write_back ? cache.properties(p, *written) : nullptr;
-            const Tensor<2, dim> &grad_du =
-              grad_du_scratch[p - range.first_point];
-
-            const PointState<dim> old = MaterialPointSet<dim>::read_point_state(
-              data, offsets, n_state, cache.position(p));
-            ArrayView<double> new_state(state_scratch.data(), n_state);
-
-            // The point's share of R = f_ext - f_int: small strain
-            // -volume sigma grad N_i, finite strain -Omega_0 P grad_n N_i
-            // with P = tau Delta F^{-T}.
-            SymmetricTensor<2, dim> stress;
-            Tensor<2, dim>          P;
-            double                  volume = 0.;
-            if (finite_strain)
-              {
-                FiniteStrainKinematics<dim> kinematics;
-                kinematics.F_old =
-                  Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-                const Tensor<2, dim> delta_F =
-                  unit_symmetric_tensor<dim>() + grad_du;
-                const double det_delta_F = determinant(delta_F);
-                // F-bar: the model sees the cell's mean volume change.
-                kinematics.delta_F =
-                  fbar ? std::pow(mean_volume_change / det_delta_F, 1. / dim) *
-                           delta_F :
-                         delta_F;
-                kinematics.F = kinematics.delta_F * kinematics.F_old;
-                const bool admissible =
-                  det_delta_F > 0. && (!fbar || mean_volume_change > 0.);
-                if (!admissible)
-                  {
-                    // An inverted point: no admissible residual. Newton's
-                    // line search backs off from non-finite norms.
-                    volume = std::numeric_limits<double>::quiet_NaN();
-                  }
-                else
-                  {
-                    SymmetricTensor<2, dim> tau;
-                    model.update_kirchhoff_stress(old,
-                                                  kinematics,
-                                                  tau,
-                                                  new_state);
-                    // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T}
-                    // grad_n N.
-                    volume = data[offsets.initial_volume];
-                    P      = Tensor<2, dim>(tau) * transpose(invert(delta_F));
-                    if (!write_back)
-                      min_volume_ratio =
-                        std::min(min_volume_ratio,
-                                 det_delta_F * data[offsets.J]);
-                    if (write_back)
-                      {
-                        const double J = determinant(kinematics.F);
-                        // For output: the logarithmic strain 1/2 ln b.
-                        Utils::write_symmetric<dim>(
-                          0.5 *
-                            TensorFunctions::log(
-                              TensorFunctions::left_cauchy_green(kinematics.F)),
-                          out + offsets.strain);
-                        Utils::write_symmetric<dim>(tau / J,
-                                                    out + offsets.stress);
-                        Utils::write_tensor<dim>(
-                          kinematics.F, out + offsets.deformation_gradient);
-                        out[offsets.J]      = J;
-                        out[offsets.volume] = J * data[offsets.initial_volume];
-                      }
-                  }
-              }
-            else
-              {
-                SymmetricTensor<2, dim> d_eps = symmetrize(grad_du);
-                if (fbar)
-                  d_eps += (mean_volume_change - trace(d_eps)) / dim *
-                           unit_symmetric_tensor<dim>();
-
-                // (2.20)-(2.21): trial stress from the committed state.
-                model.update_stress(old, d_eps, stress, new_state);
-
-                // (2.23)-(2.24): J and the volume at the end of the step.
-                const double J = (1. + trace(d_eps)) * data[offsets.J];
-                volume = update_volumes ? J * data[offsets.initial_volume] :
-                                          data[offsets.initial_volume];
-                if (!write_back)
-                  min_volume_ratio = std::min(min_volume_ratio, J);
-                if (write_back)
-                  {
-                    Utils::write_symmetric<dim>(old.strain + d_eps,
-                                                out + offsets.strain);
-                    Utils::write_symmetric<dim>(stress, out + offsets.stress);
-                    out[offsets.J]      = J;
-                    out[offsets.volume] = volume;
-                  }
-              }
-
-            if (!write_back && track_dissipation)
-              dissipated +=
-                data[offsets.volume] *
-                model.dissipation(old,
-                                  ArrayView<const double>(state_scratch.data(),
-                                                          n_state));
-
-            // (2.25): f_int_i = Omega_p sigma_p . grad N_i (the paper's
-            // f^int with the opposite sign), or its finite-strain form
-            // Omega_0 P grad_n N_i; subtracted, since R = f_ext - f_int.
-            const auto add_forces = [&](const auto &stress_measure) {
-              for (unsigned int k = 0; k < stencil; ++k)
-                {
-                  const Tensor<1, dim> f = stress_measure * grad_N[k];
-                  for (unsigned int a = 0; a < dim; ++a)
-                    f_cell[nodes[k] * dim + a] -= volume * f[a];
-                }
-            };
-            if (write_back)
-              std::copy(state_scratch.begin(),
-                        state_scratch.end(),
-                        out + offsets.state);
-            else if (finite_strain)
-              add_forces(P);
-            else
-              add_forces(stress);
+            if (copy_state)
+              for (unsigned int i = 0; i < n_points; ++i)
+                std::copy(state_scratch.data() + i * n_state,
+                          state_scratch.data() + (i + 1) * n_state,
+                          cache.properties(first + i, *written) +
+                            state_layout.state);
+            continue;
           }
 
-        if (!write_back)
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            force[dofs[i]] += f_cell[i];
+        if (track_dissipation)
+          for (unsigned int i = 0; i < n_points; ++i)
+            dissipated +=
+              old[i].volume *
+              model.dissipation(old[i],
+                                ArrayView<const double>(state_scratch.data() +
+                                                          i * n_state,
+                                                        n_state));
+
+        if (vertex_stencil)
+          add_cell_forces<true>(range, f_cell);
+        else
+          add_cell_forces<false>(range, f_cell);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          force[dofs[i]] += f_cell[i];
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool vertex_stencil>
+  void
+  QuasiStaticResidual<dim>::cell_gradients(
+    const double                              *du_cell,
+    const typename ShapeCache<dim>::CellRange &range) const
+  {
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const Tensor<1, dim> *grad_N  = cache.gradients(p);
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = vertex_stencil ?
+                                          GeometryInfo<dim>::vertices_per_cell :
+                                          cache.stencil_size(p);
+        Tensor<2, dim>       &grad_du = grad_du_scratch[p - range.first_point];
+        grad_du                       = 0.;
+        for (unsigned int k = 0; k < stencil; ++k)
+          {
+            const unsigned int node = vertex_stencil ? k : nodes[k];
+            for (unsigned int a = 0; a < dim; ++a)
+              grad_du[a] += du_cell[node * dim + a] * grad_N[k];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool vertex_stencil>
+  void
+  QuasiStaticResidual<dim>::add_cell_forces(
+    const typename ShapeCache<dim>::CellRange &range,
+    double                                    *f_cell) const
+  {
+    // (2.25): f_int_i = Omega_p sigma_p . grad N_i (the paper's f^int with
+    // the opposite sign), or its finite-strain form Omega_0 P grad_n N_i;
+    // subtracted, since R = f_ext - f_int.
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const Tensor<1, dim> *grad_N  = cache.gradients(p);
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = vertex_stencil ?
+                                          GeometryInfo<dim>::vertices_per_cell :
+                                          cache.stencil_size(p);
+        const Tensor<2, dim> &S = force_stress_scratch[p - range.first_point];
+        for (unsigned int k = 0; k < stencil; ++k)
+          {
+            const unsigned int   node = vertex_stencil ? k : nodes[k];
+            const Tensor<1, dim> f    = S * grad_N[k];
+            for (unsigned int a = 0; a < dim; ++a)
+              f_cell[node * dim + a] -= f[a];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::small_strain_stresses(
+    const PointStateBatch<dim> &old,
+    const unsigned int          first,
+    const double                mean_volume_change,
+    MaterialPointSet<dim>      *written) const
+  {
+    const auto        &offsets = points.get_offsets();
+    const unsigned int n       = old.size();
+    const bool         fbar    = points.get_formulation().fbar();
+
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        SymmetricTensor<2, dim> &d_eps = strain_increment_scratch[i];
+        d_eps                          = symmetrize(grad_du_scratch[i]);
+        if (fbar)
+          d_eps += (mean_volume_change - trace(d_eps)) / dim *
+                   unit_symmetric_tensor<dim>();
       }
 
-    if (!write_back)
+    // (2.20)-(2.21): trial stresses from the committed states, one call of
+    // the model for the whole cell.
+    model.update_stresses(
+      old,
+      ArrayView<const SymmetricTensor<2, dim>>(strain_increment_scratch.data(),
+                                               n),
+      ArrayView<SymmetricTensor<2, dim>>(stress_scratch.data(), n),
+      ArrayView<double>(state_scratch.data(), n * state_layout.n_state));
+
+    // (2.23)-(2.24): J and the volume at the end of the step.
+    double min_J = min_volume_ratio;
+    for (unsigned int i = 0; i < n; ++i)
       {
-        ++evaluation_count;
-        R->trilinos_vector().PutScalar(0.);
-        const int ierr =
-          R->trilinos_vector().Export(*local_force, *exporter, Add);
-        AssertThrow(ierr == 0, ExcTrilinosError(ierr));
-        *R += f_ext;
+        const double *data = cache.properties(first + i);
+        const double  J =
+          (1. + trace(strain_increment_scratch[i])) * data[offsets.J];
+        const double volume = update_volumes ?
+                                J * data[offsets.initial_volume] :
+                                data[offsets.initial_volume];
+        if (write_back)
+          {
+            double *const out = cache.properties(first + i, *written);
+            Utils::write_symmetric<dim>(old.strain(i) +
+                                          strain_increment_scratch[i],
+                                        out + offsets.strain);
+            Utils::write_symmetric<dim>(stress_scratch[i],
+                                        out + offsets.stress);
+            out[offsets.J]      = J;
+            out[offsets.volume] = volume;
+          }
+        else
+          {
+            min_J = std::min(min_J, J);
+            force_stress_scratch[i] =
+              volume * Tensor<2, dim>(stress_scratch[i]);
+          }
+      }
+    min_volume_ratio = min_J;
+  }
+
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::finite_strain_stresses(
+    const PointStateBatch<dim> &old,
+    const unsigned int          first,
+    const double                mean_volume_change,
+    MaterialPointSet<dim>      *written) const
+  {
+    const auto        &offsets = points.get_offsets();
+    const unsigned int n_state = state_layout.n_state;
+    const bool         fbar    = points.get_formulation().fbar();
+
+    for (unsigned int i = 0; i < old.size(); ++i)
+      {
+        const double   *data = cache.properties(first + i);
+        Tensor<2, dim> &S    = force_stress_scratch[i];
+
+        FiniteStrainKinematics<dim> kinematics;
+        kinematics.F_old =
+          Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+        const Tensor<2, dim> delta_F =
+          unit_symmetric_tensor<dim>() + grad_du_scratch[i];
+        const double det_delta_F = determinant(delta_F);
+        // F-bar: the model sees the cell's mean volume change.
+        kinematics.delta_F =
+          fbar ?
+            std::pow(mean_volume_change / det_delta_F, 1. / dim) * delta_F :
+            delta_F;
+        kinematics.F = kinematics.delta_F * kinematics.F_old;
+        if (!(det_delta_F > 0. && (!fbar || mean_volume_change > 0.)))
+          {
+            // An inverted point: no admissible residual. Newton's line
+            // search backs off from non-finite norms.
+            S = std::numeric_limits<double>::quiet_NaN();
+            continue;
+          }
+
+        SymmetricTensor<2, dim> tau;
+        model.update_kirchhoff_stress(
+          old[i],
+          kinematics,
+          tau,
+          ArrayView<double>(state_scratch.data() + i * n_state, n_state));
+        if (write_back)
+          {
+            double *const out = cache.properties(first + i, *written);
+            const double  J   = determinant(kinematics.F);
+            // For output: the logarithmic strain 1/2 ln b.
+            Utils::write_symmetric<dim>(
+              0.5 * TensorFunctions::log(
+                      TensorFunctions::left_cauchy_green(kinematics.F)),
+              out + offsets.strain);
+            Utils::write_symmetric<dim>(tau / J, out + offsets.stress);
+            Utils::write_tensor<dim>(kinematics.F,
+                                     out + offsets.deformation_gradient);
+            out[offsets.J]      = J;
+            out[offsets.volume] = J * data[offsets.initial_volume];
+          }
+        else
+          {
+            // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T} grad_n N.
+            S = data[offsets.initial_volume] * Tensor<2, dim>(tau) *
+                transpose(invert(delta_F));
+            min_volume_ratio =
+              std::min(min_volume_ratio, det_delta_F * data[offsets.J]);
+          }
       }
   }
 

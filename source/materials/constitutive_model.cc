@@ -96,6 +96,37 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  ConstitutiveModel<dim>::update_stresses(
+    const PointStateBatch<dim>              &old,
+    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+    ArrayView<SymmetricTensor<2, dim>>       stresses,
+    ArrayView<double>                        new_states) const
+  {
+    const unsigned int n_state = old.n_state_components();
+    AssertDimension(strain_increments.size(), old.size());
+    AssertDimension(stresses.size(), old.size());
+    AssertDimension(new_states.size(), old.size() * n_state);
+    for (unsigned int i = 0; i < old.size(); ++i)
+      update_stress(old[i],
+                    strain_increments[i],
+                    stresses[i],
+                    ArrayView<double>(new_states.data() + i * n_state,
+                                      n_state));
+  }
+
+
+
+  template <int dim>
+  bool
+  ConstitutiveModel<dim>::state_is_constant() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::computes_dissipation() const
   {

@@ -23,6 +23,28 @@ namespace qsmpm
         SymmetricTensor<2, dim>::n_independent_components;
       return a * n - a * (a - 1) / 2 + (b - a);
     }
+
+    // sigma_a += sum_b M_ab d_eps_b with the packed rotated stiffness M, the
+    // off-diagonal strain components counted twice (eps_xy and eps_yx).
+    template <int dim>
+    inline void
+    add_stress_increment(const double                  *M,
+                         const SymmetricTensor<2, dim> &d_eps,
+                         SymmetricTensor<2, dim>       &stress)
+    {
+      constexpr unsigned int n =
+        SymmetricTensor<2, dim>::n_independent_components;
+      double e[n];
+      for (unsigned int b = 0; b < n; ++b)
+        e[b] = d_eps.access_raw_entry(b) * (b < dim ? 1. : 2.);
+      for (unsigned int a = 0; a < n; ++a)
+        {
+          double s = 0;
+          for (unsigned int b = 0; b < n; ++b)
+            s += M[a <= b ? packed<dim>(a, b) : packed<dim>(b, a)] * e[b];
+          stress.access_raw_entry(a) += s;
+        }
+    }
   } // namespace
 
 
@@ -157,23 +179,37 @@ namespace qsmpm
                                    SymmetricTensor<2, dim>       &stress,
                                    ArrayView<double> new_state) const
   {
-    // sigma_a += sum_b M_ab d_eps_b, off-diagonal strain components counted
-    // twice (eps_xy and eps_yx).
-    constexpr unsigned int n =
-      SymmetricTensor<2, dim>::n_independent_components;
-    const double *M = old.state.data();
-    double        e[n];
-    for (unsigned int b = 0; b < n; ++b)
-      e[b] = d_eps.access_raw_entry(b) * (b < dim ? 1. : 2.);
     stress = old.stress;
-    for (unsigned int a = 0; a < n; ++a)
+    add_stress_increment(old.state.data(), d_eps, stress);
+    std::copy(old.state.begin(), old.state.end(), new_state.begin());
+  }
+
+
+
+  template <int dim>
+  void
+  CubicElastic<dim>::update_stresses(
+    const PointStateBatch<dim>              &old,
+    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+    ArrayView<SymmetricTensor<2, dim>>       stresses,
+    ArrayView<double>) const
+  {
+    for (unsigned int i = 0; i < old.size(); ++i)
       {
-        double s = 0;
-        for (unsigned int b = 0; b < n; ++b)
-          s += M[a <= b ? packed<dim>(a, b) : packed<dim>(b, a)] * e[b];
-        stress.access_raw_entry(a) += s;
+        stresses[i] = old.stress(i);
+        add_stress_increment(old.state(i).data(),
+                             strain_increments[i],
+                             stresses[i]);
       }
-    std::copy(M, M + n_entries, new_state.data());
+  }
+
+
+
+  template <int dim>
+  bool
+  CubicElastic<dim>::state_is_constant() const
+  {
+    return true;
   }
 
 

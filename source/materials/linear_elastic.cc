@@ -42,6 +42,8 @@ namespace qsmpm
                                     const double poisson_ratio,
                                     const bool   plane_stress)
     : C(isotropic_stiffness(young_modulus, poisson_ratio, plane_stress))
+    , lambda(C[0][0][1][1])
+    , two_mu(2. * C[0][1][0][1])
   {
   }
 
@@ -112,6 +114,29 @@ namespace qsmpm
     ArrayView<double>) const
   {
     stress = old.stress + C * strain_increment;
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::update_stresses(
+    const PointStateBatch<dim>              &old,
+    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+    ArrayView<SymmetricTensor<2, dim>>       stresses,
+    ArrayView<double>) const
+  {
+    // C : d_eps = lambda tr(d_eps) I + 2 mu d_eps, without the
+    // contraction with all entries of C.
+    for (unsigned int i = 0; i < old.size(); ++i)
+      {
+        const SymmetricTensor<2, dim> &d_eps = strain_increments[i];
+        SymmetricTensor<2, dim>       &sigma = stresses[i];
+        sigma                                = old.stress(i) + two_mu * d_eps;
+        const double lambda_trace            = lambda * trace(d_eps);
+        for (unsigned int d = 0; d < dim; ++d)
+          sigma[d][d] += lambda_trace;
+      }
   }
 
 

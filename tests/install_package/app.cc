@@ -7,7 +7,11 @@
 //     usermodel.cc, which is linked into this executable);
 //  2. with the built-in "linear elastic" and E, nu converted from K, G.
 // and checks
-//  - that the plate forces agree to 1e-10 (relative),
+//  - that the plate forces agree to 1e-9 (relative): both runs are solved
+//    to a Newton tolerance of 1e-10, and the two models round C : eps
+//    differently (K tr eps I + 2 G dev eps against lambda tr eps I + 2 mu
+//    eps), so they agree to a small multiple of the solver tolerance, not
+//    bitwise (measured 1.7e-10),
 //  - that they equal the analytical plate force E' delta/H A of uniaxial
 //    compression in plane strain, E' = E/(1-nu^2) (to 1e-6; the .prm file
 //    switches off volume updates, so the small-strain value is exact up to
@@ -130,8 +134,8 @@ main(int argc, char *argv[])
       const double error = std::abs(kg.plate_force - F_exact) / F_exact;
       out << std::setprecision(3);
       check("K-G elastic = linear elastic, relative difference " +
-              Utilities::to_string(diff) + " <= 1e-10",
-            diff <= 1e-10);
+              Utilities::to_string(diff) + " <= 1e-9",
+            diff <= 1e-9);
       check("K-G elastic = analytical, relative difference " +
               Utilities::to_string(error) + " <= 1e-6",
             error <= 1e-6);

@@ -8,6 +8,8 @@
 #include <deal.II/base/tensor.h>
 #include <functional>
 #include <memory>
+#include <qsmpm/materials/point_state.h>
+#include <qsmpm/materials/point_state_batch.h>
 #include <string>
 #include <vector>
 
@@ -24,43 +26,6 @@ namespace qsmpm
   {
     std::string  name;
     unsigned int n_components;
-  };
-
-  /**
-   * What a constitutive model may read of a material point: its committed
-   * state at the start of the load step, its material id and its position.
-   */
-  template <int dim>
-  struct PointState
-  {
-    /// Committed small strain (paper eq. 2.19, at step k).
-    SymmetricTensor<2, dim> strain;
-    /// Committed Cauchy stress (paper eq. 2.21, at step k).
-    SymmetricTensor<2, dim> stress;
-    /// The model's own committed per-point fields (see state_fields()).
-    ArrayView<const double> state;
-    /// Volume of the point at the start of the step.
-    double volume;
-    /// The point's material id (MaterialPointSet::fill()).
-    unsigned int material_id = 0;
-    /// The point's position at the start of the step.
-    Point<dim> position = Point<dim>();
-  };
-
-  /**
-   * The kinematics of one finite-strain load step at a point (updated
-   * Lagrangian on the reset grid): the deformation gradient committed at
-   * the start of the step, the increment Delta F = I + grad_n(Delta u)
-   * (gradient on the grid, i.e. in the configuration at the start of the
-   * step), and F = Delta F F_old. In 2D (plane strain) the out-of-plane
-   * stretch is one and all tensors are 2x2.
-   */
-  template <int dim>
-  struct FiniteStrainKinematics
-  {
-    Tensor<2, dim> F_old;
-    Tensor<2, dim> delta_F;
-    Tensor<2, dim> F;
   };
 
   /**
@@ -132,6 +97,38 @@ namespace qsmpm
                   const SymmetricTensor<2, dim> &strain_increment,
                   SymmetricTensor<2, dim>       &stress,
                   ArrayView<double>              new_state) const = 0;
+
+    /**
+     * update_stress() for a batch of points (the points of one cell, as the
+     * residual evaluates them): the trial stresses @p stresses[i] of the
+     * points @p old[i] for the strain increments @p strain_increments[i],
+     * and their trial fields in @p new_states, n_state_components() doubles
+     * per point, point after point.
+     *
+     * The residual of the Jacobian-free Newton-Krylov solver calls this,
+     * not update_stress(): once per cell instead of once per point, so that
+     * a model whose update is a few multiplications (an elastic one) costs
+     * neither a virtual call nor the assembly of a whole PointState per
+     * point. The default calls update_stress() point by point; overriding
+     * it is optional and must give the same results.
+     *
+     * If state_is_constant(), the caller ignores @p new_states and a model
+     * need not write it.
+     */
+    virtual void
+    update_stresses(const PointStateBatch<dim>              &old,
+                    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+                    ArrayView<SymmetricTensor<2, dim>>       stresses,
+                    ArrayView<double>                        new_states) const;
+
+    /**
+     * Whether the model's fields never change (e.g. the elastic constants
+     * of a crystal kept per point): commit() then leaves them as they are
+     * and the batched update need not write trial fields. False by
+     * default.
+     */
+    virtual bool
+    state_is_constant() const;
 
     /**
      * A tangent stiffness d(sigma)/d(epsilon) at the committed state, used by

@@ -95,6 +95,20 @@ namespace qsmpm
                   SymmetricTensor<2, dim>       &stress,
                   ArrayView<double>              new_state) const override;
 
+    /**
+     * All points at once, reading the rotated stiffness in place; the
+     * trial fields are not written (state_is_constant()).
+     */
+    void
+    update_stresses(const PointStateBatch<dim>              &old,
+                    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+                    ArrayView<SymmetricTensor<2, dim>>       stresses,
+                    ArrayView<double> new_states) const override;
+
+    /// True: a point's rotated stiffness never changes.
+    bool
+    state_is_constant() const override;
+
     /// The point's rotated stiffness (exact: the model is linear).
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;

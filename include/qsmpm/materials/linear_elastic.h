@@ -70,6 +70,13 @@ namespace qsmpm
                   SymmetricTensor<2, dim>       &stress,
                   ArrayView<double>              new_state) const override;
 
+    /// All points at once: sigma_i = sigma_old,i + C : d_epsilon_i.
+    void
+    update_stresses(const PointStateBatch<dim>              &old,
+                    ArrayView<const SymmetricTensor<2, dim>> strain_increments,
+                    ArrayView<SymmetricTensor<2, dim>>       stresses,
+                    ArrayView<double> new_states) const override;
+
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;
 
@@ -96,6 +103,10 @@ namespace qsmpm
 
   private:
     SymmetricTensor<4, dim> C;
+    /// C = lambda I (x) I + 2 mu II (lambda of plane stress in 2D if so
+    /// chosen): the two constants the batched update uses.
+    double lambda;
+    double two_mu;
   };
 } // namespace qsmpm
 

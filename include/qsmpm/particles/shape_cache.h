@@ -158,6 +158,16 @@ namespace qsmpm
     }
 
     /**
+     * The property arrays of points @p p, p + 1, ...: those of a cell's
+     * points are consecutive (see PointStateBatch).
+     */
+    const double *const *
+    property_arrays(const unsigned int p) const
+    {
+      return point_properties.data() + p;
+    }
+
+    /**
      * The same array, to write: the point state belongs to the point set,
      * so only who holds @p points, the writable set that reinit() read the
      * points from, may change it (QuasiStaticResidual::commit()). Evaluating
