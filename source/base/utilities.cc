@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cctype>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -7,6 +8,10 @@
 #include <fstream>
 #include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
+
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
 
 namespace qsmpm
 {
@@ -184,6 +189,25 @@ namespace qsmpm
                         Patterns::Integer(2, 3));
       prm.parse_input(filename, "", /*skip_undefined=*/true);
       return dimension;
+    }
+
+
+
+    void
+    return_large_blocks_to_system(const std::size_t smallest_block)
+    {
+#ifdef __GLIBC__
+      // Setting a threshold also switches off glibc's own adjustment of it
+      // (which would move every block of up to 32 MiB back to the heap
+      // after the first one has been freed).
+      const std::size_t threshold =
+        std::clamp<std::size_t>(smallest_block, 128 << 10, 32 << 20);
+      mallopt(M_MMAP_MAX, 65536); // glibc's default
+      mallopt(M_MMAP_THRESHOLD, static_cast<int>(threshold));
+      mallopt(M_TRIM_THRESHOLD, static_cast<int>(2 * threshold));
+#else
+      (void)smallest_block;
+#endif
     }
   } // namespace Utils
 } // namespace qsmpm

@@ -60,6 +60,11 @@ namespace qsmpm
     , external_force(bcs)
     , reaction_forces(displacement_constraints)
   {
+    // Until the degrees of freedom are known (setup_step_data()), every
+    // block of 128 KiB or more comes from mmap: the grid and the points are
+    // made once, and the blocks that the particle storage outgrows while it
+    // is filled go back to the system instead of fragmenting the heap.
+    Utils::return_large_blocks_to_system(0);
   }
 
 
@@ -194,6 +199,17 @@ namespace qsmpm
                                "not supported (the affine jump is not added "
                                "to nodes reached across periodic faces); use "
                                "Shape functions = linear."));
+        // Blocks of more than one and a half vectors of the grid's dofs
+        // (the points' data, the shape-function cache, the stiffness, ML's
+        // temporaries) come from mmap and go back to the system when freed;
+        // vectors, which the Krylov solver and ML allocate in every
+        // iteration, stay on the heap (see
+        // Utils::return_large_blocks_to_system()). Per-point arrays of 8
+        // bytes or more per point are already larger than that with 2^dim
+        // points per cell.
+        Utils::return_large_blocks_to_system(
+          3 * sizeof(double) *
+          background_grid.locally_relevant_dofs().n_elements() / 2);
         residual = std::make_unique<QuasiStaticResidual<dim>>(
           background_grid,
           points(),
@@ -649,8 +665,15 @@ namespace qsmpm
     du_ghosted = du;
     residual->commit(du_ghosted, points());
     const double moved = points().advect(cache, du_ghosted);
-    last_reactions     = reaction_forces.evaluate(R, communicator);
-    const auto lost    = points().sort_into_cells();
+    // The cache is of the points' old positions, and sorting moves their
+    // data in memory: it is made anew in the next step. Releasing it now
+    // keeps it from adding to the copy of all particle data that deal.II
+    // makes while sorting, the peak of a step that reuses an earlier
+    // preconditioner (measured on the strip benchmark, 256 x 256 cells:
+    // 463 -> 440 MB).
+    cache.clear();
+    last_reactions  = reaction_forces.evaluate(R, communicator);
+    const auto lost = points().sort_into_cells();
     // In parallel, deal.II finds a point's new cell only among the
     // neighbours of its old one (the ghost layer).
     if (lost > 0 && dealii::Utilities::MPI::n_mpi_processes(communicator) > 1 &&

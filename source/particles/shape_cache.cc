@@ -125,6 +125,26 @@ namespace qsmpm
 
   template <int dim>
   void
+  ShapeCache<dim>::clear()
+  {
+    // swap() with empty vectors: clear() alone keeps the capacity.
+    std::vector<CellRange>().swap(cells);
+    std::vector<unsigned int>().swap(dof_offsets);
+    std::vector<int>().swap(cell_local_dofs);
+    std::vector<types::global_dof_index>().swap(cell_global_dofs);
+    std::vector<unsigned short>().swap(stencil_nodes);
+    std::vector<unsigned char>().swap(point_stencil_sizes);
+    std::vector<double>().swap(shape_values);
+    std::vector<Tensor<1, dim>>().swap(shape_gradients);
+    std::vector<double *>().swap(point_properties);
+    std::vector<Point<dim>>().swap(point_positions);
+    point_set = nullptr;
+  }
+
+
+
+  template <int dim>
+  void
   ShapeCache<dim>::add_linear_cell(
     const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
     const BackgroundGrid<dim>                            &grid,

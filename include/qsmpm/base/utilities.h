@@ -2,6 +2,7 @@
 #define qsmpm_base_utilities_h
 
 #include <array>
+#include <cstddef>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <exception>
@@ -122,6 +123,34 @@ namespace qsmpm
      */
     unsigned int
     read_dimension(const std::string &filename);
+
+    /**
+     * Let the C library (glibc) serve blocks of at least @p smallest_block
+     * bytes (clamped to [128 KiB, 32 MiB]) by mmap, so that freeing them
+     * returns their memory to the system at once, and return the top of the
+     * heap once more than twice that is free there. Without glibc, nothing
+     * is done.
+     *
+     * This undoes what the static initializer of libsuperlu_dist (which
+     * Debian's deal.II links through PETSc and Trilinos) does to every
+     * process: mallopt(M_MMAP_MAX, 0) and mallopt(M_TRIM_THRESHOLD, -1),
+     * i.e. every block from the heap and no memory ever returned. The
+     * temporaries of ML's Galerkin products in an AMG setup and the copy of
+     * all particle data that deal.II's sorting of the particles makes for a
+     * moment then stay resident for the rest of the run, and the blocks
+     * allocated later fragment the heap further (measured on the strip
+     * benchmark, 256 x 256 cells, with AMG: 117 MB of free heap after the
+     * AMG setup; a peak of 488 MB without and 463 MB with mmap, see
+     * doc/benchmarks.md).
+     *
+     * Blocks below the threshold stay on the heap, where a block that is
+     * freed and allocated again costs no page faults: choose it above the
+     * size of the vectors that the Krylov solver and the preconditioner
+     * allocate in every iteration (with glibc's default of 128 KiB, the
+     * page faults of those made the strip benchmark 10-20% slower).
+     */
+    void
+    return_large_blocks_to_system(const std::size_t smallest_block);
   } // namespace Utils
 } // namespace qsmpm
 
