@@ -253,14 +253,17 @@ namespace qsmpm
         const unsigned int    stencil = vertex_stencil ?
                                           GeometryInfo<dim>::vertices_per_cell :
                                           cache.stencil_size(p);
-        Tensor<2, dim>       &grad_du = grad_du_scratch[p - range.first_point];
-        grad_du                       = 0.;
+        // Summed in a local tensor: the compiler cannot know that the
+        // scratch array does not overlap du_cell, and would store and load
+        // it at every node.
+        Tensor<2, dim> grad_du;
         for (unsigned int k = 0; k < stencil; ++k)
           {
             const unsigned int node = vertex_stencil ? k : nodes[k];
             for (unsigned int a = 0; a < dim; ++a)
               grad_du[a] += du_cell[node * dim + a] * grad_N[k];
           }
+        grad_du_scratch[p - range.first_point] = grad_du;
       }
   }
 
@@ -276,20 +279,37 @@ namespace qsmpm
     // (2.25): f_int_i = Omega_p sigma_p . grad N_i (the paper's f^int with
     // the opposite sign), or its finite-strain form Omega_0 P grad_n N_i;
     // subtracted, since R = f_ext - f_int.
+    if (vertex_stencil)
+      {
+        // The forces on the cell's vertices summed in a local array of
+        // fixed size, which the compiler can keep in registers.
+        constexpr unsigned int n_vertices =
+          GeometryInfo<dim>::vertices_per_cell;
+        Tensor<1, dim> f[n_vertices];
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const Tensor<2, dim> &S =
+              force_stress_scratch[p - range.first_point];
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              f[k] += S * grad_N[k];
+          }
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          for (unsigned int a = 0; a < dim; ++a)
+            f_cell[k * dim + a] -= f[k][a];
+        return;
+      }
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         const Tensor<1, dim> *grad_N  = cache.gradients(p);
         const unsigned short *nodes   = cache.nodes(p);
-        const unsigned int    stencil = vertex_stencil ?
-                                          GeometryInfo<dim>::vertices_per_cell :
-                                          cache.stencil_size(p);
+        const unsigned int    stencil = cache.stencil_size(p);
         const Tensor<2, dim> &S = force_stress_scratch[p - range.first_point];
         for (unsigned int k = 0; k < stencil; ++k)
           {
-            const unsigned int   node = vertex_stencil ? k : nodes[k];
-            const Tensor<1, dim> f    = S * grad_N[k];
+            const Tensor<1, dim> f = S * grad_N[k];
             for (unsigned int a = 0; a < dim; ++a)
-              f_cell[node * dim + a] -= f[a];
+              f_cell[nodes[k] * dim + a] -= f[a];
           }
       }
   }
@@ -351,8 +371,12 @@ namespace qsmpm
         else
           {
             min_J = std::min(min_J, J);
-            force_stress_scratch[i] =
-              volume * Tensor<2, dim>(stress_scratch[i]);
+            // Entry by entry: deal.II's conversion of a symmetric tensor
+            // is a function call per point.
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                force_stress_scratch[i][a][b] =
+                  volume * stress_scratch[i][a][b];
           }
       }
     min_volume_ratio = min_J;
