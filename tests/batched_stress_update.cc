@@ -50,6 +50,17 @@ namespace
     return t;
   }
 
+  /// n random strain increments of size @p scale.
+  template <int dim>
+  std::vector<SymmetricTensor<2, dim>>
+  random_increments(const unsigned int n, const double scale)
+  {
+    std::vector<SymmetricTensor<2, dim>> d_eps;
+    for (unsigned int i = 0; i < n; ++i)
+      d_eps.push_back(random_symmetric<dim>(scale));
+    return d_eps;
+  }
+
   /**
    * n points of a model in property arrays laid out like a
    * MaterialPointSet's: strain, stress, volume, material id, the model's
@@ -167,12 +178,10 @@ namespace
     const double E = 210e3, nu = 0.3;
     deallog << "LinearElastic, dim = " << dim
             << (plane_stress ? ", plane stress" : "") << std::endl;
-    const LinearElastic<dim>             model(E, nu, plane_stress);
-    const Points<dim>                    points(model, 7, 100.);
-    std::vector<SymmetricTensor<2, dim>> d_eps;
-    for (unsigned int i = 0; i < points.size(); ++i)
-      d_eps.push_back(random_symmetric<dim>(1e-3));
-    const auto r = update_both(model, points, d_eps);
+    const LinearElastic<dim> model(E, nu, plane_stress);
+    const Points<dim>        points(model, 7, 100.);
+    const auto d_eps = random_increments<dim>(points.size(), 1e-3);
+    const auto r     = update_both(model, points, d_eps);
 
     // Independent: the Lame constants of E and nu.
     const double mu     = E / (2. * (1. + nu));
@@ -202,11 +211,9 @@ namespace
 
     // The unrotated crystal: closed-form stresses.
     {
-      const Points<3>                    points(model, 5, 0.1);
-      std::vector<SymmetricTensor<2, 3>> d_eps;
-      for (unsigned int i = 0; i < points.size(); ++i)
-        d_eps.push_back(random_symmetric<3>(1e-3));
-      const auto                         r = update_both(model, points, d_eps);
+      const Points<3> points(model, 5, 0.1);
+      const auto      d_eps = random_increments<3>(points.size(), 1e-3);
+      const auto      r     = update_both(model, points, d_eps);
       std::vector<SymmetricTensor<2, 3>> exact;
       for (unsigned int i = 0; i < points.size(); ++i)
         {
@@ -230,11 +237,9 @@ namespace
                                   3. * x[1] + 0.2,
                                   5. * x[2] + 2.);
     });
-    const Points<3>                    points(model, 5, 0.1);
-    std::vector<SymmetricTensor<2, 3>> d_eps;
-    for (unsigned int i = 0; i < points.size(); ++i)
-      d_eps.push_back(random_symmetric<3>(1e-3));
-    const auto r = update_both(model, points, d_eps);
+    const Points<3> points(model, 5, 0.1);
+    const auto      d_eps = random_increments<3>(points.size(), 1e-3);
+    const auto      r     = update_both(model, points, d_eps);
     check("  rotated: batched against update_stress()",
           relative_difference(r.batched, r.single),
           1e-13);
