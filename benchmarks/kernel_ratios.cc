@@ -121,7 +121,7 @@ namespace
 
     // One JFNK load step: stiffness, AMG, Newton-Krylov.
     qsmpm::Preconditioner<dim> amg(qsmpm::Preconditioner<dim>::Type::amg);
-    Timer timer;
+    Timer                      timer;
     tangent.assemble(grid, points, cache, constraints);
     amg.setup(tangent.matrix(), grid);
     du = 0.;

@@ -92,10 +92,10 @@ main(int argc, char *argv[])
             qsmpm::NewtonParameters::InitialGuess::extrapolation;
           prm.nonlinear_solver.eisenstat_walker = true;
         }
-      prm.load_stepping.n_steps                       = n_steps;
-      prm.load_stepping.final_load_factor             = 10.;
-      prm.output.directory                            = "benchmark_output";
-      prm.output.interval                             = 0;
+      prm.load_stepping.n_steps           = n_steps;
+      prm.load_stepping.final_load_factor = 10.;
+      prm.output.directory                = "benchmark_output";
+      prm.output.interval                 = 0;
 
       Timer timer;
       problem.run();

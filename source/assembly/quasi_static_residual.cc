@@ -221,12 +221,16 @@ namespace qsmpm
 
         if (track_dissipation)
           for (unsigned int i = 0; i < n_points; ++i)
-            dissipated +=
-              old[i].volume *
-              model.dissipation(old[i],
-                                ArrayView<const double>(state_scratch.data() +
-                                                          i * n_state,
-                                                        n_state));
+            {
+              // Assembled once: old[i] reads the whole point state.
+              const PointState<dim> point = old[i];
+              dissipated +=
+                point.volume *
+                model.dissipation(point,
+                                  ArrayView<const double>(state_scratch.data() +
+                                                            i * n_state,
+                                                          n_state));
+            }
 
         if (vertex_stencil)
           add_cell_forces<true>(range, f_cell);
