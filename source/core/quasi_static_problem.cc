@@ -665,14 +665,21 @@ namespace qsmpm
     du_ghosted = du;
     residual->commit(du_ghosted, points());
     const double moved = points().advect(cache, du_ghosted);
-    // The cache is of the points' old positions, and sorting moves their
-    // data in memory: it is made anew in the next step. Releasing it now
+    last_reactions     = reaction_forces.evaluate(R, communicator);
+    // The cache is of the points' old positions; the next step makes it
+    // anew. While every point stays in its cell, that is all: the points'
+    // data stay where they are, and the cache keeps its memory for the
+    // next step (fresh pages cost a page fault each). Measured on the
+    // strip benchmark (256 x 256 cells, reuse 5, 5 steps): commit and move
+    // points 0.29 -> 0.08 s, shape functions 0.22 -> 0.16 s.
+    if (points().locate_in_cells())
+      return;
+    // Sorting moves the points' data in memory. Releasing the cache first
     // keeps it from adding to the copy of all particle data that deal.II
     // makes while sorting, the peak of a step that reuses an earlier
     // preconditioner (measured on the strip benchmark, 256 x 256 cells:
     // 463 -> 440 MB).
     cache.clear();
-    last_reactions  = reaction_forces.evaluate(R, communicator);
     const auto lost = points().sort_into_cells();
     // In parallel, deal.II finds a point's new cell only among the
     // neighbours of its old one (the ghost layer).

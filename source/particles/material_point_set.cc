@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -492,6 +493,85 @@ namespace qsmpm
         Assert(p == range.end_point, ExcInternalError());
       }
     return Utilities::MPI::max(largest, grid.get_communicator());
+  }
+
+
+
+  template <int dim>
+  bool
+  MaterialPointSet<dim>::locate_in_cells()
+  {
+    bool                    inside = true;
+    std::vector<Point<dim>> real_locations, reference_locations;
+    for (const auto &cell : grid.get_triangulation().active_cell_iterators())
+      {
+        if (!inside)
+          break;
+        if (!cell->is_locally_owned())
+          continue;
+        const auto particles = particle_handler.particles_in_cell(cell);
+        if (particles.begin() == particles.end())
+          continue;
+
+        // The affine map x = X_0 + J xi through vertices 0 and 2^d; the Q1
+        // map is that map if it also reproduces the other vertices.
+        const Point<dim> &origin = cell->vertex(0);
+        Tensor<2, dim>    jacobian;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = 0; e < dim; ++e)
+            jacobian[e][d] = cell->vertex(1U << d)[e] - origin[e];
+        const double tolerance = 1e-12 * jacobian.norm();
+        bool         affine    = true;
+        for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+          {
+            Tensor<1, dim> predicted;
+            for (unsigned int d = 0; d < dim; ++d)
+              if ((v >> d) & 1U)
+                for (unsigned int e = 0; e < dim; ++e)
+                  predicted[e] += jacobian[e][d];
+            affine = affine &&
+                     (origin + predicted - cell->vertex(v)).norm() <= tolerance;
+          }
+
+        if (affine)
+          {
+            const Tensor<2, dim> inverse = invert(jacobian);
+            for (auto &particle : particles)
+              {
+                const Point<dim> xi(inverse *
+                                    (particle.get_location() - origin));
+                if (!GeometryInfo<dim>::is_inside_unit_cell(xi))
+                  {
+                    inside = false;
+                    break;
+                  }
+                particle.set_reference_location(xi);
+              }
+          }
+        else
+          {
+            real_locations.clear();
+            for (const auto &particle : particles)
+              real_locations.push_back(particle.get_location());
+            reference_locations.resize(real_locations.size());
+            grid.get_mapping().transform_points_real_to_unit_cell(
+              cell, real_locations, reference_locations);
+            auto particle = particles.begin();
+            for (const auto &xi : reference_locations)
+              {
+                // deal.II marks a point it could not map by infinity.
+                if (!(xi[0] < std::numeric_limits<double>::infinity()) ||
+                    !GeometryInfo<dim>::is_inside_unit_cell(xi))
+                  {
+                    inside = false;
+                    break;
+                  }
+                particle->set_reference_location(xi);
+                ++particle;
+              }
+          }
+      }
+    return Utilities::MPI::min(inside ? 1 : 0, grid.get_communicator()) == 1;
   }
 
 

@@ -165,12 +165,28 @@ namespace qsmpm
     /**
      * Move the points with the converged grid increment (paper eqs.
      * 2.26-2.27): x_p += sum_i du_i N_i(x_p), u_p += the same. @p du_ghosted
-     * must hold the locally relevant entries. Call sort_into_cells() next.
-     * Returns the largest distance a point moved (over all ranks).
+     * must hold the locally relevant entries. Call locate_in_cells() next,
+     * and sort_into_cells() if it returns false. Returns the largest
+     * distance a point moved (over all ranks).
      */
     double
     advect(const ShapeCache<dim>               &cache,
            const TrilinosWrappers::MPI::Vector &du_ghosted);
+
+    /**
+     * After the points' locations were changed: if every point (on every
+     * rank) is still inside the cell it was in, update the points'
+     * reference locations and return true. Otherwise return false, and
+     * call sort_into_cells(). This is the first half of deal.II's sort,
+     * with the same test (GeometryInfo::is_inside_unit_cell), but without
+     * deal.II's reordering of all particle data in memory, which is the
+     * larger half and needless when no point changes cells. On affine
+     * cells (the Cartesian grids of MPM) the reference location is that of
+     * the inverse affine map; on others that of the grid's mapping.
+     * Collective: one reduction.
+     */
+    bool
+    locate_in_cells();
 
     /**
      * After the points' locations were changed: sort them into cells and
