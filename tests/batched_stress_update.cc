@@ -16,6 +16,13 @@
 //    stresses and the trial fields, which change as the points crack, equal
 //    those of update_stress() exactly.
 //
+// 4. The batched tangents ConstitutiveModel::tangents(), which the tangent
+//    assembler and the check for nodes without stiffness call once per
+//    cell: LinearElastic's override against
+//    C_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk) with the same
+//    lambda, mu; the default (CubicElastic, one orientation per point)
+//    equal to tangent() point by point.
+//
 // The points of a batch are read through PointStateBatch from property
 // arrays laid out as the points' own (strain, stress, volume, material id,
 // model fields), with committed stresses and strain increments that differ
@@ -171,6 +178,35 @@ namespace
     return diff / scale;
   }
 
+  /// tangents() of the batch and tangent() of each point.
+  template <int dim>
+  std::pair<std::vector<SymmetricTensor<4, dim>>,
+            std::vector<SymmetricTensor<4, dim>>>
+  tangents_both(const ConstitutiveModel<dim> &model, const Points<dim> &points)
+  {
+    std::vector<SymmetricTensor<4, dim>> batched(points.size()), single;
+    model.tangents(points.batch(), make_array_view(batched));
+    const auto batch = points.batch();
+    for (unsigned int i = 0; i < points.size(); ++i)
+      single.push_back(model.tangent(batch[i]));
+    return {batched, single};
+  }
+
+  /// max_i |a_i - b_i| / max_i |b_i| of fourth-order tensors.
+  template <int dim>
+  double
+  tangent_difference(const std::vector<SymmetricTensor<4, dim>> &a,
+                     const std::vector<SymmetricTensor<4, dim>> &b)
+  {
+    double diff = 0., scale = 0.;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        diff  = std::max(diff, (a[i] - b[i]).norm());
+        scale = std::max(scale, b[i].norm());
+      }
+    return diff / scale;
+  }
+
   template <int dim>
   void
   check_linear_elastic(const bool plane_stress)
@@ -198,6 +234,18 @@ namespace
           1e-13);
     check("  batched against update_stress()",
           relative_difference(r.batched, r.single),
+          1e-13);
+
+    std::vector<SymmetricTensor<4, dim>> exact_C(points.size());
+    for (auto &C : exact_C)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = k; l < dim; ++l)
+              C[i][j][k][l] = lambda * (i == j) * (k == l) +
+                              mu * ((i == k) * (j == l) + (i == l) * (j == k));
+    check("  batched tangents against lambda, mu",
+          tangent_difference(tangents_both(model, points).first, exact_C),
           1e-13);
   }
 
@@ -243,6 +291,13 @@ namespace
     check("  rotated: batched against update_stress()",
           relative_difference(r.batched, r.single),
           1e-13);
+    const auto C = tangents_both(model, points);
+    check_that("  rotated: tangents() (the default) equal tangent()'s, and "
+               "they differ from point to point",
+               tangent_difference(C.first, C.second) == 0. &&
+                 tangent_difference(C.second,
+                                    std::vector<SymmetricTensor<4, 3>>(
+                                      C.second.size(), C.second[0])) > 1e-3);
   }
 
   void

@@ -20,13 +20,7 @@ namespace qsmpm
     , update_volumes(update_volumes)
     , track_dissipation(points.get_model().computes_dissipation())
   {
-    const auto &offsets = points.get_offsets();
-    state_layout        = {offsets.strain,
-                           offsets.stress,
-                           offsets.volume,
-                           offsets.material_id,
-                           offsets.state,
-                           model.n_state_components()};
+    state_layout = points.batch_layout();
     reinit();
   }
 

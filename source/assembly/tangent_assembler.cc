@@ -9,63 +9,110 @@ namespace qsmpm
   namespace
   {
     /**
-     * The tangent C_akbl of the stiffness K = sum_p Omega_p B^T C B at the
-     * committed state of a point, and the volume Omega_p it is integrated
-     * over: the small-strain tangent on the current volume, or at finite
-     * strain the tangent of the first Piola stress on the initial volume.
+     * The tangents C_akbl of the stiffness K = sum_p Omega_p B^T C B at the
+     * committed states of the points of one cell, and the volumes Omega_p
+     * they are integrated over: the small-strain tangent on the current
+     * volume (one batched call of the model per cell), or at finite strain
+     * the tangent of the first Piola stress on the initial volume.
      */
     template <int dim>
-    class PointTangent
+    class CellTangents
     {
     public:
-      explicit PointTangent(const MaterialPointSet<dim> &points)
+      explicit CellTangents(const MaterialPointSet<dim> &points)
         : model(points.get_model())
         , offsets(points.get_offsets())
-        , n_state(model.n_state_components())
+        , layout(points.batch_layout())
         , finite_strain(points.get_formulation().finite_strain())
       {
       }
 
-      /// C and Omega of the point @p p of @p cache.
+      /**
+       * Fill C() and volume() for the points of the cell @p c of
+       * @p cache, in their order.
+       */
       void
-      operator()(const ShapeCache<dim> &cache,
-                 const unsigned int     p,
-                 Tensor<4, dim>        &C,
-                 double                &volume) const
+      reinit(const ShapeCache<dim> &cache, const unsigned int c)
       {
-        const double         *data  = cache.properties(p);
-        const PointState<dim> state = MaterialPointSet<dim>::read_point_state(
-          data, offsets, n_state, cache.position(p));
-        if (finite_strain)
+        const auto        &range = cache.cell(c);
+        const unsigned int n     = range.end_point - range.first_point;
+        // Grown to the largest cell, then reused: no allocation per cell.
+        if (tangents.size() < n)
           {
-            // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
-            // G = grad_n d(du), on the initial volume (see
-            // QuasiStaticResidual).
-            FiniteStrainKinematics<dim> kinematics;
-            kinematics.F_old =
-              Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-            kinematics.delta_F = unit_symmetric_tensor<dim>();
-            kinematics.F       = kinematics.F_old;
-            C                  = model.kirchhoff_tangent(state, kinematics);
-            const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int k = 0; k < dim; ++k)
-                for (unsigned int l = 0; l < dim; ++l)
-                  C[a][k][k][l] -= tau[a][l];
-            volume = data[offsets.initial_volume];
+            symmetric.resize(n);
+            tangents.resize(n);
+            volumes.resize(n);
           }
+        if (finite_strain)
+          for (unsigned int i = 0; i < n; ++i)
+            finite_strain_tangent(cache, range.first_point + i, i);
         else
           {
-            C      = Tensor<4, dim>(model.tangent(state));
-            volume = data[offsets.volume];
+            const PointStateBatch<dim> old(layout,
+                                           cache.property_arrays(
+                                             range.first_point),
+                                           &cache.position(range.first_point),
+                                           n);
+            model.tangents(old,
+                           ArrayView<SymmetricTensor<4, dim>>(symmetric.data(),
+                                                              n));
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                tangents[i] = Tensor<4, dim>(symmetric[i]);
+                volumes[i] =
+                  cache.properties(range.first_point + i)[offsets.volume];
+              }
           }
       }
 
+      /// C of the @p i-th point of the cell.
+      const Tensor<4, dim> &
+      C(const unsigned int i) const
+      {
+        return tangents[i];
+      }
+
+      /// Omega of the @p i-th point of the cell.
+      double
+      volume(const unsigned int i) const
+      {
+        return volumes[i];
+      }
+
     private:
+      void
+      finite_strain_tangent(const ShapeCache<dim> &cache,
+                            const unsigned int     p,
+                            const unsigned int     i)
+      {
+        const double         *data  = cache.properties(p);
+        const PointState<dim> state = MaterialPointSet<dim>::read_point_state(
+          data, offsets, layout.n_state, cache.position(p));
+        // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
+        // G = grad_n d(du), on the initial volume (see
+        // QuasiStaticResidual).
+        FiniteStrainKinematics<dim> kinematics;
+        kinematics.F_old =
+          Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+        kinematics.delta_F = unit_symmetric_tensor<dim>();
+        kinematics.F       = kinematics.F_old;
+        Tensor<4, dim> &C  = tangents[i];
+        C                  = model.kirchhoff_tangent(state, kinematics);
+        const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              C[a][k][k][l] -= tau[a][l];
+        volumes[i] = data[offsets.initial_volume];
+      }
+
       const ConstitutiveModel<dim>                  &model;
       const typename MaterialPointSet<dim>::Offsets &offsets;
-      const unsigned int                             n_state;
+      const typename PointStateBatch<dim>::Layout    layout;
       const bool                                     finite_strain;
+      std::vector<SymmetricTensor<4, dim>>           symmetric;
+      std::vector<Tensor<4, dim>>                    tangents;
+      std::vector<double>                            volumes;
     };
   } // namespace
 
@@ -149,7 +196,7 @@ namespace qsmpm
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints)
   {
-    const PointTangent<dim> point_tangent(points);
+    CellTangents<dim> cell_tangents(points);
 
     if (pattern_per_step)
       make_step_pattern(grid, cache);
@@ -161,14 +208,14 @@ namespace qsmpm
         const unsigned int n_dofs = cache.n_dofs(c);
         K_cell.reinit(n_dofs, n_dofs);
         const auto &range = cache.cell(c);
+        cell_tangents.reinit(cache, c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N  = cache.gradients(p);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
-            Tensor<4, dim>        C;
-            double                volume;
-            point_tangent(cache, p, C, volume);
+            const Tensor<4, dim> &C = cell_tangents.C(p - range.first_point);
+            const double volume = cell_tangents.volume(p - range.first_point);
             // K_(v,a),(w,b) = Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l
             for (unsigned int v = 0; v < stencil; ++v)
               for (unsigned int w = 0; w < stencil; ++w)
@@ -217,7 +264,7 @@ namespace qsmpm
     const ShapeCache<dim>         &cache,
     TrilinosWrappers::MPI::Vector &diagonal)
   {
-    const PointTangent<dim> point_tangent(points);
+    CellTangents<dim> cell_tangents(points);
 
     diagonal = 0.;
     std::vector<double> cell_diagonal(ShapeCache<dim>::max_dofs_per_group);
@@ -227,13 +274,13 @@ namespace qsmpm
                   cell_diagonal.begin() + cache.n_dofs(c),
                   0.);
         const auto &range = cache.cell(c);
+        cell_tangents.reinit(cache, c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N = cache.gradients(p);
             const unsigned short *nodes  = cache.nodes(p);
-            Tensor<4, dim>        C;
-            double                volume;
-            point_tangent(cache, p, C, volume);
+            const Tensor<4, dim> &C = cell_tangents.C(p - range.first_point);
+            const double volume = cell_tangents.volume(p - range.first_point);
             // K_(v,a),(v,a) = Omega sum_kl dN_v/dx_k C_akal dN_v/dx_l
             for (unsigned int v = 0; v < cache.stencil_size(p); ++v)
               for (unsigned int a = 0; a < dim; ++a)

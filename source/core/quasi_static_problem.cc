@@ -444,17 +444,20 @@ namespace qsmpm
   template <int dim>
   void
   QuasiStaticProblem<dim>::check_volume_ratios(const StepOperator<dim> &op,
-                                               NewtonReport            &report)
+                                               NewtonReport            &report,
+                                               const bool last_evaluation_at_du)
   {
     // A converged increment may still have turned a point inside out: at
     // small strain J = (1 + tr d eps) J_old can pass zero while the
     // residual stays finite. Such a step is rejected (and cut back) like
-    // one that did not converge. The residual is evaluated once more at
-    // du: the J it records must be that of the accepted increment, not of
-    // whatever trial Newton evaluated last (R itself is unchanged).
+    // one that did not converge. The J the residual records must be that
+    // of the accepted increment: unless the solver's last evaluation was
+    // at du, the residual is evaluated once more there (R itself is
+    // unchanged). Path following may have evaluated a trial last.
     if (report.converged)
       {
-        op.residual(du, R);
+        if (!last_evaluation_at_du)
+          op.residual(du, R);
         const double min_J =
           dealii::Utilities::MPI::min(residual->minimum_volume_ratio(),
                                       communicator);
@@ -508,7 +511,7 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       report = newton.solve(op, du, R);
-      check_volume_ratios(op, report);
+      check_volume_ratios(op, report, true);
       count_preconditioner_use(report);
     }
     // A step that failed (and is tried again with a smaller increment, or
@@ -639,7 +642,7 @@ namespace qsmpm
                             R,
                             force_new,
                             guard);
-      check_volume_ratios(op, report);
+      check_volume_ratios(op, report, false);
       count_preconditioner_use(report);
     }
     t_new = t_old + delta_lambda;

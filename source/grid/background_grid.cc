@@ -406,6 +406,33 @@ namespace qsmpm
 
 
 
+  template <int dim>
+  bool
+  BackgroundGrid<dim>::affine_map(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    Tensor<2, dim>                                   &jacobian)
+  {
+    const Point<dim> &origin = cell->vertex(0);
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int e = 0; e < dim; ++e)
+        jacobian[e][d] = cell->vertex(1U << d)[e] - origin[e];
+    // The affine map through vertices 0 and 2^d must reproduce the others.
+    const double tolerance = 1e-12 * jacobian.norm();
+    for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+      {
+        Tensor<1, dim> predicted;
+        for (unsigned int d = 0; d < dim; ++d)
+          if ((v >> d) & 1U)
+            for (unsigned int e = 0; e < dim; ++e)
+              predicted[e] += jacobian[e][d];
+        if ((origin + predicted - cell->vertex(v)).norm() > tolerance)
+          return false;
+      }
+    return true;
+  }
+
+
+
   template class BackgroundGrid<2>;
   template class BackgroundGrid<3>;
 } // namespace qsmpm

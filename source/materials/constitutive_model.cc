@@ -118,6 +118,18 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  ConstitutiveModel<dim>::tangents(const PointStateBatch<dim>        &old,
+                                   ArrayView<SymmetricTensor<4, dim>> C) const
+  {
+    AssertDimension(C.size(), old.size());
+    for (unsigned int i = 0; i < old.size(); ++i)
+      C[i] = tangent(old[i]);
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::state_is_constant() const
   {

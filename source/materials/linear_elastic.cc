@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <qsmpm/materials/linear_elastic.h>
 
 namespace qsmpm
@@ -146,6 +147,18 @@ namespace qsmpm
   LinearElastic<dim>::tangent(const PointState<dim> &) const
   {
     return C;
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::tangents(
+    [[maybe_unused]] const PointStateBatch<dim> &old,
+    ArrayView<SymmetricTensor<4, dim>>           C_points) const
+  {
+    AssertDimension(C_points.size(), old.size());
+    std::fill(C_points.begin(), C_points.end(), C);
   }
 
 

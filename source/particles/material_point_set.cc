@@ -498,6 +498,20 @@ namespace qsmpm
 
 
   template <int dim>
+  typename PointStateBatch<dim>::Layout
+  MaterialPointSet<dim>::batch_layout() const
+  {
+    return {offsets.strain,
+            offsets.stress,
+            offsets.volume,
+            offsets.material_id,
+            offsets.state,
+            model.n_state_components()};
+  }
+
+
+
+  template <int dim>
   bool
   MaterialPointSet<dim>::locate_in_cells()
   {
@@ -513,26 +527,9 @@ namespace qsmpm
         if (particles.begin() == particles.end())
           continue;
 
-        // The affine map x = X_0 + J xi through vertices 0 and 2^d; the Q1
-        // map is that map if it also reproduces the other vertices.
         const Point<dim> &origin = cell->vertex(0);
         Tensor<2, dim>    jacobian;
-        for (unsigned int d = 0; d < dim; ++d)
-          for (unsigned int e = 0; e < dim; ++e)
-            jacobian[e][d] = cell->vertex(1U << d)[e] - origin[e];
-        const double tolerance = 1e-12 * jacobian.norm();
-        bool         affine    = true;
-        for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
-          {
-            Tensor<1, dim> predicted;
-            for (unsigned int d = 0; d < dim; ++d)
-              if ((v >> d) & 1U)
-                for (unsigned int e = 0; e < dim; ++e)
-                  predicted[e] += jacobian[e][d];
-            affine = affine &&
-                     (origin + predicted - cell->vertex(v)).norm() <= tolerance;
-          }
-
+        const bool affine = BackgroundGrid<dim>::affine_map(cell, jacobian);
         if (affine)
           {
             const Tensor<2, dim> inverse = invert(jacobian);

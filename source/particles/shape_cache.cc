@@ -173,19 +173,29 @@ namespace qsmpm
     const ScalarPolynomialsBase<dim> &polynomials = q1.get_poly_space();
     q1_values.resize(n_vertices);
     q1_gradients.resize(n_vertices);
+    // On an affine cell (every cell of a Cartesian grid) the Jacobian of
+    // the Q1 map is the same at all points: inverted once per cell.
+    Tensor<2, dim>       affine_jacobian;
+    const bool           affine = grid.affine_map(cell, affine_jacobian);
+    const Tensor<2, dim> affine_inverse_transpose =
+      affine ? transpose(invert(affine_jacobian)) : Tensor<2, dim>();
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
-        // The Jacobian of the Q1 map at the point: exact for any
-        // (bi/tri)linear cell, and diagonal on the Cartesian grid.
         const Point<dim> xi = particle.get_reference_location();
         polynomials.evaluate(
           xi, q1_values, q1_gradients, q1_unused_2, q1_unused_3, q1_unused_4);
         for (unsigned int v = 0; v < n_vertices; ++v)
           shape_values[p * stencil + v] = q1_values[v];
-        Tensor<2, dim> jacobian;
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          jacobian += outer_product(cell->vertex(v), q1_gradients[v]);
-        const Tensor<2, dim> inverse_transpose = transpose(invert(jacobian));
+        // Otherwise the Jacobian of the Q1 map at the point: exact for any
+        // (bi/tri)linear cell.
+        Tensor<2, dim> inverse_transpose = affine_inverse_transpose;
+        if (!affine)
+          {
+            Tensor<2, dim> jacobian;
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              jacobian += outer_product(cell->vertex(v), q1_gradients[v]);
+            inverse_transpose = transpose(invert(jacobian));
+          }
         for (unsigned int v = 0; v < n_vertices; ++v)
           {
             shape_gradients[p * stencil + v] =

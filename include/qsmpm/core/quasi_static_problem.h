@@ -245,9 +245,13 @@ namespace qsmpm
     void
     count_preconditioner_use(const NewtonReport &report);
 
-    /// Reject a converged step that turned a point inside out.
+    /// Reject a converged step that turned a point inside out. If
+    /// @p last_evaluation_at_du, the solver's last residual evaluation was
+    /// at du (NewtonKrylov guarantees it), and its volume ratios serve.
     void
-    check_volume_ratios(const StepOperator<dim> &op, NewtonReport &report);
+    check_volume_ratios(const StepOperator<dim> &op,
+                        NewtonReport            &report,
+                        const bool               last_evaluation_at_du);
 
     /// Commit du: point state, positions, reactions.
     void

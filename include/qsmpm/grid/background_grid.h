@@ -175,6 +175,18 @@ namespace qsmpm
     double
     min_cell_size() const;
 
+    /**
+     * Whether the (bi/tri)linear map of @p cell is affine,
+     * x = vertex(0) + J xi (a parallelogram or parallelepiped: every cell
+     * of a Cartesian grid), to 1e-12 of |J|; @p jacobian is J, columns
+     * vertex(2^d) - vertex(0). On an affine cell, the Jacobian of the map
+     * is that J at every point, and the reference location of x is
+     * J^{-1} (x - vertex(0)).
+     */
+    static bool
+    affine_map(const typename Triangulation<dim>::cell_iterator &cell,
+               Tensor<2, dim>                                   &jacobian);
+
   private:
     MPI_Comm                                  communicator;
     parallel::distributed::Triangulation<dim> triangulation;

@@ -138,6 +138,19 @@ namespace qsmpm
     tangent(const PointState<dim> &old) const = 0;
 
     /**
+     * tangent() for a batch of points (the points of one cell): @p C[i] is
+     * the tangent of the point @p old[i]. The tangent assembler and the
+     * check for nodes without stiffness, which runs in every load step,
+     * call this once per cell. The default calls tangent() point by point;
+     * a model with the same tangent at every point (linear elasticity)
+     * overrides it to copy that tangent without assembling a PointState
+     * per point.
+     */
+    virtual void
+    tangents(const PointStateBatch<dim>        &old,
+             ArrayView<SymmetricTensor<4, dim>> C) const;
+
+    /**
      * The consistent (algorithmic) tangent d(sigma)/d(strain_increment) of
      * update_stress() at the trial state reached with @p strain_increment
      * from @p old. Path-dependent models (plasticity) override it; the

@@ -80,6 +80,11 @@ namespace qsmpm
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;
 
+    /// C at every point.
+    void
+    tangents(const PointStateBatch<dim>        &old,
+             ArrayView<SymmetricTensor<4, dim>> C) const override;
+
     /// The elastic stiffness.
     const SymmetricTensor<4, dim> &
     stiffness() const;

@@ -205,6 +205,10 @@ namespace qsmpm
     get_layout() const;
     const Offsets &
     get_offsets() const;
+
+    /// Where a PointStateBatch of these points finds the fields of a point.
+    typename PointStateBatch<dim>::Layout
+    batch_layout() const;
     const ConstitutiveModel<dim> &
     get_model() const;
     const Formulation &

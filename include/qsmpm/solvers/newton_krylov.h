@@ -136,6 +136,11 @@ namespace qsmpm
      * increments); the stopping test uses ||R(du_0)|| with du_0 = g, its
      * constrained part, as above, at the cost of one more residual.
      * (InitialGuess::boundary_values: @p du is du_0.)
+     *
+     * On a converged return, @p R is R(@p du) and the last call of
+     * op.residual() was at @p du (no Jacobian product follows the last
+     * update): whatever the operator records of its last evaluation (the
+     * smallest volume ratio of the points) is that of the solution.
      */
     NewtonReport
     solve(const Operator &op, VectorType &du, VectorType &R) const
