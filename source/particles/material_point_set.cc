@@ -506,7 +506,7 @@ namespace qsmpm
             offsets.volume,
             offsets.material_id,
             offsets.state,
-            model.n_state_components()};
+            n_state_components()};
   }
 
 
