@@ -26,6 +26,18 @@
 // a node held while a point still gives it stiffness would show as a load).
 // The run without the hold (fraction 0) is reported as a control: it must
 // stop at the first step with a dof without stiffness.
+//
+// 1399 load steps, not 1400: with steps of exactly 0.001 the right piece's
+// first point ends step 1100 on the way back on the cell face x = 4 (to a
+// few ulps), where the stiffness is singular although every dof has some:
+// the point, at xi = 1 of its cell (or xi = 1e-16 of the next), stiffens
+// the nodes x = 3 only against their common motion, and the opposite
+// motion of the top and bottom node, with the band point failed, has no
+// stiffness at all. Whether KLU then factorizes depends on the last bits
+// of the point's position (the residual's round-off decided it). A point
+// that ends a step on a face is a limitation of its own (see
+// doc/example_compact_tension.md); this test is about complete failure,
+// and with 1399 (or 1401) steps no point ends a step on a face.
 #include "tests.h"
 
 #include <qsmpm/core/quasi_static_problem.h>
@@ -100,7 +112,7 @@ namespace
     prm.nonlinear_solver.linear_tolerance            = 1e-10;
     prm.nonlinear_solver.max_line_search_steps       = 4;
     prm.nonlinear_solver.preconditioner              = "direct";
-    prm.load_stepping.n_steps                        = 1400;
+    prm.load_stepping.n_steps                        = 1399;
     prm.load_stepping.final_load_factor              = t_end;
     prm.load_stepping.max_cut_backs                  = 2;
     prm.material_points.update_volumes               = false;

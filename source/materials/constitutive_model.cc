@@ -130,6 +130,15 @@ namespace qsmpm
 
 
   template <int dim>
+  typename PointStateBatch<dim>::Fields
+  ConstitutiveModel<dim>::batch_fields() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::state_is_constant() const
   {

@@ -206,6 +206,19 @@ namespace qsmpm
 
 
   template <int dim>
+  typename PointStateBatch<dim>::Fields
+  CubicElastic<dim>::batch_fields() const
+  {
+    typename PointStateBatch<dim>::Fields fields;
+    fields.strain      = false;
+    fields.volume      = false;
+    fields.material_id = false;
+    return fields;
+  }
+
+
+
+  template <int dim>
   bool
   CubicElastic<dim>::state_is_constant() const
   {

@@ -143,6 +143,15 @@ namespace qsmpm
 
 
   template <int dim>
+  typename PointStateBatch<dim>::Fields
+  LinearElastic<dim>::batch_fields() const
+  {
+    return {false, true, false, false, false};
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   LinearElastic<dim>::tangent(const PointState<dim> &) const
   {

@@ -1,4 +1,5 @@
 #include <Epetra_BlockMap.h>
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/fe/fe_poly.h>
@@ -85,9 +86,12 @@ namespace qsmpm
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
 
+    ++generation_count;
     point_set = &points;
     stencil   = gimp ? max_stencil_size : n_vertices;
     cells.clear();
+    affine_cells.clear();
+    cell_is_affine.clear();
     dof_offsets.assign(1, 0);
     cell_local_dofs.clear();
     cell_global_dofs.clear();
@@ -110,12 +114,18 @@ namespace qsmpm
             continue;
           const unsigned int first = p;
           if (gimp)
-            add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
+            {
+              add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
+              affine_cells.emplace_back();
+              cell_is_affine.push_back(false);
+            }
           else
             add_linear_cell(dof_cell, grid, map, p, particle_handler);
           cells.push_back({cell, first, p});
           dof_offsets.push_back(cell_local_dofs.size());
         }
+    affine_cell_count =
+      std::count(cell_is_affine.begin(), cell_is_affine.end(), 1);
     AssertThrow(p == n_local_points,
                 ExcMessage("Some locally owned material points were not found "
                            "in locally owned cells."));
@@ -127,8 +137,12 @@ namespace qsmpm
   void
   ShapeCache<dim>::clear()
   {
+    ++generation_count;
     // swap() with empty vectors: clear() alone keeps the capacity.
     std::vector<CellRange>().swap(cells);
+    std::vector<AffineQ1Cell<dim>>().swap(affine_cells);
+    std::vector<unsigned char>().swap(cell_is_affine);
+    affine_cell_count = 0;
     std::vector<unsigned int>().swap(dof_offsets);
     std::vector<int>().swap(cell_local_dofs);
     std::vector<types::global_dof_index>().swap(cell_global_dofs);
@@ -179,6 +193,9 @@ namespace qsmpm
     const bool           affine = grid.affine_map(cell, affine_jacobian);
     const Tensor<2, dim> affine_inverse_transpose =
       affine ? transpose(invert(affine_jacobian)) : Tensor<2, dim>();
+    affine_cells.push_back(
+      {cell->vertex(0), transpose(affine_inverse_transpose)});
+    cell_is_affine.push_back(affine);
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         const Point<dim> xi = particle.get_reference_location();

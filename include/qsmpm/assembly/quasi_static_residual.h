@@ -139,13 +139,10 @@ namespace qsmpm
      * @p force, the local storage of a vector of the same layout; commit()
      * writes the state into @p written, the points' set.
      *
-     * Per cell: grad du at all its points, their stresses (one call of
-     * ConstitutiveModel::update_stresses() at small strain), and their
-     * forces. The scratch arrays below hold the cell's points.
-     *
-     * (Batches of several cells, 16 to 256 points, were measured slower
-     * than one cell at a time: 6.6-8.0 ms against 5.9 ms per residual on
-     * the 2D block of 262,144 points.)
+     * Per block of a few cells: grad du (or, where it suffices, sym grad
+     * du) at all their points, their stresses (one call of
+     * ConstitutiveModel::update_stresses() at small strain), and the forces
+     * cell by cell. The scratch arrays below hold the block's points.
      */
     template <bool write_back>
     void
@@ -166,6 +163,44 @@ namespace qsmpm
                    const typename ShapeCache<dim>::CellRange &range) const;
 
     /**
+     * cell_gradients() on an affine cell with linear shape functions, from
+     * the points' positions (see AffineQ1Cell); also keeps the points'
+     * monomials in monomial_scratch for the forces.
+     */
+    void
+    affine_cell_gradients(
+      const AffineQ1Cell<dim>                   &affine,
+      const double                              *du_cell,
+      const typename ShapeCache<dim>::CellRange &range) const;
+
+    /**
+     * Small strain without F-bar on an affine cell: the strain increments
+     * sym(grad du) at the points straight into strain_increment_scratch
+     * (the symmetric parts of the K_w of AffineQ1Cell), without grad du.
+     */
+    void
+    affine_cell_strains(const AffineQ1Cell<dim>                   &affine,
+                        const double                              *du_cell,
+                        const typename ShapeCache<dim>::CellRange &range) const;
+
+    /**
+     * The forces of affine_cell_strains(): from the stresses in
+     * stress_scratch and the volumes in volume_scratch of the points of
+     * the cell @p range, summed over their symmetric entries.
+     */
+    void
+    add_affine_symmetric_forces(
+      const AffineQ1Cell<dim>                   &affine,
+      const typename ShapeCache<dim>::CellRange &range,
+      double                                    *f_cell) const;
+
+    /// add_cell_forces() on an affine cell with linear shape functions.
+    void
+    add_affine_cell_forces(const AffineQ1Cell<dim>                   &affine,
+                           const typename ShapeCache<dim>::CellRange &range,
+                           double *f_cell) const;
+
+    /**
      * Subtract the internal forces of the points of the cell @p range, from
      * their stress measures in force_stress_scratch, from the cell's forces
      * @p f_cell.
@@ -176,23 +211,23 @@ namespace qsmpm
                     double                                    *f_cell) const;
 
     /**
-     * Small strain: the strain increments of the points @p first, ... of
-     * the cell's batch @p old from grad_du_scratch, their trial stresses from
-     * one call of the model's batched update, and J and the volume at the end
-     * of the step. evaluate() keeps volume times stress in
-     * force_stress_scratch; commit() writes strain, stress, J and volume
-     * into @p written.
+     * Small strain: from the strain increments in strain_increment_scratch
+     * of the points @p first, ... of the block's batch @p old, their trial
+     * stresses from one call of the model's batched update, and J and the
+     * volume at the end of the step. evaluate() keeps the volumes in
+     * volume_scratch and volume times stress in force_stress_scratch;
+     * commit() writes strain, stress, J and volume into @p written.
      */
     template <bool write_back>
     void
     small_strain_stresses(const PointStateBatch<dim> &old,
                           const unsigned int          first,
-                          const double                mean_volume_change,
                           MaterialPointSet<dim>      *written) const;
 
     /**
      * Finite strain: F = Delta F F_old and the Kirchhoff stress at each
-     * point of the batch; evaluate() keeps Omega_0 P = Omega_0 tau Delta
+     * point of the batch (with F-bar, the cell's mean volume change from
+     * mean_volume_change_scratch); evaluate() keeps Omega_0 P = Omega_0 tau Delta
      * F^{-T} in force_stress_scratch (NaN at an inverted point); commit()
      * writes the logarithmic strain, Cauchy stress, F, J and the volume.
      */
@@ -200,7 +235,6 @@ namespace qsmpm
     void
     finite_strain_stresses(const PointStateBatch<dim> &old,
                            const unsigned int          first,
-                           const double                mean_volume_change,
                            MaterialPointSet<dim>      *written) const;
 
     /**
@@ -211,6 +245,23 @@ namespace qsmpm
     double
     cell_mean_volume_change(const typename ShapeCache<dim>::CellRange &range,
                             const bool finite_strain) const;
+
+    /**
+     * The committed state of point @p p (in the cache's order) that the
+     * evaluations read: its record in the packed copy, or its property
+     * array if there is no packed copy. Offsets in it: state_layout and
+     * own_offsets.
+     */
+    const double *
+    committed(const unsigned int p) const
+    {
+      return packed_record > 0 ? packed.data() + std::size_t(p) * packed_record :
+                                 cache.properties(p);
+    }
+
+    /// Gather the packed copy from the points, if the cache changed.
+    void
+    update_packed_state() const;
 
     const BackgroundGrid<dim>    &grid;
     const MaterialPointSet<dim>  &points;
@@ -226,8 +277,29 @@ namespace qsmpm
     /// computes_dissipation()): if not, dissipation() is 0 without asking
     /// it at every point.
     const bool track_dissipation;
-    /// Where the model's batched update finds the point state.
+    /// Where the model's batched update finds the point state (in the
+    /// packed record, or in the property array without a packed copy).
     typename PointStateBatch<dim>::Layout state_layout;
+    /// Where the residual's own fields are in the same data: J, the
+    /// initial volume, the volume (F-bar) and F (finite strain).
+    typename MaterialPointSet<dim>::Offsets own_offsets;
+    /**
+     * The committed state the evaluations of a load step read, packed:
+     * per point, in the cache's order, the doubles of the property array at
+     * packed_sources (the fields of ConstitutiveModel::batch_fields() and
+     * the residual's own), packed_record of them. With a linear elastic
+     * model in 2D five doubles instead of the twelve of the property
+     * array: the residual streams 40 instead of 96 bytes of state per
+     * point. Gathered again when the cache was reinitialized and after
+     * commit(); without it (packed_record = 0: the record would be more
+     * than half the array) the property arrays are read in place.
+     */
+    mutable std::vector<double> packed;
+    std::vector<unsigned int>   packed_sources;
+    unsigned int                packed_record = 0;
+    /// The cache's generation() of the packed copy.
+    mutable unsigned long packed_generation = 0;
+    mutable bool          packed_valid      = false;
     /// Scratch for the points of the cell being evaluated: grad du, the
     /// strain increments, the trial stresses and fields, and the
     /// volume-weighted stress measures of the forces.
@@ -236,6 +308,15 @@ namespace qsmpm
     mutable std::vector<SymmetricTensor<2, dim>> stress_scratch;
     mutable std::vector<double>                  state_scratch;
     mutable std::vector<Tensor<2, dim>>          force_stress_scratch;
+    /// The monomials of AffineQ1Cell at the cell's points.
+    mutable std::vector<typename AffineQ1Cell<dim>::Monomials>
+                                monomial_scratch;
+    mutable std::vector<double> volume_scratch;
+    /// F-bar at finite strain: the mean volume change of each point's cell.
+    mutable std::vector<double> mean_volume_change_scratch;
+    /// The first point of the block of cells whose points the scratch
+    /// arrays hold: point p is entry p - block_first.
+    mutable unsigned int block_first = 0;
     /// Communication plans owned -> relevant and back, built once: deal.II's
     /// vector assignment between layouts would rebuild one per evaluation.
     std::unique_ptr<Epetra_Import> importer;

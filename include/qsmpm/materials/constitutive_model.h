@@ -122,6 +122,20 @@ namespace qsmpm
                     ArrayView<double>                        new_states) const;
 
     /**
+     * The fields of the committed state that update_stresses() reads (and,
+     * if the model computes them, dissipation() and the finite-strain
+     * functions, which see a whole PointState). The residual keeps a
+     * compact copy of just these fields per point for the load step, and
+     * reads that copy in every evaluation, instead of the points' whole
+     * property arrays: less memory traffic per residual. The default is
+     * all fields; a model that reads less may say so (LinearElastic: the
+     * stress only). A field read that was not declared is NaN in the
+     * batch's operator[] (and an assertion in a debug build).
+     */
+    virtual typename PointStateBatch<dim>::Fields
+    batch_fields() const;
+
+    /**
      * Whether the model's fields never change (e.g. the elastic constants
      * of a crystal kept per point): commit() then leaves them as they are
      * and the batched update need not write trial fields. False by

@@ -105,6 +105,11 @@ namespace qsmpm
                     ArrayView<SymmetricTensor<2, dim>>       stresses,
                     ArrayView<double> new_states) const override;
 
+    /// The batched update reads the committed stress and the rotated
+    /// stiffness (the model's fields) only.
+    typename PointStateBatch<dim>::Fields
+    batch_fields() const override;
+
     /// True: a point's rotated stiffness never changes.
     bool
     state_is_constant() const override;

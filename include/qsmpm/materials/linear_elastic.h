@@ -77,6 +77,10 @@ namespace qsmpm
                     ArrayView<SymmetricTensor<2, dim>>       stresses,
                     ArrayView<double> new_states) const override;
 
+    /// The batched update reads the committed stress only.
+    typename PointStateBatch<dim>::Fields
+    batch_fields() const override;
+
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;
 

@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/affine_q1_cell.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <vector>
 
@@ -77,6 +78,17 @@ namespace qsmpm
     void
     clear();
 
+    /**
+     * A number that changes with every reinit() and clear(): who keeps
+     * data derived from the cache (the residual's packed copy of the
+     * committed point state) can tell whether it is still current.
+     */
+    unsigned long
+    generation() const
+    {
+      return generation_count;
+    }
+
     unsigned int
     n_cells() const
     {
@@ -112,6 +124,24 @@ namespace qsmpm
     cell(const unsigned int c) const
     {
       return cells[c];
+    }
+
+    /**
+     * With linear shape functions, the map of cell @p c if it is affine
+     * (AffineQ1Cell: gradients and forces without the points' shape
+     * gradients); nullptr on other cells and with GIMP.
+     */
+    const AffineQ1Cell<dim> *
+    affine_cell(const unsigned int c) const
+    {
+      return cell_is_affine[c] ? &affine_cells[c] : nullptr;
+    }
+
+    /// The number of cells for which affine_cell() is not null.
+    unsigned int
+    n_affine_cells() const
+    {
+      return affine_cell_count;
     }
 
     /// Number of degrees of freedom of group @p c (nodes times dim).
@@ -241,8 +271,12 @@ namespace qsmpm
                   unsigned int                                         &p,
                   Particles::ParticleHandler<dim> &particle_handler);
 
-    unsigned int                         stencil = n_vertices;
+    unsigned long                        generation_count = 0;
+    unsigned int                         affine_cell_count = 0;
+    unsigned int                         stencil          = n_vertices;
     std::vector<CellRange>               cells;
+    std::vector<AffineQ1Cell<dim>>       affine_cells;
+    std::vector<unsigned char>           cell_is_affine;
     std::vector<unsigned int>            dof_offsets;
     std::vector<int>                     cell_local_dofs;
     std::vector<types::global_dof_index> cell_global_dofs;
