@@ -297,9 +297,9 @@ namespace qsmpm
             const AffineQ1Cell<dim> *affine =
               vertex_stencil ? cache.affine_cell(c) : nullptr;
             if (affine && symmetric_small_strain)
-              affine_cell_strains(*affine, du_cell, range);
+              affine_cell_kinematics<true>(*affine, du_cell, range);
             else if (affine)
-              affine_cell_gradients(*affine, du_cell, range);
+              affine_cell_kinematics<false>(*affine, du_cell, range);
             else if (vertex_stencil)
               cell_gradients<true>(du_cell, range);
             else
@@ -422,47 +422,30 @@ namespace qsmpm
 
 
   template <int dim>
+  template <bool symmetric>
   void
-  QuasiStaticResidual<dim>::affine_cell_gradients(
+  QuasiStaticResidual<dim>::affine_cell_kinematics(
     const AffineQ1Cell<dim>                   &affine,
     const double                              *du_cell,
     const typename ShapeCache<dim>::CellRange &range) const
   {
     constexpr unsigned int n_terms = AffineQ1Cell<dim>::n_terms;
-    double                 K[n_terms][dim * dim];
+    constexpr unsigned int n_sym   = AffineQ1Cell<dim>::n_sym;
+    double                 K[n_terms][dim * dim], K_sym[n_terms][n_sym];
     affine.gradient_terms(du_cell, K);
+    if (symmetric)
+      AffineQ1Cell<dim>::symmetrize_terms(K, K_sym);
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         // Kept for the forces of the same points.
         auto &m = monomial_scratch[p - block_first];
         AffineQ1Cell<dim>::monomials(
           affine.reference_location(cache.position(p)), m);
-        grad_du_scratch[p - block_first] =
-          AffineQ1Cell<dim>::gradient(K, m);
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  QuasiStaticResidual<dim>::affine_cell_strains(
-    const AffineQ1Cell<dim>                   &affine,
-    const double                              *du_cell,
-    const typename ShapeCache<dim>::CellRange &range) const
-  {
-    constexpr unsigned int n_terms = AffineQ1Cell<dim>::n_terms;
-    constexpr unsigned int n_sym = AffineQ1Cell<dim>::n_sym;
-    double                 K[n_terms][dim * dim], K_sym[n_terms][n_sym];
-    affine.gradient_terms(du_cell, K);
-    AffineQ1Cell<dim>::symmetrize_terms(K, K_sym);
-    for (unsigned int p = range.first_point; p < range.end_point; ++p)
-      {
-        auto &m = monomial_scratch[p - block_first];
-        AffineQ1Cell<dim>::monomials(
-          affine.reference_location(cache.position(p)), m);
-        strain_increment_scratch[p - block_first] =
-          AffineQ1Cell<dim>::symmetric_gradient(K_sym, m);
+        if (symmetric)
+          strain_increment_scratch[p - block_first] =
+            AffineQ1Cell<dim>::symmetric_gradient(K_sym, m);
+        else
+          grad_du_scratch[p - block_first] = AffineQ1Cell<dim>::gradient(K, m);
       }
   }
 

@@ -164,27 +164,21 @@ namespace qsmpm
 
     /**
      * cell_gradients() on an affine cell with linear shape functions, from
-     * the points' positions (see AffineQ1Cell); also keeps the points'
-     * monomials in monomial_scratch for the forces.
+     * the points' positions (see AffineQ1Cell), keeping the points'
+     * monomials in monomial_scratch for the forces. With @p symmetric
+     * (small strain without F-bar) only sym(grad du), the strain
+     * increments, straight into strain_increment_scratch (from the
+     * symmetric parts of the K_w), without grad du.
      */
+    template <bool symmetric>
     void
-    affine_cell_gradients(
+    affine_cell_kinematics(
       const AffineQ1Cell<dim>                   &affine,
       const double                              *du_cell,
       const typename ShapeCache<dim>::CellRange &range) const;
 
     /**
-     * Small strain without F-bar on an affine cell: the strain increments
-     * sym(grad du) at the points straight into strain_increment_scratch
-     * (the symmetric parts of the K_w of AffineQ1Cell), without grad du.
-     */
-    void
-    affine_cell_strains(const AffineQ1Cell<dim>                   &affine,
-                        const double                              *du_cell,
-                        const typename ShapeCache<dim>::CellRange &range) const;
-
-    /**
-     * The forces of affine_cell_strains(): from the stresses in
+     * The forces of affine_cell_kinematics<true>(): from the stresses in
      * stress_scratch and the volumes in volume_scratch of the points of
      * the cell @p range, summed over their symmetric entries.
      */
