@@ -260,7 +260,8 @@ namespace qsmpm
     // Each phase is then a loop over independent cells or points that the
     // processor can overlap, where one cell at a time left it waiting for
     // the results of short dependent chains (2D block of 262,144 points:
-    // 2.8 -> 2.4 ms per residual).
+    // 2.8 -> 2.5-2.7 ms per residual; blocks of 4, 16 or 32 cells were
+    // slower, doc/benchmarks.md).
     constexpr unsigned int block_cells = 8;
     const bool             symmetric_small_strain = !finite_strain && !fbar;
     double                 du_cell[max_dofs];
