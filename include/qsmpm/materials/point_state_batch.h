@@ -102,9 +102,10 @@ namespace qsmpm
 
     /**
      * The whole committed state of point @p i. Fields that the batch does
-     * not hold (a model that reads more than its batch_fields()) are NaN,
-     * so that the mistake shows in the residual instead of passing as a
-     * plausible value.
+     * not hold (a model that reads more than its batch_fields()) are NaN
+     * (the material id numbers::invalid_unsigned_int, the model's fields
+     * an empty view), so that the mistake shows in the residual instead of
+     * passing as a plausible value.
      */
     PointState<dim>
     operator[](const unsigned int i) const
