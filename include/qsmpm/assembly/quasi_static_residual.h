@@ -46,7 +46,11 @@ namespace qsmpm
    * with the point's own Delta F (the original, non-symmetric F-bar).
    *
    * The sums over i run over each point's stencil in the ShapeCache: the
-   * 2^dim vertices of its cell (linear) or 3^dim nodes (GIMP).
+   * 2^dim vertices of its cell (linear) or 3^dim nodes (GIMP). On affine
+   * cells with linear shape functions both sums are done per cell in the
+   * monomial form of AffineQ1Cell, from the points' positions. The
+   * evaluations read the committed state from a packed copy of the fields
+   * the model declares (ConstitutiveModel::batch_fields()).
    *
    * evaluate() is pure: it reads the committed point state and writes only
    * the residual. This is what makes finite-difference Jacobian-vector
@@ -209,8 +213,10 @@ namespace qsmpm
      * of the points @p first, ... of the block's batch @p old, their trial
      * stresses from one call of the model's batched update, and J and the
      * volume at the end of the step. evaluate() keeps the volumes in
-     * volume_scratch and volume times stress in force_stress_scratch;
-     * commit() writes strain, stress, J and volume into @p written.
+     * volume_scratch and volume times stress in force_stress_scratch (the
+     * latter not if every cell's forces come from
+     * add_affine_symmetric_forces()); commit() writes strain, stress, J
+     * and volume into @p written.
      */
     template <bool write_back>
     void
