@@ -27,13 +27,15 @@ namespace qsmpm
     const auto        &offsets       = points.get_offsets();
     const auto         full          = points.batch_layout();
     const bool         finite_strain = points.get_formulation().finite_strain();
-    constexpr unsigned n_sym = SymmetricTensor<2, dim>::n_independent_components;
+    constexpr unsigned n_sym =
+      SymmetricTensor<2, dim>::n_independent_components;
     const typename PointStateBatch<dim>::Fields fields =
       (finite_strain || track_dissipation) ?
         typename PointStateBatch<dim>::Fields() :
         model.batch_fields();
     std::vector<unsigned int> sources;
-    const auto add = [&sources](const unsigned int first, const unsigned int n) {
+    const auto                add = [&sources](const unsigned int first,
+                                const unsigned int n) {
       for (unsigned int k = 0; k < n; ++k)
         sources.push_back(first + k);
     };
@@ -77,19 +79,19 @@ namespace qsmpm
                    static_cast<unsigned int>(it - packed_sources.begin()) :
                    numbers::invalid_unsigned_int;
         };
-        state_layout.strain =
-          fields.strain ? packed_offset(full.strain) : numbers::invalid_unsigned_int;
-        state_layout.stress =
-          fields.stress ? packed_offset(full.stress) : numbers::invalid_unsigned_int;
-        state_layout.state = (fields.state && full.n_state > 0) ?
-                               packed_offset(full.state) :
-                               numbers::invalid_unsigned_int;
-        state_layout.volume =
-          fields.volume ? packed_offset(full.volume) : numbers::invalid_unsigned_int;
+        state_layout.strain      = fields.strain ? packed_offset(full.strain) :
+                                                   numbers::invalid_unsigned_int;
+        state_layout.stress      = fields.stress ? packed_offset(full.stress) :
+                                                   numbers::invalid_unsigned_int;
+        state_layout.state       = (fields.state && full.n_state > 0) ?
+                                     packed_offset(full.state) :
+                                     numbers::invalid_unsigned_int;
+        state_layout.volume      = fields.volume ? packed_offset(full.volume) :
+                                                   numbers::invalid_unsigned_int;
         state_layout.material_id = fields.material_id ?
                                      packed_offset(full.material_id) :
                                      numbers::invalid_unsigned_int;
-        own_offsets.J              = packed_offset(offsets.J);
+        own_offsets.J            = packed_offset(offsets.J);
         own_offsets.initial_volume = packed_offset(offsets.initial_volume);
         own_offsets.volume         = packed_offset(offsets.volume);
         own_offsets.deformation_gradient =
@@ -105,8 +107,7 @@ namespace qsmpm
   void
   QuasiStaticResidual<dim>::update_packed_state() const
   {
-    if (packed_record == 0 ||
-        (packed_valid && packed_generation == cache.generation()))
+    if (packed_record == 0 || packed_generation == cache.generation())
       return;
     const unsigned int n_points = cache.n_points();
     packed.resize(std::size_t(n_points) * packed_record);
@@ -118,7 +119,6 @@ namespace qsmpm
           *out++ = data[source];
       }
     packed_generation = cache.generation();
-    packed_valid      = true;
   }
 
 
@@ -224,7 +224,7 @@ namespace qsmpm
     loop<true>(du_increment.trilinos_vector()[0], nullptr, &written);
     // The points' state has changed: gathered again before the next
     // evaluation.
-    packed_valid = false;
+    packed_generation = std::numeric_limits<unsigned long>::max();
   }
 
 
@@ -262,14 +262,14 @@ namespace qsmpm
     // the results of short dependent chains (2D block of 262,144 points:
     // 2.8 -> 2.5-2.7 ms per residual; blocks of 4, 16 or 32 cells were
     // slower, doc/benchmarks.md).
-    constexpr unsigned int block_cells = 8;
+    constexpr unsigned int block_cells            = 8;
     const bool             symmetric_small_strain = !finite_strain && !fbar;
     double                 du_cell[max_dofs];
     double                 f_cell[max_dofs];
     for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
       {
-        const unsigned int c1 = std::min(c0 + block_cells, cache.n_cells());
-        const unsigned int first    = cache.cell(c0).first_point;
+        const unsigned int c1    = std::min(c0 + block_cells, cache.n_cells());
+        const unsigned int first = cache.cell(c0).first_point;
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         block_first                 = first;
         if (grad_du_scratch.size() < n_points)
@@ -314,8 +314,7 @@ namespace qsmpm
                           (range.end_point - first),
                         mean_volume_change);
             else if (!affine || !symmetric_small_strain)
-              for (unsigned int p = range.first_point; p < range.end_point;
-                   ++p)
+              for (unsigned int p = range.first_point; p < range.end_point; ++p)
                 {
                   SymmetricTensor<2, dim> &d_eps =
                     strain_increment_scratch[p - first];
@@ -329,16 +328,15 @@ namespace qsmpm
         // The stresses of all points of the block, and with them the
         // volume-weighted stress measures of the forces.
         const PointStateBatch<dim> old =
-          packed_record > 0 ?
-            PointStateBatch<dim>(state_layout,
-                                 committed(first),
-                                 packed_record,
-                                 &cache.position(first),
-                                 n_points) :
-            PointStateBatch<dim>(state_layout,
-                                 cache.property_arrays(first),
-                                 &cache.position(first),
-                                 n_points);
+          packed_record > 0 ? PointStateBatch<dim>(state_layout,
+                                                   committed(first),
+                                                   packed_record,
+                                                   &cache.position(first),
+                                                   n_points) :
+                              PointStateBatch<dim>(state_layout,
+                                                   cache.property_arrays(first),
+                                                   &cache.position(first),
+                                                   n_points);
         if (finite_strain)
           finite_strain_stresses<write_back>(old, first, written);
         else
@@ -370,7 +368,7 @@ namespace qsmpm
 
         for (unsigned int c = c0; c < c1; ++c)
           {
-            const auto              &range = cache.cell(c);
+            const auto              &range  = cache.cell(c);
             const unsigned int       n_dofs = cache.n_dofs(c);
             const AffineQ1Cell<dim> *affine =
               vertex_stencil ? cache.affine_cell(c) : nullptr;
@@ -440,8 +438,7 @@ namespace qsmpm
       {
         // Kept for the forces of the same points.
         auto &m = monomial_scratch[p - block_first];
-        AffineQ1Cell<dim>::monomials(
-          affine.reference_location(cache.position(p)), m);
+        AffineQ1Cell<dim>::monomials(cache.reference_location(p), m);
         if (symmetric)
           strain_increment_scratch[p - block_first] =
             AffineQ1Cell<dim>::symmetric_gradient(K_sym, m);
@@ -459,8 +456,8 @@ namespace qsmpm
     const typename ShapeCache<dim>::CellRange &range,
     double                                    *f_cell) const
   {
-    constexpr unsigned int n_terms = AffineQ1Cell<dim>::n_terms;
-    constexpr unsigned int n_sym = AffineQ1Cell<dim>::n_sym;
+    constexpr unsigned int n_terms               = AffineQ1Cell<dim>::n_terms;
+    constexpr unsigned int n_sym                 = AffineQ1Cell<dim>::n_sym;
     double                 H_sym[n_terms][n_sym] = {};
     for (unsigned int i = range.first_point - block_first;
          i < range.end_point - block_first;
@@ -490,7 +487,7 @@ namespace qsmpm
     const typename ShapeCache<dim>::CellRange &range,
     double                                    *f_cell) const
   {
-    constexpr unsigned int n_terms = AffineQ1Cell<dim>::n_terms;
+    constexpr unsigned int n_terms               = AffineQ1Cell<dim>::n_terms;
     double                 H[n_terms][dim * dim] = {};
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       AffineQ1Cell<dim>::add_force_terms(force_stress_scratch[p - block_first],
@@ -521,8 +518,7 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N = cache.gradients(p);
-            const Tensor<2, dim> &S =
-              force_stress_scratch[p - block_first];
+            const Tensor<2, dim> &S = force_stress_scratch[p - block_first];
             for (unsigned int k = 0; k < n_vertices; ++k)
               f[k] += S * grad_N[k];
           }
@@ -536,7 +532,7 @@ namespace qsmpm
         const Tensor<1, dim> *grad_N  = cache.gradients(p);
         const unsigned short *nodes   = cache.nodes(p);
         const unsigned int    stencil = cache.stencil_size(p);
-        const Tensor<2, dim> &S = force_stress_scratch[p - block_first];
+        const Tensor<2, dim> &S       = force_stress_scratch[p - block_first];
         for (unsigned int k = 0; k < stencil; ++k)
           {
             const Tensor<1, dim> f = S * grad_N[k];
@@ -589,10 +585,10 @@ namespace qsmpm
             double *const out = cache.properties(first + i, *written);
             // The committed strain from the property array: the batch
             // holds it only if the model reads it.
-            Utils::write_symmetric<dim>(
-              Utils::read_symmetric<dim>(out + written_offsets.strain) +
-                strain_increment_scratch[i],
-              out + written_offsets.strain);
+            Utils::write_symmetric<dim>(Utils::read_symmetric<dim>(
+                                          out + written_offsets.strain) +
+                                          strain_increment_scratch[i],
+                                        out + written_offsets.strain);
             Utils::write_symmetric<dim>(stress_scratch[i],
                                         out + written_offsets.stress);
             out[written_offsets.J]      = J;
@@ -627,10 +623,10 @@ namespace qsmpm
     const unsigned int          first,
     MaterialPointSet<dim>      *written) const
   {
-    const auto        &offsets = own_offsets;
+    const auto        &offsets         = own_offsets;
     const auto        &written_offsets = points.get_offsets();
-    const unsigned int n_state = state_layout.n_state;
-    const bool         fbar    = points.get_formulation().fbar();
+    const unsigned int n_state         = state_layout.n_state;
+    const bool         fbar            = points.get_formulation().fbar();
 
     for (unsigned int i = 0; i < old.size(); ++i)
       {
@@ -675,7 +671,8 @@ namespace qsmpm
               out + written_offsets.strain);
             Utils::write_symmetric<dim>(tau / J, out + written_offsets.stress);
             Utils::write_tensor<dim>(kinematics.F,
-                                     out + written_offsets.deformation_gradient);
+                                     out +
+                                       written_offsets.deformation_gradient);
             out[written_offsets.J]      = J;
             out[written_offsets.volume] = J * data[offsets.initial_volume];
           }

@@ -101,6 +101,7 @@ namespace qsmpm
     point_stencil_sizes.assign(n_local_points, stencil);
     point_properties.resize(n_local_points);
     point_positions.resize(n_local_points);
+    point_reference_locations.resize(gimp ? 0 : n_local_points);
 
     const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
     unsigned int           p   = 0;
@@ -152,6 +153,7 @@ namespace qsmpm
     std::vector<Tensor<1, dim>>().swap(shape_gradients);
     std::vector<double *>().swap(point_properties);
     std::vector<Point<dim>>().swap(point_positions);
+    std::vector<Point<dim>>().swap(point_reference_locations);
     point_set = nullptr;
   }
 
@@ -193,8 +195,7 @@ namespace qsmpm
     const bool           affine = grid.affine_map(cell, affine_jacobian);
     const Tensor<2, dim> affine_inverse_transpose =
       affine ? transpose(invert(affine_jacobian)) : Tensor<2, dim>();
-    affine_cells.push_back(
-      {cell->vertex(0), transpose(affine_inverse_transpose)});
+    affine_cells.push_back({transpose(affine_inverse_transpose)});
     cell_is_affine.push_back(affine);
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
@@ -223,7 +224,8 @@ namespace qsmpm
         // pointer stays valid until particles are added or sorted.
         point_properties[p] =
           const_cast<double *>(particle.get_properties().data());
-        point_positions[p] = particle.get_location();
+        point_positions[p]           = particle.get_location();
+        point_reference_locations[p] = xi;
         ++p;
       }
   }

@@ -5,6 +5,7 @@
 #include <Epetra_Import.h>
 #include <Epetra_Vector.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <limits>
 #include <memory>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
@@ -227,8 +228,8 @@ namespace qsmpm
     /**
      * Finite strain: F = Delta F F_old and the Kirchhoff stress at each
      * point of the batch (with F-bar, the cell's mean volume change from
-     * mean_volume_change_scratch); evaluate() keeps Omega_0 P = Omega_0 tau Delta
-     * F^{-T} in force_stress_scratch (NaN at an inverted point); commit()
+     * mean_volume_change_scratch); evaluate() keeps Omega_0 P = Omega_0 tau
+     * Delta F^{-T} in force_stress_scratch (NaN at an inverted point); commit()
      * writes the logarithmic strain, Cauchy stress, F, J and the volume.
      */
     template <bool write_back>
@@ -255,8 +256,9 @@ namespace qsmpm
     const double *
     committed(const unsigned int p) const
     {
-      return packed_record > 0 ? packed.data() + std::size_t(p) * packed_record :
-                                 cache.properties(p);
+      return packed_record > 0 ?
+               packed.data() + std::size_t(p) * packed_record :
+               cache.properties(p);
     }
 
     /// Gather the packed copy from the points, if the cache changed.
@@ -297,9 +299,10 @@ namespace qsmpm
     mutable std::vector<double> packed;
     std::vector<unsigned int>   packed_sources;
     unsigned int                packed_record = 0;
-    /// The cache's generation() of the packed copy.
-    mutable unsigned long packed_generation = 0;
-    mutable bool          packed_valid      = false;
+    /// The cache's generation() of the packed copy; none (the largest
+    /// number) before the first gathering and after commit().
+    mutable unsigned long packed_generation =
+      std::numeric_limits<unsigned long>::max();
     /// Scratch for the points of the cell being evaluated: grad du, the
     /// strain increments, the trial stresses and fields, and the
     /// volume-weighted stress measures of the forces.
@@ -309,9 +312,8 @@ namespace qsmpm
     mutable std::vector<double>                  state_scratch;
     mutable std::vector<Tensor<2, dim>>          force_stress_scratch;
     /// The monomials of AffineQ1Cell at the cell's points.
-    mutable std::vector<typename AffineQ1Cell<dim>::Monomials>
-                                monomial_scratch;
-    mutable std::vector<double> volume_scratch;
+    mutable std::vector<typename AffineQ1Cell<dim>::Monomials> monomial_scratch;
+    mutable std::vector<double>                                volume_scratch;
     /// F-bar at finite strain: the mean volume change of each point's cell.
     mutable std::vector<double> mean_volume_change_scratch;
     /// The first point of the block of cells whose points the scratch

@@ -73,11 +73,11 @@ namespace qsmpm
      * @p stride doubles from @p first (a packed copy), with positions
      * @p positions[i].
      */
-    PointStateBatch(const Layout       &layout,
-                    const double       *first,
-                    const unsigned int  stride,
-                    const Point<dim>   *positions,
-                    const unsigned int  n)
+    PointStateBatch(const Layout      &layout,
+                    const double      *first,
+                    const unsigned int stride,
+                    const Point<dim>  *positions,
+                    const unsigned int n)
       : layout(layout)
       , first(first)
       , stride(stride)

@@ -1,16 +1,16 @@
 #ifndef qsmpm_particles_affine_q1_cell_h
 #define qsmpm_particles_affine_q1_cell_h
 
+#include <array>
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <array>
-
-// Every loop below has bounds known at compile time (dim, 2^dim): unrolled
-// completely, the conditions on bits fold away.
-#define QSMPM_UNROLL _Pragma("GCC unroll 64")
+// Every loop below has bounds known at compile time (dim, 2^dim) and is
+// unrolled completely (#pragma GCC unroll), so that the conditions on bits
+// fold away: without it the residual's kernel is 1.5x slower (3.1 against
+// 2.1 ms on the 2D block of doc/benchmarks.md).
 
 namespace qsmpm
 {
@@ -37,11 +37,11 @@ namespace qsmpm
    * sums H_w = sum_p m_w(xi_p) S_p, and the nodal forces follow from the
    * H_w once per cell.
    *
-   * A point then needs its reference location (computed from its position)
-   * instead of 2^dim gradient vectors, and the work per point falls from
-   * 2 (2^dim) dim^2 to 2 (2^dim - 1) dim^2 multiply-adds: a quarter less in
-   * 2D, and the memory traffic of the gradients (64 bytes a point in 2D,
-   * 192 in 3D) is gone. On a cell that is not affine the gradients of the
+   * A point then needs its reference location (kept by the ShapeCache for
+   * the load step) instead of 2^dim gradient vectors, and the work per point
+   * falls from 2 (2^dim) dim^2 to 2 (2^dim - 1) dim^2 multiply-adds: a quarter
+   * less in 2D, and the memory traffic of the gradients (64 bytes a point in
+   * 2D, 192 in 3D) is gone. On a cell that is not affine the gradients of the
    * ShapeCache are used instead.
    */
   template <int dim>
@@ -54,47 +54,34 @@ namespace qsmpm
     static constexpr unsigned int n_sym =
       SymmetricTensor<2, dim>::n_independent_components;
     /// Row and column of the entries of a symmetric tensor in deal.II's
-    /// unrolled order (access_raw_entry()): the diagonal, then (0,1),
-    /// (0,2), (1,2).
-    static constexpr unsigned int
-    unrolled_row(const unsigned int k)
-    {
-      return k < dim ? k : (k == n_sym - 1 && dim == 3 ? 1 : 0);
-    }
-    static constexpr unsigned int
-    unrolled_column(const unsigned int k)
-    {
-      return k < dim ? k : (dim == 2 || k == 3 ? 1 : 2);
-    }
+    /// unrolled order, as a table made at compile time (called in the
+    /// loops, SymmetricTensor::unrolled_to_component_indices() was not
+    /// folded away: b15.prm 7 % slower).
+    static constexpr std::array<std::array<unsigned int, 2>, n_sym>
+      unrolled_indices = [] {
+        std::array<std::array<unsigned int, 2>, n_sym> table{};
+        for (unsigned int k = 0; k < n_sym; ++k)
+          {
+            const auto ij =
+              SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
+            table[k] = {{ij[0], ij[1]}};
+          }
+        return table;
+      }();
     /// The values m_w(xi) of the monomials at a point.
     using Monomials = std::array<double, n_terms>;
 
-    /// Vertex 0 of the cell.
-    Point<dim> origin;
     /// J^{-1}, J with the columns vertex(2^d) - vertex(0).
     Tensor<2, dim> inverse_jacobian;
-
-    /// xi = J^{-1} (x - origin).
-    Point<dim>
-    reference_location(const Point<dim> &x) const
-    {
-      Point<dim> xi;
-      QSMPM_UNROLL
-      for (unsigned int d = 0; d < dim; ++d)
-        QSMPM_UNROLL
-        for (unsigned int b = 0; b < dim; ++b)
-          xi[d] += inverse_jacobian[d][b] * (x[b] - origin[b]);
-      return xi;
-    }
 
     /// m_w(xi) for w = 0..n_terms-1.
     static void
     monomials(const Point<dim> &xi, Monomials &m)
     {
       m[0] = 1.;
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int d = 0; d < dim; ++d)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int w = 0; w < (1U << d); ++w)
           if ((w | (1U << d)) < n_terms)
             m[w | (1U << d)] = m[w] * xi[d];
@@ -108,31 +95,24 @@ namespace qsmpm
     gradient_terms(const double *u, double (&K)[n_terms][dim * dim]) const
     {
       double c[n_vertices][dim];
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int v = 0; v < n_vertices; ++v)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int a = 0; a < dim; ++a)
           c[v][a] = u[v * dim + a];
-      QSMPM_UNROLL
-      for (unsigned int d = 0; d < dim; ++d)
-        QSMPM_UNROLL
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          if ((v >> d) & 1U)
-            QSMPM_UNROLL
-            for (unsigned int a = 0; a < dim; ++a)
-              c[v][a] -= c[v ^ (1U << d)][a];
-      QSMPM_UNROLL
+      moebius<false>(c);
+#pragma GCC unroll 64
       for (unsigned int w = 0; w < n_terms; ++w)
         {
-          QSMPM_UNROLL
+#pragma GCC unroll 64
           for (unsigned int ab = 0; ab < dim * dim; ++ab)
             K[w][ab] = 0.;
-          QSMPM_UNROLL
+#pragma GCC unroll 64
           for (unsigned int d = 0; d < dim; ++d)
             if (!((w >> d) & 1U))
-              QSMPM_UNROLL
+#pragma GCC unroll 64
               for (unsigned int a = 0; a < dim; ++a)
-                QSMPM_UNROLL
+#pragma GCC unroll 64
                 for (unsigned int b = 0; b < dim; ++b)
                   K[w][a * dim + b] +=
                     c[w | (1U << d)][a] * inverse_jacobian[d][b];
@@ -143,28 +123,33 @@ namespace qsmpm
     static void
     symmetrize_terms(
       const double (&K)[n_terms][dim * dim],
-      double (&K_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components])
+      double (
+        &K_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components])
     {
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int w = 0; w < n_terms; ++w)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int k = 0; k < n_sym; ++k)
-          K_sym[w][k] = 0.5 * (K[w][unrolled_row(k) * dim + unrolled_column(k)] +
-                               K[w][unrolled_column(k) * dim + unrolled_row(k)]);
+          {
+            const auto &ab = unrolled_indices[k];
+            K_sym[w][k] =
+              0.5 * (K[w][ab[0] * dim + ab[1]] + K[w][ab[1] * dim + ab[0]]);
+          }
     }
 
     /// sym(grad u) at a point with monomials @p m, from the symmetric parts.
     static SymmetricTensor<2, dim>
     symmetric_gradient(
-      const double (&K_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components],
+      const double (
+        &K_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components],
       const Monomials &m)
     {
       SymmetricTensor<2, dim> E;
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int k = 0; k < n_sym; ++k)
         {
           double sum = K_sym[0][k];
-          QSMPM_UNROLL
+#pragma GCC unroll 64
           for (unsigned int w = 1; w < n_terms; ++w)
             sum += K_sym[w][k] * m[w];
           E.access_raw_entry(k) = sum;
@@ -178,15 +163,18 @@ namespace qsmpm
      */
     static void
     unfold_symmetric_terms(
-      const double (&H_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components],
+      const double (
+        &H_sym)[n_terms][SymmetricTensor<2, dim>::n_independent_components],
       double (&H)[n_terms][dim * dim])
     {
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int w = 0; w < n_terms; ++w)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int k = 0; k < n_sym; ++k)
-          H[w][unrolled_row(k) * dim + unrolled_column(k)] =
-            H[w][unrolled_column(k) * dim + unrolled_row(k)] = H_sym[w][k];
+          {
+            const auto &ab            = unrolled_indices[k];
+            H[w][ab[0] * dim + ab[1]] = H[w][ab[1] * dim + ab[0]] = H_sym[w][k];
+          }
     }
 
     /// grad u at a point with monomials @p m, from the K_w.
@@ -194,13 +182,13 @@ namespace qsmpm
     gradient(const double (&K)[n_terms][dim * dim], const Monomials &m)
     {
       Tensor<2, dim> G;
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int a = 0; a < dim; ++a)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int b = 0; b < dim; ++b)
           {
             double sum = K[0][a * dim + b];
-            QSMPM_UNROLL
+#pragma GCC unroll 64
             for (unsigned int w = 1; w < n_terms; ++w)
               sum += K[w][a * dim + b] * m[w];
             G[a][b] = sum;
@@ -211,14 +199,14 @@ namespace qsmpm
     /// H_w += m_w S for the stress measure @p S of a point.
     static void
     add_force_terms(const Tensor<2, dim> &S,
-                    const Monomials &m,
+                    const Monomials      &m,
                     double (&H)[n_terms][dim * dim])
     {
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int w = 0; w < n_terms; ++w)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int a = 0; a < dim; ++a)
-          QSMPM_UNROLL
+#pragma GCC unroll 64
           for (unsigned int b = 0; b < dim; ++b)
             H[w][a * dim + b] += m[w] * S[a][b];
     }
@@ -235,34 +223,52 @@ namespace qsmpm
       // g_v = sum_{d in v} H_{v - 2^d} J^{-T} e_d: the forces on the
       // coefficients c; then the transposed Moebius transform.
       double g[n_vertices][dim] = {};
-      QSMPM_UNROLL
+#pragma GCC unroll 64
       for (unsigned int v = 1; v < n_vertices; ++v)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int d = 0; d < dim; ++d)
           if ((v >> d) & 1U)
-            QSMPM_UNROLL
+#pragma GCC unroll 64
             for (unsigned int a = 0; a < dim; ++a)
-              QSMPM_UNROLL
+#pragma GCC unroll 64
               for (unsigned int b = 0; b < dim; ++b)
                 g[v][a] +=
                   H[v ^ (1U << d)][a * dim + b] * inverse_jacobian[d][b];
-      QSMPM_UNROLL
-      for (unsigned int d = 0; d < dim; ++d)
-        QSMPM_UNROLL
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          if ((v >> d) & 1U)
-            QSMPM_UNROLL
-            for (unsigned int a = 0; a < dim; ++a)
-              g[v ^ (1U << d)][a] -= g[v][a];
-      QSMPM_UNROLL
+      moebius<true>(g);
+#pragma GCC unroll 64
       for (unsigned int v = 0; v < n_vertices; ++v)
-        QSMPM_UNROLL
+#pragma GCC unroll 64
         for (unsigned int a = 0; a < dim; ++a)
           f[v * dim + a] += sign * g[v][a];
     }
+
+  private:
+    /**
+     * The Moebius transform of vertex values (finite differences over the
+     * bits of v: for each direction d, c_v -= c_{v - 2^d} for every v with
+     * bit d), nodal values to monomial coefficients; with @p transposed
+     * its transpose (c_{v - 2^d} -= c_v), coefficient forces to nodal
+     * forces. The steps of different directions commute.
+     */
+    template <bool transposed>
+    static void
+    moebius(double (&c)[n_vertices][dim])
+    {
+#pragma GCC unroll 64
+      for (unsigned int d = 0; d < dim; ++d)
+#pragma GCC unroll 64
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          if ((v >> d) & 1U)
+#pragma GCC unroll 64
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                if (transposed)
+                  c[v ^ (1U << d)][a] -= c[v][a];
+                else
+                  c[v][a] -= c[v ^ (1U << d)][a];
+              }
+    }
   };
 } // namespace qsmpm
-
-#undef QSMPM_UNROLL
 
 #endif

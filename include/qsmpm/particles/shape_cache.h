@@ -193,6 +193,16 @@ namespace qsmpm
       return point_positions[p];
     }
 
+    /**
+     * With linear shape functions, the reference location xi_p of point
+     * @p p in its cell (for AffineQ1Cell); not kept with GIMP.
+     */
+    const Point<dim> &
+    reference_location(const unsigned int p) const
+    {
+      return point_reference_locations[p];
+    }
+
     /// The point's property array (see MaterialPointSet::Offsets), to read.
     const double *
     properties(const unsigned int p) const
@@ -271,9 +281,9 @@ namespace qsmpm
                   unsigned int                                         &p,
                   Particles::ParticleHandler<dim> &particle_handler);
 
-    unsigned long                        generation_count = 0;
+    unsigned long                        generation_count  = 0;
     unsigned int                         affine_cell_count = 0;
-    unsigned int                         stencil          = n_vertices;
+    unsigned int                         stencil           = n_vertices;
     std::vector<CellRange>               cells;
     std::vector<AffineQ1Cell<dim>>       affine_cells;
     std::vector<unsigned char>           cell_is_affine;
@@ -288,6 +298,7 @@ namespace qsmpm
     /// The point set of the last reinit(), whose properties these are.
     const MaterialPointSet<dim> *point_set = nullptr;
     std::vector<Point<dim>>      point_positions;
+    std::vector<Point<dim>>      point_reference_locations;
     /// Scratch of add_gimp_cell().
     std::vector<types::global_dof_index> block_dofs;
     /// Scratch of add_linear_cell(): the values and reference gradients of
