@@ -6,6 +6,7 @@
 #include <map>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/core/step_operator.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/io/checkpoint.h>
 #include <qsmpm/loading/constraint_checks.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
@@ -25,6 +26,7 @@ namespace qsmpm
     ParsedBoundaryConditions<dim>::Parameters::declare_parameters(prm);
     LoadStepper::Parameters::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
+    EquilibriumAudit<dim>::Parameters::declare_parameters(prm);
     OutputWriter<dim>::Parameters::declare_parameters(prm);
   }
 
@@ -38,6 +40,7 @@ namespace qsmpm
     material_points.parse_parameters(prm);
     load_stepping.parse_parameters(prm);
     nonlinear_solver.parse_parameters(prm);
+    equilibrium_check.parse_parameters(prm);
     output.parse_parameters(prm);
   }
 
@@ -58,7 +61,6 @@ namespace qsmpm
     , background_grid(communicator)
     , displacement_constraints(bcs)
     , external_force(bcs)
-    , reaction_forces(displacement_constraints)
   {
     // Until the degrees of freedom are known (setup_step_data()), every
     // block of 128 KiB or more comes from mmap: the grid and the points are
@@ -339,7 +341,9 @@ namespace qsmpm
       }
 
     // Nodes with no point in their support have no equation: fix their
-    // increment to zero. It does not influence any point.
+    // increment to zero. It does not influence any point. Any load on them
+    // is lost; the equilibrium audit of the step says so.
+    held_dofs = inactive;
     for (const auto dof : inactive)
       if (!constraints.is_constrained(dof))
         constraints.add_line(dof);
@@ -352,9 +356,13 @@ namespace qsmpm
     // Newton diverges. Holding it, like a node without points, leaves the
     // equilibrium of the other nodes unchanged.
     if (prm_values.material_points.min_nodal_stiffness_fraction > 0.)
-      for (const auto dof : dofs_without_stiffness())
-        if (!constraints.is_constrained(dof))
-          constraints.add_line(dof);
+      {
+        const IndexSet without_stiffness = dofs_without_stiffness();
+        held_dofs.add_indices(without_stiffness);
+        for (const auto dof : without_stiffness)
+          if (!constraints.is_constrained(dof))
+            constraints.add_line(dof);
+      }
     constraints.close();
   }
 
@@ -519,11 +527,9 @@ namespace qsmpm
     last_load_increment = 0.;
     if (!report.converged)
       return false;
+    audit_equilibrium(t_new);
     if (extrapolate)
-      {
-        last_increment      = du;
-        last_load_increment = t_new - t_old;
-      }
+      last_load_increment = t_new - t_old;
     commit_step();
     return true;
   }
@@ -648,6 +654,7 @@ namespace qsmpm
     t_new = t_old + delta_lambda;
     if (!report.converged)
       return false;
+    audit_equilibrium(t_new);
     commit_step();
     return true;
   }
@@ -659,16 +666,17 @@ namespace qsmpm
   QuasiStaticProblem<dim>::commit_step()
   {
     TimerOutput::Scope scope(timer_output, "commit and move points");
+    points_consistent = false;
     // The points read du at the nodes of their cells, some of them owned by
     // other ranks: one exchange of ghost values serves both the new point
     // state and the motion of the points.
     VectorType du_ghosted(background_grid.locally_owned_dofs(),
                           background_grid.locally_relevant_dofs(),
                           communicator);
-    du_ghosted = du;
+    du_ghosted     = du;
+    last_increment = du;
     residual->commit(du_ghosted, points());
     const double moved = points().advect(cache, du_ghosted);
-    last_reactions     = reaction_forces.evaluate(R, communicator);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the
@@ -676,7 +684,10 @@ namespace qsmpm
     // strip benchmark (256 x 256 cells, reuse 5, 5 steps): commit and move
     // points 0.29 -> 0.08 s, shape functions 0.22 -> 0.16 s.
     if (points().locate_in_cells())
-      return;
+      {
+        points_consistent = true;
+        return;
+      }
     // Sorting moves the points' data in memory. Releasing the cache first
     // keeps it from adding to the copy of all particle data that deal.II
     // makes while sorting, the peak of a step that reuses an earlier
@@ -703,6 +714,92 @@ namespace qsmpm
                 ExcMessage(std::to_string(lost) +
                            " material points left the background grid. "
                            "Enlarge the grid around the body."));
+    points_consistent = true;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::audit_equilibrium(const double t_new)
+  {
+    last_audit     = audit.evaluate(background_grid,
+                                displacement_constraints,
+                                held_dofs,
+                                R,
+                                f_ext,
+                                load_scale);
+    last_reactions = last_audit.reactions;
+    load_scale     = last_audit.scale;
+    // Where load leaves through the grid's edge: the GIMP points whose
+    // domains reach beyond it; the rank of the one with the most weight
+    // there tells where it is.
+    last_audit.n_points_beyond_grid =
+      dealii::Utilities::MPI::sum(cache.n_points_beyond_grid(), communicator);
+    if (last_audit.n_points_beyond_grid > 0)
+      {
+        const double largest = dealii::Utilities::MPI::max(
+          cache.largest_weight_beyond_grid(), communicator);
+        const unsigned int n_ranks =
+          dealii::Utilities::MPI::n_mpi_processes(communicator);
+        const unsigned int rank = dealii::Utilities::MPI::min(
+          cache.largest_weight_beyond_grid() == largest ?
+            dealii::Utilities::MPI::this_mpi_process(communicator) :
+            n_ranks,
+          communicator);
+        last_audit.point_beyond_grid = dealii::Utilities::MPI::broadcast(
+          communicator, cache.point_beyond_grid(), rank);
+      }
+
+    const auto  &check     = prm_values.equilibrium_check;
+    const double imbalance = last_audit.imbalance();
+    if (!(imbalance > check.tolerance))
+      return;
+    std::ostringstream message;
+    message << "the converged step to t = " << t_new << " lost "
+            << std::setprecision(3) << 100. * imbalance
+            << " % of the load (the applied load is not carried by the "
+               "displacement conditions; Equilibrium check/Lost load "
+               "tolerance = "
+            << check.tolerance << "): " << last_audit.causes(check.tolerance)
+            << '.';
+    AssertThrow(!check.stop_on_lost_load,
+                ExcMessage(
+                  message.str() +
+                  " The run stops (Equilibrium check/Stop on lost load)."));
+    if (!lost_load_warned)
+      progress << "  warning: " << message.str()
+               << " Further steps that lose load are not reported; see "
+                  "the column imbalance of reactions.csv."
+               << std::endl;
+    lost_load_warned = true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  QuasiStaticProblem<dim>::write_last_converged_state(OutputWriter<dim> &writer)
+  {
+    std::ostringstream sentence;
+    sentence << " The last converged state is that of step " << last_step
+             << " (t = " << last_load_factor << ")";
+    if (prm_values.output.interval == 0)
+      return sentence.str() + "; Output/Interval = 0 writes no fields.";
+    if (!points_consistent)
+      return sentence.str() + "; the points no longer hold it.";
+    if (int(last_step) != last_written_step)
+      {
+        writer.write_points(points(), last_step, last_load_factor);
+        if (last_step > 0 && last_increment.size() == du.size())
+          writer.write_increment(background_grid,
+                                 last_increment,
+                                 last_step,
+                                 last_load_factor);
+        last_written_step = last_step;
+      }
+    return sentence.str() + ", written to <" + prm_values.output.directory +
+           ">.";
   }
 
 
@@ -713,12 +810,17 @@ namespace qsmpm
   {
     LoadStepper       stepper(prm_values.load_stepping);
     OutputWriter<dim> writer(prm_values.output, communicator);
+    ProbeWriter<dim>  probes(prm_values.output.probe_positions(),
+                            prm_values.output.directory,
+                            communicator);
     const bool        from_checkpoint = resumed;
     if (from_checkpoint)
       restore_run_state(stepper, writer);
     std::vector<std::string> names;
     for (const auto &condition : bcs.dirichlet_conditions())
       names.push_back(condition.name);
+    names.push_back("applied");
+    names.push_back("held");
 
     progress << "qsmpm: " << dim << "D, "
              << background_grid.get_triangulation().n_global_active_cells()
@@ -739,92 +841,131 @@ namespace qsmpm
       {
         TimerOutput::Scope scope(timer_output, "output");
         writer.write_points(points(), 0, 0.);
+        last_written_step = 0;
       }
+    last_step        = stepper.step();
+    last_load_factor = stepper.current();
+    if (!probes.empty())
+      probes.select(points());
 
-    while (!stepper.finished())
+    // A step that stops the run (a step that does not converge after all
+    // its cut-backs, a step that loses load, a point that leaves the grid)
+    // leaves the points as the last accepted step made them: their fields
+    // are written, and the message says which step that was.
+    try
       {
-        Timer        wall_timer;
-        NewtonReport newton;
-        const double t_old = stepper.current();
-        double       t_new = stepper.target(), force_new = 0.;
-        const bool   converged =
-          stepper.path_following() ?
-              advance_path_following(stepper, newton, t_new, force_new) :
-              advance(t_old, t_new, newton);
-        // A preconditioner kept from an earlier step may no longer fit
-        // (the paper's one point per cell leaves K nearly singular in its
-        // hourglass modes, and those of an older K need not be the
-        // Jacobian's): the step is tried again with a new one before its
-        // increment is cut. count_preconditioner_use() has marked it for
-        // rebuilding.
-        if (!converged && preconditioner_reused)
-          {
-            progress << "  step " << stepper.step() + 1
-                     << " failed with the preconditioner of an earlier step ("
-                     << newton.failure << "), trying again with a new one"
-                     << std::endl;
-            continue;
-          }
-        if (!converged)
-          {
-            progress << "  step " << stepper.step() + 1 << ": t = " << t_old;
-            if (stepper.path_following())
-              progress << ", " << stepper.control() << " "
-                       << stepper.constraint_target();
-            else
-              progress << " -> " << t_new;
-            progress << " failed (" << newton.failure << "), cutting back"
-                     << std::endl;
-            stepper.reject(newton.failure);
-            continue;
-          }
-        const unsigned int cut_backs = stepper.n_cut_backs();
-        if (stepper.path_following())
-          stepper.accept(t_new, force_new);
-        else
-          stepper.accept();
-        wall_timer.stop();
-        reports.push_back(
-          {stepper.step(), t_new, cut_backs, newton, wall_timer.wall_time()});
-
-        std::ostringstream line;
-        line << "step " << std::setw(5) << stepper.step()
-             << "  t = " << std::setw(10) << std::setprecision(5) << t_new
-             << "  newton " << std::setw(2) << newton.newton_iterations
-             << "  gmres " << std::setw(4) << newton.linear_iterations
-             << "  |R| " << std::scientific << std::setprecision(2)
-             << newton.initial_residual << " -> " << newton.final_residual
-             << std::defaultfloat << "  " << std::fixed << std::setprecision(3)
-             << wall_timer.wall_time() << " s";
-        if (cut_backs > 0)
-          line << "  cut-backs " << cut_backs;
-        if (newton.line_search_steps > 0)
-          line << "  line search " << newton.line_search_steps;
-        progress << line.str() << std::endl;
-        const bool stop = step_callback && !step_callback(reports.back());
-
-        TimerOutput::Scope scope(timer_output, "output");
-        if (!names.empty())
-          writer.write_reactions(stepper.step(), t_new, names, last_reactions);
-        if (writer.fields_due(stepper.step()) ||
-            ((stepper.finished() || stop) && prm_values.output.interval > 0))
-          {
-            writer.write_points(points(), stepper.step(), t_new);
-            writer.write_increment(background_grid, du, stepper.step(), t_new);
-          }
-        if (stop)
-          break;
-        const unsigned int checkpoints = prm_values.output.checkpoint_interval;
-        if (checkpoints > 0 && stepper.step() % checkpoints == 0 &&
-            !stepper.finished())
-          {
-            TimerOutput::Scope scope(timer_output, "checkpoint");
-            write_checkpoint(stepper, writer);
-          }
+        while (!stepper.finished())
+          if (!take_step(stepper, writer, probes, names))
+            break;
+      }
+    catch (const std::exception &exc)
+      {
+        const std::string written = write_last_converged_state(writer);
+        AssertThrow(false, ExcMessage(Utils::error_message(exc) + written));
       }
     if (progress.is_active())
       timer_output.print_summary();
   }
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::take_step(LoadStepper                    &stepper,
+                                     OutputWriter<dim>              &writer,
+                                     ProbeWriter<dim>               &probes,
+                                     const std::vector<std::string> &names)
+  {
+    Timer        wall_timer;
+    NewtonReport newton;
+    const double t_old = stepper.current();
+    double       t_new = stepper.target(), force_new = 0.;
+    const bool   converged =
+      stepper.path_following() ?
+          advance_path_following(stepper, newton, t_new, force_new) :
+          advance(t_old, t_new, newton);
+    // A preconditioner kept from an earlier step may no longer fit (the
+    // paper's one point per cell leaves K nearly singular in its hourglass
+    // modes, and those of an older K need not be the Jacobian's): the step
+    // is tried again with a new one before its increment is cut.
+    // count_preconditioner_use() has marked it for rebuilding.
+    if (!converged && preconditioner_reused)
+      {
+        progress << "  step " << stepper.step() + 1
+                 << ": a new preconditioner (the one of an earlier step no "
+                    "longer serves)"
+                 << std::endl;
+        return true;
+      }
+    if (!converged)
+      {
+        progress << "  step " << stepper.step() + 1 << ": t = " << t_old;
+        if (stepper.path_following())
+          progress << ", " << stepper.control() << " "
+                   << stepper.constraint_target();
+        else
+          progress << " -> " << t_new;
+        progress << " failed (" << newton.failure << "), cutting back"
+                 << std::endl;
+        stepper.reject(newton.failure);
+        return true;
+      }
+    const unsigned int cut_backs = stepper.n_cut_backs();
+    if (stepper.path_following())
+      stepper.accept(t_new, force_new);
+    else
+      stepper.accept();
+    last_step        = stepper.step();
+    last_load_factor = t_new;
+    wall_timer.stop();
+    reports.push_back(
+      {stepper.step(), t_new, cut_backs, newton, wall_timer.wall_time()});
+
+    std::ostringstream line;
+    line << "step " << std::setw(5) << stepper.step() << "  t = "
+         << std::setw(10) << std::setprecision(5) << t_new << "  newton "
+         << std::setw(2) << newton.newton_iterations << "  gmres "
+         << std::setw(4) << newton.linear_iterations << "  |R| "
+         << std::scientific << std::setprecision(2) << newton.initial_residual
+         << " -> " << newton.final_residual << "  lost "
+         << std::setprecision(1) << last_audit.imbalance() << std::defaultfloat
+         << "  " << std::fixed << std::setprecision(3)
+         << wall_timer.wall_time() << " s";
+    if (cut_backs > 0)
+      line << "  cut-backs " << cut_backs;
+    if (newton.line_search_steps > 0)
+      line << "  line search " << newton.line_search_steps;
+    progress << line.str() << std::endl;
+    const bool stop = step_callback && !step_callback(reports.back());
+
+    {
+      TimerOutput::Scope scope(timer_output, "output");
+      std::vector<Tensor<1, dim>> forces = last_reactions;
+      forces.push_back(last_audit.applied);
+      forces.push_back(last_audit.held);
+      writer.write_reactions(
+        stepper.step(), t_new, names, forces, last_audit.imbalance());
+      if (!probes.empty())
+        probes.write(points(), stepper.step(), t_new);
+      if (writer.fields_due(stepper.step()) ||
+          ((stepper.finished() || stop) && prm_values.output.interval > 0))
+        {
+          writer.write_points(points(), stepper.step(), t_new);
+          writer.write_increment(background_grid, du, stepper.step(), t_new);
+          last_written_step = stepper.step();
+        }
+    }
+    if (stop)
+      return false;
+    const unsigned int checkpoints = prm_values.output.checkpoint_interval;
+    if (checkpoints > 0 && stepper.step() % checkpoints == 0 &&
+        !stepper.finished())
+      {
+        TimerOutput::Scope scope(timer_output, "checkpoint");
+        write_checkpoint(stepper, writer);
+      }
+    return true;
+  }
+
 
 
 
@@ -850,6 +991,7 @@ namespace qsmpm
         for (const auto &reaction : last_reactions)
           for (unsigned int d = 0; d < dim; ++d)
             state << ' ' << reaction[d];
+        state << "\nload_scale " << load_scale;
         state << "\nreports " << reports.size() << '\n';
         for (const auto &r : reports)
           state << r.step << ' ' << r.load_factor << ' ' << r.cut_backs << ' '
@@ -920,6 +1062,8 @@ namespace qsmpm
     for (auto &reaction : last_reactions)
       for (unsigned int d = 0; d < dim; ++d)
         in >> reaction[d];
+    expect("load_scale");
+    in >> load_scale;
     expect("reports");
     in >> n;
     reports.assign(n, StepReport());
@@ -940,7 +1084,10 @@ namespace qsmpm
                            "incomplete."));
     if (restore_user_state)
       restore_user_state(user);
-    resumed = false;
+    last_step         = stepper.step();
+    last_load_factor  = stepper.current();
+    last_written_step = -1;
+    resumed           = false;
   }
 
 
@@ -999,6 +1146,15 @@ namespace qsmpm
   QuasiStaticProblem<dim>::increment() const
   {
     return du;
+  }
+
+
+
+  template <int dim>
+  const typename EquilibriumAudit<dim>::Result &
+  QuasiStaticProblem<dim>::equilibrium() const
+  {
+    return last_audit;
   }
 
 

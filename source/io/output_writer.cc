@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <limits>
 #include <qsmpm/io/checkpoint.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/io/output_writer.h>
 
 namespace qsmpm
@@ -43,8 +44,30 @@ namespace qsmpm
         "of MPI ranks); the rows of reactions.csv after the checkpoint are "
         "then replaced. 0: no checkpoints.",
         Patterns::Integer(0));
+      prm.add_parameter(
+        "Probe points",
+        probe_points,
+        "Positions in the initial configuration, separated by semicolons "
+        "(\"10,0.5; 5,1\"): after every step, probes.csv gets the "
+        "current position, the displacement and the stress (stress_xx, "
+        "...) of the material point nearest to each. Empty: no probes.",
+        Patterns::Anything());
     }
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  OutputWriter<dim>::Parameters::probe_positions() const
+  {
+    std::vector<Point<dim>> positions;
+    for (const auto &text :
+         dealii::Utilities::split_string_list(probe_points, ';'))
+      if (!text.empty())
+        positions.push_back(Utils::parse_point<dim>(text, "Output/Probe points"));
+    return positions;
   }
 
 
@@ -203,7 +226,8 @@ namespace qsmpm
     const unsigned int                 step,
     const double                       load_factor,
     const std::vector<std::string>    &names,
-    const std::vector<Tensor<1, dim>> &reactions)
+    const std::vector<Tensor<1, dim>> &forces,
+    const double                       imbalance)
   {
     if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
@@ -219,13 +243,13 @@ namespace qsmpm
         for (const auto &name : names)
           for (unsigned int d = 0; d < dim; ++d)
             *reactions_file << ',' << name << "_F" << components[d];
-        *reactions_file << '\n';
+        *reactions_file << ",imbalance\n";
       }
     *reactions_file << step << ',' << std::setprecision(12) << load_factor;
-    for (const auto &reaction : reactions)
+    for (const auto &force : forces)
       for (unsigned int d = 0; d < dim; ++d)
-        *reactions_file << ',' << reaction[d];
-    *reactions_file << std::endl;
+        *reactions_file << ',' << force[d];
+    *reactions_file << ',' << imbalance << std::endl;
   }
 
 

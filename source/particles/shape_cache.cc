@@ -87,7 +87,9 @@ namespace qsmpm
       particle_handler.n_locally_owned_particles();
 
     ++generation_count;
-    point_set = &points;
+    points_beyond_grid    = 0;
+    largest_weight_beyond = 0.;
+    point_set             = &points;
     stencil   = gimp ? max_stencil_size : n_vertices;
     cells.clear();
     affine_cells.clear();
@@ -309,6 +311,7 @@ namespace qsmpm
         // the front of the point's stencil: a point whose domain lies inside
         // its cell costs as much as with linear shape functions.
         unsigned int n_kept = 0;
+        double       beyond = 0.;
         for (unsigned int k = 0; k < stencil; ++k)
           {
             unsigned int   rest = k, node = 0, stride = 1;
@@ -327,16 +330,28 @@ namespace qsmpm
             // Entries at round-off level (a domain edge on a cell face) and
             // nodes outside the grid (the point's domain reaches beyond it)
             // are dropped too.
-            if ((std::abs(value) <= 1e-12 &&
-                 gradient.norm() * h_min <= 1e-12) ||
-                block_dofs[node * dim] == numbers::invalid_dof_index)
+            if (std::abs(value) <= 1e-12 && gradient.norm() * h_min <= 1e-12)
               continue;
+            if (block_dofs[node * dim] == numbers::invalid_dof_index)
+              {
+                beyond += std::abs(value) + gradient.norm() * h_min;
+                continue;
+              }
             touched[node] = true;
             // Block node for now; replaced by the group's index below.
             stencil_nodes[p * stencil + n_kept]   = node;
             shape_values[p * stencil + n_kept]    = value;
             shape_gradients[p * stencil + n_kept] = gradient;
             ++n_kept;
+          }
+        if (beyond > 0.)
+          {
+            ++points_beyond_grid;
+            if (beyond > largest_weight_beyond)
+              {
+                largest_weight_beyond   = beyond;
+                worst_point_beyond_grid = x;
+              }
           }
         point_stencil_sizes[p] = n_kept;
         point_properties[p]    = data;

@@ -14,8 +14,11 @@ namespace qsmpm
                         Patterns::Double(0., 1.));
       prm.add_parameter("Residual floor",
                         residual_floor,
-                        "The absolute floor of the stopping test; the "
-                        "paper uses 1 (in the units of the forces).",
+                        "An absolute floor of the stopping test, in the "
+                        "units of the forces: the paper uses 1. 0 (the "
+                        "default) makes the test relative, to ||R(du_0)|| "
+                        "and to 1e-6 of the forces in the body, so that it "
+                        "does not depend on the units.",
                         Patterns::Double(0.));
       prm.add_parameter("Maximum Newton iterations",
                         max_iterations,

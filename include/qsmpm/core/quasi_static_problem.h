@@ -13,12 +13,13 @@
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
+#include <qsmpm/io/probe_writer.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/loading/displacement_constraints.h>
+#include <qsmpm/loading/equilibrium_audit.h>
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
 #include <qsmpm/loading/opening_gauge.h>
-#include <qsmpm/loading/reaction_forces.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -61,6 +62,7 @@ namespace qsmpm
       typename MaterialPointSet<dim>::Parameters material_points;
       LoadStepper::Parameters                    load_stepping;
       NewtonParameters                           nonlinear_solver;
+      typename EquilibriumAudit<dim>::Parameters equilibrium_check;
       typename OutputWriter<dim>::Parameters     output;
 
       /// Declare every subsection, including "Material" and "Boundary
@@ -191,6 +193,13 @@ namespace qsmpm
     const std::vector<Tensor<1, dim>> &
     reactions() const;
 
+    /**
+     * The force balance of the last accepted step: applied load, reactions,
+     * the force of the held nodes and the lost load (see EquilibriumAudit).
+     */
+    const typename EquilibriumAudit<dim>::Result &
+    equilibrium() const;
+
     /// The last converged grid displacement increment.
     const VectorType &
     increment() const;
@@ -253,9 +262,36 @@ namespace qsmpm
                         NewtonReport            &report,
                         const bool               last_evaluation_at_du);
 
-    /// Commit du: point state, positions, reactions.
+    /**
+     * The force balance of the converged step to @p t_new (before it is
+     * committed): recorded for reactions.csv, and a step that lost more
+     * load than Equilibrium check/Lost load tolerance stops the run (or
+     * warns once).
+     */
+    void
+    audit_equilibrium(const double t_new);
+
+    /// Commit du: point state, positions.
     void
     commit_step();
+
+    /**
+     * One attempt at the next load step of run(), with its progress line
+     * and output; false if the step callback asked to stop.
+     */
+    bool
+    take_step(LoadStepper                    &stepper,
+              OutputWriter<dim>              &writer,
+              ProbeWriter<dim>               &probes,
+              const std::vector<std::string> &names);
+
+    /**
+     * After an error in run(): write the fields of the last accepted step
+     * if they have not been written and the points still hold it, and
+     * return a sentence that names that step and where it is.
+     */
+    std::string
+    write_last_converged_state(OutputWriter<dim> &writer);
 
     /// Whether path following has checked that the prescribed
     /// displacements are proportional to the load factor.
@@ -273,7 +309,22 @@ namespace qsmpm
     BoundaryDescriptor<dim>                   bcs;
     DisplacementConstraints<dim>              displacement_constraints;
     ExternalForceAssembler<dim>               external_force;
-    ReactionForces<dim>                       reaction_forces;
+    EquilibriumAudit<dim>                     audit;
+    typename EquilibriumAudit<dim>::Result    last_audit;
+    /// The largest scale of the loads of the steps so far (see
+    /// EquilibriumAudit::evaluate()).
+    double load_scale = 0.;
+    bool   lost_load_warned = false;
+    /// The degrees of freedom of the step held for lack of material or
+    /// stiffness.
+    IndexSet held_dofs;
+    /// Whether the points hold the state of the last accepted step (false
+    /// while commit_step() works), its step and load factor, and the last
+    /// step whose fields were written.
+    bool         points_consistent  = true;
+    unsigned int last_step          = 0;
+    double       last_load_factor   = 0.;
+    int          last_written_step  = -1;
     ShapeCache<dim>                           cache;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;

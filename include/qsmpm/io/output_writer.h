@@ -17,7 +17,8 @@ namespace qsmpm
    * Everything a run writes to disk: the material points (all their named
    * properties) as PVTU files with a PVD time series, the grid displacement
    * increment of each step, and a CSV file with the reaction force on every
-   * displacement condition per step. Only rank 0 writes the PVD and CSV
+   * displacement condition, the applied load and the force of the held
+   * nodes per step (see EquilibriumAudit). Only rank 0 writes the PVD and CSV
    * files.
    */
   template <int dim>
@@ -34,6 +35,13 @@ namespace qsmpm
       bool         write_increment = true;
       /// Write a checkpoint every this many accepted steps; 0: never.
       unsigned int checkpoint_interval = 0;
+      /// Probe positions in the initial configuration, "x,y; x,y" (see
+      /// ProbeWriter); empty: no probes.csv.
+      std::string probe_points;
+
+      /// The positions of probe_points.
+      std::vector<Point<dim>>
+      probe_positions() const;
 
       /// Declare the entries, bound to the members.
       void
@@ -59,12 +67,17 @@ namespace qsmpm
                     const unsigned int                   step,
                     const double                         load_factor);
 
-    /// One line of reactions.csv (the header is written with the first).
+    /**
+     * One line of reactions.csv (the header is written with the first):
+     * the force vector of each name (columns <name>_Fx, ...) and the
+     * step's lost load, a fraction (column imbalance).
+     */
     void
     write_reactions(const unsigned int                 step,
                     const double                       load_factor,
                     const std::vector<std::string>    &names,
-                    const std::vector<Tensor<1, dim>> &reactions);
+                    const std::vector<Tensor<1, dim>> &forces,
+                    const double                       imbalance);
 
     const Parameters &
     get_parameters() const;

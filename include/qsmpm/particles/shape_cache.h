@@ -255,6 +255,31 @@ namespace qsmpm
                         const double               min_nodal_volume = 0.) const;
 
     /**
+     * The points of this rank whose GIMP domain reached beyond the grid in
+     * the last reinit(): part of their weights belonged to nodes outside
+     * the grid, which do not exist, so their weights are no partition of
+     * unity and part of their load and stiffness is lost.
+     */
+    unsigned int
+    n_points_beyond_grid() const
+    {
+      return points_beyond_grid;
+    }
+
+    /// The largest weight that one of those points had on nodes outside
+    /// the grid (0 if there is none), and where that point is.
+    double
+    largest_weight_beyond_grid() const
+    {
+      return largest_weight_beyond;
+    }
+    const Point<dim> &
+    point_beyond_grid() const
+    {
+      return worst_point_beyond_grid;
+    }
+
+    /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
      * @p p of group @p c: sum_k v_k N_k(x_p).
      */
@@ -281,6 +306,9 @@ namespace qsmpm
                   unsigned int                                         &p,
                   Particles::ParticleHandler<dim> &particle_handler);
 
+    unsigned int                         points_beyond_grid    = 0;
+    double                               largest_weight_beyond = 0.;
+    Point<dim>                           worst_point_beyond_grid;
     unsigned long                        generation_count  = 0;
     unsigned int                         affine_cell_count = 0;
     unsigned int                         stencil           = n_vertices;

@@ -1,6 +1,7 @@
 #ifndef qsmpm_solvers_newton_krylov_h
 #define qsmpm_solvers_newton_krylov_h
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/solver_control.h>
@@ -65,6 +66,26 @@ namespace qsmpm
       scratch = R;
       op.set_constrained_to_zero(scratch);
       return scratch.l2_norm();
+    }
+
+    /**
+     * The target of Newton's stopping test for a step whose first guess
+     * du_0 has the residual norm @p reference on the free degrees of
+     * freedom and @p force_level on all of them (the rows of the supports
+     * hold their reactions, so this is the size of the forces in the
+     * body): gamma max(floor, ||R(du_0)||, 1e-6 force_level). The last
+     * term keeps a step whose load hardly changes from asking for a
+     * residual below round-off; like the first two it is measured in the
+     * units of the forces, so the test gives the same iterates whatever
+     * the units (with the floor 0, the default).
+     */
+    inline double
+    stopping_target(const NewtonParameters &parameters,
+                    const double            reference,
+                    const double            force_level)
+    {
+      return parameters.tolerance *
+             std::max({parameters.residual_floor, reference, 1e-6 * force_level});
     }
   } // namespace internal
 
@@ -153,7 +174,7 @@ namespace qsmpm
       trial.reinit(du);
 
       using InitialGuess = NewtonParameters::InitialGuess;
-      double reference   = 0.;
+      double reference = 0., force_level = 0.;
       if (parameters.initial_guess == InitialGuess::extrapolation)
         {
           // The stopping test stays relative to the residual of the paper's
@@ -164,16 +185,20 @@ namespace qsmpm
           s = du;
           s -= trial;
           op.residual(s, R);
-          reference = internal::free_norm(op, R, rhs);
+          reference   = internal::free_norm(op, R, rhs);
+          force_level = R.l2_norm();
         }
       op.residual(du, R);
       double norm = internal::free_norm(op, R, rhs);
       if (parameters.initial_guess != InitialGuess::extrapolation)
-        reference = norm;
+        {
+          reference   = norm;
+          force_level = R.l2_norm();
+        }
       report.initial_residual = reference;
       report.residual_history.push_back(norm);
       const double target =
-        parameters.tolerance * std::max(parameters.residual_floor, reference);
+        internal::stopping_target(parameters, reference, force_level);
 
       double forcing = parameters.linear_tolerance, previous_norm = reference;
       if (parameters.initial_guess == InitialGuess::linear_predictor &&

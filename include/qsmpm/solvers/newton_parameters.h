@@ -16,10 +16,12 @@ namespace qsmpm
    */
   struct NewtonParameters : ParameterStruct<NewtonParameters>
   {
-    /// gamma of the stopping test ||R_n|| <= gamma max(floor, ||R_0||).
+    /// gamma of the stopping test ||R_n|| <= gamma max(floor, ||R_0||)
+    /// (see internal::stopping_target()).
     double tolerance = 1e-6;
-    /// The absolute floor of that test (the paper's 1).
-    double       residual_floor = 1.;
+    /// An absolute floor of that test, in the units of the forces (the
+    /// paper's 1); 0, the default, makes the test independent of the units.
+    double       residual_floor = 0.;
     unsigned int max_iterations = 20;
     /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
     double       linear_tolerance      = 1e-3;

@@ -293,10 +293,11 @@ namespace qsmpm
               trial = g;
               trial *= delta_lambda;
               op.residual(trial, rhs);
-              const double reference  = internal::free_norm(op, rhs, rhs);
-              report.initial_residual = reference;
-              target                  = parameters.tolerance *
-                       std::max(parameters.residual_floor, reference);
+              const double force_level = rhs.l2_norm();
+              const double reference   = internal::free_norm(op, rhs, rhs);
+              report.initial_residual  = reference;
+              target =
+                internal::stopping_target(parameters, reference, force_level);
             }
           if (log != nullptr)
             *log << "    newton " << std::setw(2) << report.newton_iterations
