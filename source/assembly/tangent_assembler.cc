@@ -159,8 +159,10 @@ namespace qsmpm
 
   template <int dim>
   void
-  TangentAssembler<dim>::make_step_pattern(const BackgroundGrid<dim> &grid,
-                                           const ShapeCache<dim>     &cache)
+  TangentAssembler<dim>::make_step_pattern(
+    const BackgroundGrid<dim> &grid,
+    const ShapeCache<dim>     &cache,
+    const GhostPenalty<dim>   *ghost_penalty)
   {
     // GIMP: the couplings of the nodes that the points of each cell reach
     // in this step. A pattern with every node of the 3^dim cells around
@@ -179,6 +181,8 @@ namespace qsmpm
                                                 pattern,
                                                 /*keep_constrained=*/true);
       }
+    if (ghost_penalty != nullptr)
+      ghost_penalty->add_couplings(periodicity, pattern);
     // Every row has its diagonal (nodes without points get one below).
     for (const auto dof : grid.locally_owned_dofs())
       pattern.add(dof, dof);
@@ -194,12 +198,13 @@ namespace qsmpm
   TangentAssembler<dim>::assemble(const BackgroundGrid<dim>       &grid,
                                   const MaterialPointSet<dim>     &points,
                                   const ShapeCache<dim>           &cache,
-                                  const AffineConstraints<double> &constraints)
+                                  const AffineConstraints<double> &constraints,
+                                  const GhostPenalty<dim> *ghost_penalty)
   {
     CellTangents<dim> cell_tangents(points);
 
-    if (pattern_per_step)
-      make_step_pattern(grid, cache);
+    if (pattern_per_step || ghost_penalty != nullptr)
+      make_step_pattern(grid, cache, ghost_penalty);
     K = 0;
     FullMatrix<double>                   K_cell;
     std::vector<types::global_dof_index> dofs;
@@ -233,6 +238,8 @@ namespace qsmpm
         dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + n_dofs);
         constraints.distribute_local_to_global(K_cell, dofs, K);
       }
+    if (ghost_penalty != nullptr)
+      ghost_penalty->add_to(constraints, K);
     K.compress(VectorOperation::add);
 
     // Constrained dofs outside every cell with points (nodes without points)

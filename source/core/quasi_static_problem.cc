@@ -255,14 +255,10 @@ namespace qsmpm
 
 
   template <int dim>
-  IndexSet
-  QuasiStaticProblem<dim>::dofs_without_stiffness() const
+  double
+  QuasiStaticProblem<dim>::mean_stiffness(VectorType &diagonal) const
   {
-    // The stiffness of each dof against its own motion, compared with the
-    // mean over the dofs that have any: relative, so that the threshold
-    // does not depend on the units or the material.
-    TrilinosWrappers::MPI::Vector diagonal(background_grid.locally_owned_dofs(),
-                                           communicator);
+    diagonal.reinit(background_grid.locally_owned_dofs(), communicator);
     TangentAssembler<dim>::assemble_diagonal(points(), cache, diagonal);
     double sum = 0., count = 0.;
     for (const auto dof : background_grid.locally_owned_dofs())
@@ -273,10 +269,27 @@ namespace qsmpm
         }
     sum   = dealii::Utilities::MPI::sum(sum, communicator);
     count = dealii::Utilities::MPI::sum(count, communicator);
+    return count > 0. ? sum / count : 0.;
+  }
+
+
+
+  template <int dim>
+  IndexSet
+  QuasiStaticProblem<dim>::dofs_without_stiffness() const
+  {
+    // The stiffness of each dof against its own motion, compared with the
+    // mean over the dofs that have any: relative, so that the threshold
+    // does not depend on the units or the material.
+    VectorType   diagonal;
     const double threshold =
       prm_values.material_points.min_nodal_stiffness_fraction *
-      (count > 0. ? sum / count : 0.);
-
+      mean_stiffness(diagonal);
+    // The ghost penalty gives the nodes of cut cells stiffness: such a node
+    // need not be held (held, it would carry the penalty's forces as a
+    // support).
+    if (prm_values.material_points.ghost_penalty > 0.)
+      ghost_penalty.add_diagonal_to(diagonal);
     return background_grid.dofs_at_most(diagonal, threshold);
   }
 
@@ -379,6 +392,17 @@ namespace qsmpm
       TimerOutput::Scope scope(timer_output, "shape functions at points");
       cache.reinit(background_grid, points(), residual->ghosted_layout());
     }
+    const double gamma = prm_values.material_points.ghost_penalty;
+    if (gamma > 0.)
+      {
+        TimerOutput::Scope scope(timer_output, "ghost penalty");
+        VectorType         diagonal;
+        ghost_penalty.reinit(background_grid,
+                             cache,
+                             points().get_offsets().volume,
+                             gamma,
+                             mean_stiffness(diagonal));
+      }
     {
       TimerOutput::Scope        scope(timer_output, "constraints and loads");
       AffineConstraints<double> constraints;
@@ -419,7 +443,8 @@ namespace qsmpm
           tangent.assemble(background_grid,
                            points(),
                            cache,
-                           step_constraints.get());
+                           step_constraints.get(),
+                           gamma > 0. ? &ghost_penalty : nullptr);
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
@@ -515,7 +540,12 @@ namespace qsmpm
 
     {
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
-      const StepOperator<dim> op(*residual, step_constraints, preconditioner);
+      const StepOperator<dim> op(*residual,
+                                 step_constraints,
+                                 preconditioner,
+                                 prm_values.material_points.ghost_penalty > 0. ?
+                                   &ghost_penalty :
+                                   nullptr);
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       report = newton.solve(op, du, R);
@@ -615,7 +645,12 @@ namespace qsmpm
     double delta_lambda = 0.;
     {
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
-      const StepOperator<dim> op(*residual, step_constraints, preconditioner);
+      const StepOperator<dim> op(*residual,
+                                 step_constraints,
+                                 preconditioner,
+                                 prm_values.material_points.ghost_penalty > 0. ?
+                                   &ghost_penalty :
+                                   nullptr);
       using Solver = PathFollowingNewton<StepOperator<dim>, VectorType>;
       const Solver newton(prm_values.nonlinear_solver, &progress);
       // Either the energy the points dissipate in the step (see

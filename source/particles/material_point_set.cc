@@ -129,6 +129,19 @@ namespace qsmpm
         "left the node's cells -- has none, and the step's Jacobian would "
         "be singular. 0: never.",
         Patterns::Double(0., 1.));
+      prm.add_parameter(
+        "Ghost penalty",
+        ghost_penalty,
+        "gamma > 0: the increments of the nodes that the material only "
+        "partly surrounds are tied to the gradient of the increment in the "
+        "neighbouring cells by the ghost penalty gamma E_s h int_F "
+        "[[grad du . n]]^2 on the faces of cut cells (Coombs 2023), with "
+        "E_s the mean stiffness of the grid's degrees of freedom. It gives "
+        "such nodes stiffness without holding them (it carries no load: "
+        "it vanishes for linear fields), so that Newton does not stall "
+        "when the body moves into a new row of cells; 0.1 is a good "
+        "value. 0: none (the paper).",
+        Patterns::Double(0.));
     }
     prm.leave_subsection();
   }

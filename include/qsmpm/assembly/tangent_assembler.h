@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <qsmpm/assembly/ghost_penalty.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -38,15 +39,20 @@ namespace qsmpm
     void
     reinit(const BackgroundGrid<dim> &grid, const bool gimp = false);
 
-    /// Assemble K at the points of @p cache.
+    /// Assemble K at the points of @p cache, plus the matrix of
+    /// @p ghost_penalty if given (its couplings across faces then join the
+    /// pattern, made anew for the step).
     void
     assemble(const BackgroundGrid<dim>       &grid,
              const MaterialPointSet<dim>     &points,
              const ShapeCache<dim>           &cache,
-             const AffineConstraints<double> &constraints);
+             const AffineConstraints<double> &constraints,
+             const GhostPenalty<dim>         *ghost_penalty = nullptr);
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;
+
+
 
     /**
      * A number that changes whenever matrix() gets a new sparsity pattern
@@ -77,7 +83,8 @@ namespace qsmpm
     /// GIMP: the pattern of the couplings that the points reach this step.
     void
     make_step_pattern(const BackgroundGrid<dim> &grid,
-                      const ShapeCache<dim>     &cache);
+                      const ShapeCache<dim>     &cache,
+                      const GhostPenalty<dim>   *ghost_penalty);
 
     TrilinosWrappers::SparseMatrix K;
     AffineConstraints<double>      periodicity;

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <memory>
+#include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
 #include <qsmpm/core/step_operator.h>
@@ -233,6 +234,11 @@ namespace qsmpm
     IndexSet
     dofs_without_stiffness() const;
 
+    /// The diagonal of the tangent at the points (into @p diagonal) and its
+    /// mean over the dofs that have stiffness.
+    double
+    mean_stiffness(VectorType &diagonal) const;
+
     /**
      * The closed constraints of the step t_old -> t_new: those of the
      * displacement conditions (and periodicity), checked against the
@@ -328,6 +334,7 @@ namespace qsmpm
     ShapeCache<dim>                           cache;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
+    GhostPenalty<dim>                         ghost_penalty;
     Preconditioner<dim>                       preconditioner;
     /// Load steps the preconditioner has served (0: build one before the
     /// next step), and its GMRES iterations per Newton iteration in the

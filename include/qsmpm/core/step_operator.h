@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/solvers/preconditioner.h>
@@ -21,21 +22,27 @@ namespace qsmpm
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
 
+    /// The step's operator; @p ghost_penalty, if given, stabilizes the
+    /// nodes of cut cells.
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
-                 const Preconditioner<dim>      &preconditioner)
+                 const Preconditioner<dim>      &preconditioner,
+                 const GhostPenalty<dim>        *ghost_penalty = nullptr)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
+      , ghost_penalty(ghost_penalty)
     {
     }
 
-    /// R(du) = f_ext - f_int(du) (QuasiStaticResidual), with coupled rows
-    /// added to their masters.
+    /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
+    /// penalty, if any), with coupled rows added to their masters.
     void
     residual(const VectorType &du, VectorType &R) const
     {
       residual_evaluator.evaluate(du, R);
+      if (ghost_penalty != nullptr)
+        ghost_penalty->subtract_forces(du, R);
       constraints.condense(R);
     }
 
@@ -86,6 +93,7 @@ namespace qsmpm
     const QuasiStaticResidual<dim> &residual_evaluator;
     const StepConstraints          &constraints;
     const Preconditioner<dim>      &preconditioner;
+    const GhostPenalty<dim>        *ghost_penalty;
   };
 } // namespace qsmpm
 

@@ -62,6 +62,9 @@ namespace qsmpm
       /// Degrees of freedom whose stiffness (diagonal of the tangent) is at
       /// most this fraction of the mean are held fixed in a step.
       double min_nodal_stiffness_fraction = 1e-8;
+      /// The factor gamma of the ghost penalty of cut cells (GhostPenalty);
+      /// 0: none.
+      double ghost_penalty = 0.;
       /// The material id of a point created at x, an expression in x, y
       /// (and z) whose value is a non-negative integer.
       std::string material_id = "0";

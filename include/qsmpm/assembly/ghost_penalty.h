@@ -1,0 +1,99 @@
+#ifndef qsmpm_assembly_ghost_penalty_h
+#define qsmpm_assembly_ghost_penalty_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The ghost penalty of cut cells (Burman 2010; for the material-point
+   * method Coombs 2023, "Ghost stabilisation of the material point method
+   * for stable quasi-static and dynamic analysis of large deformation
+   * problems", IJNME 124): a grid node that the material only just reaches
+   * has almost no stiffness, and with it the step's Jacobian is nearly
+   * singular -- Newton then stalls, most of all at finite strain, where the
+   * stress stiffness of a compressed point can make such a node's
+   * stiffness vanish. The penalty
+   *
+   *   g(du, v) = sum_F gamma E_s h_F int_F [[grad du . n]] . [[grad v . n]]
+   *
+   * over the faces F shared by two cells all of whose nodes carry
+   * material, of which at least one is cut (it has a node with less than a
+   * quarter of a cell's volume of material in its support), ties the
+   * increments of such nodes to the gradient of the increment in the
+   * neighbouring cells. It vanishes for every linear field -- the
+   * increments of rigid-body motions and of homogeneous strains -- so it
+   * carries no load to any support: its nodal forces sum to zero
+   * (EquilibriumAudit sees nothing), and on refinement it vanishes with
+   * the gradient jumps of the discrete solution. E_s is the mean stiffness
+   * of the grid's degrees of freedom (the diagonal of the tangent), so
+   * that gamma has no units. Bilinear and trilinear cells have no jumps of
+   * higher normal derivatives, so the first one is all there is.
+   *
+   * The residual of a step becomes R(du) - G du; the preconditioner's
+   * matrix K + G (TangentAssembler::assemble() adds it).
+   */
+  template <int dim>
+  class GhostPenalty
+  {
+  public:
+    /**
+     * The matrix G of the step: the cut cells and faces of the points of
+     * @p cache (whose volumes are at @p volume_offset), with the penalty
+     * factor @p gamma and the stiffness scale @p stiffness_scale.
+     */
+    void
+    reinit(const BackgroundGrid<dim> &grid,
+           const ShapeCache<dim>     &cache,
+           const unsigned int         volume_offset,
+           const double               gamma,
+           const double               stiffness_scale);
+
+    /// Whether G has any entry (on any rank).
+    bool
+    active() const;
+
+    /// R -= G du.
+    void
+    subtract_forces(const TrilinosWrappers::MPI::Vector &du,
+                    TrilinosWrappers::MPI::Vector       &R) const;
+
+    /// diagonal += the diagonal of G (a vector of the locally owned dofs).
+    void
+    add_diagonal_to(TrilinosWrappers::MPI::Vector &diagonal) const;
+
+    /// Add the couplings of G to @p pattern (with @p periodicity, as the
+    /// tangent's pattern).
+    void
+    add_couplings(const AffineConstraints<double>   &periodicity,
+                  TrilinosWrappers::SparsityPattern &pattern) const;
+
+    /// K += G, with the step's @p constraints (as the tangent's cells).
+    void
+    add_to(const AffineConstraints<double> &constraints,
+           TrilinosWrappers::SparseMatrix  &K) const;
+
+    /// The number of faces penalized in the last reinit() (all ranks).
+    unsigned int
+    n_faces() const;
+
+  private:
+    TrilinosWrappers::SparseMatrix        G;
+    /// The degrees of freedom of the two cells of each penalized face on
+    /// this rank, and the face's matrix.
+    std::vector<std::vector<types::global_dof_index>> face_dofs;
+    std::vector<FullMatrix<double>>                   face_matrices;
+    mutable TrilinosWrappers::MPI::Vector scratch;
+    unsigned int                          faces = 0;
+  };
+} // namespace qsmpm
+
+#endif
