@@ -11,7 +11,10 @@
 ##   P/lib/cmake/qsmpm/qsmpmConfig.cmake  the package (+ ConfigVersion, Targets)
 ##   P/share/qsmpm/examples/<name>/       the examples' sources, .prm and data
 ##                                        files, each with a CMakeLists.txt
-##   P/share/doc/qsmpm/                   doc/
+##   P/share/doc/qsmpm/                   doc/ and README.md, links rewritten
+##                                        (cmake/install_doc_links.cmake)
+##   P/share/doc/qsmpm/user_model/        tests/install_package/ (the user
+##                                        model of doc/user_models.md)
 ##
 ## A user project then needs find_package(qsmpm) and
 ## target_link_libraries(app qsmpm::qsmpm); see doc/first_problem.md. The
@@ -62,7 +65,16 @@ foreach(_example ${QSMPM_EXAMPLES})
   endif()
 endforeach()
 
+# The documentation: doc/, the README next to its pages, and the user model
+# of doc/user_models.md (the project of the test install_package); then the
+# relative links of the installed pages are rewritten to the installed
+# targets (cmake/install_doc_links.cmake; checked by the test
+# installed_doc_links).
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/doc/ DESTINATION share/doc/qsmpm)
+install(FILES ${CMAKE_SOURCE_DIR}/README.md DESTINATION share/doc/qsmpm)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/tests/install_package/
+  DESTINATION share/doc/qsmpm/user_model)
+install(SCRIPT ${CMAKE_SOURCE_DIR}/cmake/install_doc_links.cmake)
 
 # The package. qsmpmConfig.cmake is the same file in the build tree and in
 # the installation: it finds deal.II (the installation used here first),
