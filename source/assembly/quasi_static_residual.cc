@@ -341,6 +341,9 @@ namespace qsmpm
           finite_strain_stresses<write_back>(old, first, written);
         else
           small_strain_stresses<write_back>(old, first, written);
+        if (fbar && !finite_strain && !write_back)
+          for (unsigned int c = c0; c < c1; ++c)
+            project_fbar_force_stresses(cache.cell(c));
 
         if (write_back)
           {
@@ -709,6 +712,45 @@ namespace qsmpm
         total_volume += omega;
       }
     return sum / total_volume;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticResidual<dim>::project_fbar_force_stresses(
+    const typename ShapeCache<dim>::CellRange &range) const
+  {
+    // The work of the stresses on a virtual displacement v is that on the
+    // virtual F-bar strain, d eps_bar_p(v) = d eps_p(v) + (theta_bar(v) -
+    // tr d eps_p(v))/dim I with theta_bar(v) = sum_q w_q tr d eps_q(v) / W
+    // (w_q the volumes of the mean, W their sum, V_p the volumes of the
+    // forces):
+    //
+    //   sum_p V_p sigma_p : d eps_bar_p(v) = sum_p S_p : d eps_p(v),
+    //   S_p = V_p sigma_p + (w_p / W sum_q V_q tr sigma_q
+    //                        - V_p tr sigma_p) / dim I.
+    //
+    // The volumetric part of the forces is that of the cell's mean stress
+    // trace: pressures that vary between the points of a cell do no work on
+    // the points' own volume changes, which the F-bar kinematics does not
+    // let them resist.
+    const unsigned int volume  = own_offsets.volume;
+    double             W       = 0.;
+    double             V_trace = 0.;
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        W += committed(p)[volume];
+        V_trace += trace(force_stress_scratch[p - block_first]);
+      }
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        Tensor<2, dim> &S = force_stress_scratch[p - block_first];
+        const double    shift =
+          (committed(p)[volume] / W * V_trace - trace(S)) / dim;
+        for (unsigned int a = 0; a < dim; ++a)
+          S[a][a] += shift;
+      }
   }
 
 

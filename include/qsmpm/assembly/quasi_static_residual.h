@@ -43,8 +43,18 @@ namespace qsmpm
    * With VolumetricTreatment::fbar the model sees, at every point, the
    * kinematics with the volume change replaced by the volume-weighted mean
    * over the points of its cell (F-bar, Coombs et al. 2018; at small strain
-   * d eps + (theta_bar - tr d eps)/dim I), while the forces are integrated
-   * with the point's own Delta F (the original, non-symmetric F-bar).
+   * d eps_bar = d eps + (theta_bar - tr d eps)/dim I). At finite strain the
+   * forces are integrated with the point's own Delta F (the original,
+   * non-symmetric F-bar). At small strain they are the work of the stresses
+   * on the virtual F-bar strain, f_int = sum_p Omega_p B_bar_p^T sigma_p
+   * (B-bar, the mean dilatation): the volumetric part of the forces is that
+   * of the cell's volume-weighted mean stress trace
+   * (project_fbar_force_stresses()). The two agree while the pressure is
+   * the same at all points of a cell (elasticity); a dilatant plastic flow
+   * (Drucker-Prager) makes it differ between the points, and with the
+   * standard gradients these differences acted on the points' own volume
+   * changes, which the F-bar kinematics gives no stiffness: Newton stalled
+   * on the c-phi footing (issue 31).
    *
    * The sums over i run over each point's stencil in the ShapeCache: the
    * 2^dim vertices of its cell (linear) or 3^dim nodes (GIMP). On affine
@@ -246,6 +256,16 @@ namespace qsmpm
     double
     cell_mean_volume_change(const typename ShapeCache<dim>::CellRange &range,
                             const bool finite_strain) const;
+
+    /**
+     * F-bar at small strain: replace the stress measures in
+     * force_stress_scratch of the points of the cell @p range by those of
+     * the forces B_bar^T sigma (the work on the virtual F-bar strain), whose
+     * volumetric part is the cell's mean stress trace.
+     */
+    void
+    project_fbar_force_stresses(
+      const typename ShapeCache<dim>::CellRange &range) const;
 
     /**
      * The committed state of point @p p (in the cache's order) that the

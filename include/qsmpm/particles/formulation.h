@@ -73,9 +73,14 @@ namespace qsmpm
      * step), which the model sees and the point stores (F <- Delta F_bar F,
      * volume det(F_bar) Omega_0). At small strain the same idea on the
      * increment: d eps_bar = d eps + (theta_bar - tr d eps)/dim I, theta_bar
-     * the cell's volume-weighted mean of tr d eps. The internal force is
-     * integrated with the standard gradients (the original F-bar), so the
-     * Jacobian is not symmetric, which GMRES does not mind. In 2D (plane
+     * the cell's volume-weighted mean of tr d eps. At finite strain the
+     * internal force is integrated with the standard gradients (the
+     * original F-bar), so the Jacobian is not symmetric, which GMRES does
+     * not mind. At small strain the internal force is the work on the
+     * virtual F-bar strain (B-bar): its volumetric part is that of the
+     * cell's mean stress trace, so that pressures which differ between the
+     * points of a cell (dilatant plastic flow, Drucker-Prager) do not act
+     * on the points' own volume changes (QuasiStaticResidual). In 2D (plane
      * strain) the exponent is 1/2: only the in-plane stretches carry volume.
      */
     fbar
