@@ -16,7 +16,6 @@ namespace qsmpm
                             const double               gamma,
                             const double               stiffness_scale)
   {
-    const auto &triangulation = grid.get_triangulation();
     const auto &dof_handler   = grid.get_dof_handler();
 
     // The cells that take part: those all of whose nodes carry material
