@@ -558,7 +558,7 @@ namespace Cantilever
       }
     pcout << "finest grid (" << finest << " cells over H), q = "
           << parameters.large_load << ", " << parameters.verified[0]
-          << ": tip rotation " << max_rotation
+          << ": tip rotation " << std::setprecision(4) << max_rotation
           << " deg, deflection error " << std::setprecision(3)
           << 100. * deflection_error << " %, rotation error "
           << 100. * rotation_error << " % (tolerance "
