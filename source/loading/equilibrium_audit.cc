@@ -46,8 +46,28 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  EquilibriumAudit<dim>::Result::structural_loss() const
+  {
+    return scale > 0. ? (applied + supports + free_residual).norm() / scale :
+                        0.;
+  }
+
+
+
+  template <int dim>
+  double
+  EquilibriumAudit<dim>::Result::solver_residual() const
+  {
+    return scale > 0. ? free_residual.norm() / scale : 0.;
+  }
+
+
+
+  template <int dim>
   std::string
-  EquilibriumAudit<dim>::Result::causes(const double tolerance) const
+  EquilibriumAudit<dim>::Result::causes(const double tolerance,
+                                        const double residual_tolerance) const
   {
     const double       limit = tolerance * scale;
     std::ostringstream text;
@@ -89,7 +109,7 @@ namespace qsmpm
                  "corner, by at least half a cell beyond the body)";
         add(words.str());
       }
-    if (free_residual.norm() > limit)
+    if (free_residual.norm() > residual_tolerance * scale)
       {
         std::ostringstream words;
         words << std::setprecision(3) << share(free_residual)

@@ -40,7 +40,9 @@ namespace qsmpm
    * The load a user has lost is A + C: what the prescribed supports do not
    * carry of the applied load (for a body loaded by displacements only, the
    * amount by which the supports' forces fail to balance each other). It
-   * is measured relative to the size of the loads: the largest of |A|,
+   * is measured relative to the size of the loads (a run stops when the
+   * part E - H exceeds the tolerance, or when F exceeds what Newton's
+   * stopping test leaves, see QuasiStaticProblem): the largest of |A|,
    * |C_k|, 1e-6 of the sum of the magnitudes of all nodal forces (supports
    * that balance each other, as when every node is prescribed, have a
    * resultant of round-off size), and the size of the earlier steps (after
@@ -92,16 +94,27 @@ namespace qsmpm
       /// The size of the loads the imbalance is measured against.
       double scale = 0.;
 
-      /// |A + C| / scale (0 if nothing is loaded).
+      /// |A + C| / scale (0 if nothing is loaded): the load the supports
+      /// do not carry, as a user reads it from reactions.csv.
       double
       imbalance() const;
 
+      /// |E - H| / scale = |A + C + F| / scale: the part of it that went to
+      /// the held nodes or through the grid's edge.
+      double
+      structural_loss() const;
+
+      /// |F| / scale: the part Newton's stopping test left.
+      double
+      solver_residual() const;
+
       /**
-       * The causes of an imbalance, in words: each of H - H_load, H_load,
-       * F and E whose size exceeds @p tolerance times the scale.
+       * The causes of an imbalance, in words: each of H - H_load, H_load
+       * and E whose size exceeds @p tolerance times the scale, and F if it
+       * exceeds @p residual_tolerance times the scale.
        */
       std::string
-      causes(const double tolerance) const;
+      causes(const double tolerance, const double residual_tolerance) const;
     };
 
     /**
