@@ -210,10 +210,15 @@ namespace
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      rank            = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const bool root = rank == 0;
 
       // The command line: options and at most one parameter file.
       std::vector<std::string> plugins;
@@ -297,16 +302,21 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One write of the whole line: on several MPI ranks each rank prints
-      // it, and pieces written separately interleave ("qsmpm stopped: qsmpm
-      // stopped: ...").
-      std::cerr << "qsmpm stopped: " + qsmpm::Utils::error_message(exc) + "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("qsmpm stopped: qsmpm stopped: ...").
+      if (rank == 0)
+        std::cerr << "qsmpm stopped: " + qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "qsmpm stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "qsmpm stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

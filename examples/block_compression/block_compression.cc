@@ -490,9 +490,14 @@ namespace BlockCompression
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
 
       // The parameter file: the first argument, or the one next to the
       // executable (CMake copies it into the build directory).
@@ -516,13 +521,24 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "block_compression stopped: "
-                << qsmpm::Utils::error_message(exc) << std::endl;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("block_compression stopped: block_compression stopped:
+      // ...").
+      if (rank == 0)
+        std::cerr << "block_compression stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "block_compression stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "block_compression stopped: unknown exception"
+                  << std::endl;
       return 1;
     }
   return 0;

@@ -555,12 +555,17 @@ namespace Column
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string                        parameter_file =
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const std::string parameter_file =
         argc > 1 ? std::string(argv[1]) :
-                                          (std::filesystem::path(argv[0]).parent_path() / "column.prm")
+                   (std::filesystem::path(argv[0]).parent_path() / "column.prm")
                      .string();
       AssertThrow(std::filesystem::exists(parameter_file),
                   dealii::ExcMessage("Cannot find the parameter file <" +
@@ -572,13 +577,22 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "column stopped: " << qsmpm::Utils::error_message(exc)
-                << std::endl;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("column stopped: column stopped: ...").
+      if (rank == 0)
+        std::cerr << "column stopped: " + qsmpm::Utils::error_message(exc) +
+                       "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "column stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "column stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

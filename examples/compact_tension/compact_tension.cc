@@ -648,9 +648,14 @@ namespace CompactTension
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       const bool resume = argc > 2 && std::string(argv[1]) == "--resume";
       AssertThrow(argc > (resume ? 2 : 1),
                   dealii::ExcMessage(
@@ -664,16 +669,22 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One write of the whole line, so that the lines of several MPI ranks
-      // do not interleave.
-      std::cerr << "compact_tension stopped: " +
-                     qsmpm::Utils::error_message(exc) + "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("compact_tension stopped: compact_tension stopped: ...").
+      if (rank == 0)
+        std::cerr << "compact_tension stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "compact_tension stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "compact_tension stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

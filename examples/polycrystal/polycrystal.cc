@@ -977,9 +977,14 @@ namespace Polycrystal
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       if (argc > 1 && std::string(argv[1]) == "--make-odfs")
         {
           AssertThrow(argc > 2,
@@ -1001,19 +1006,22 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One line that names the cause (the entry, the file), as in the
-      // other qsmpm programs: what() would add deal.II's banner with file,
-      // line and the violated condition, which is of no use to a user.
-      // Written at once, so that the lines of several MPI ranks do not
-      // interleave.
-      std::cerr << "polycrystal stopped: " + qsmpm::Utils::error_message(exc) +
-                     "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("polycrystal stopped: polycrystal stopped: ...").
+      if (rank == 0)
+        std::cerr << "polycrystal stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "polycrystal stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "polycrystal stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;
