@@ -24,6 +24,7 @@
 #include <dlfcn.h>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/base/version.h>
 #include <qsmpm/core/quasi_static_problem.h>
@@ -183,6 +184,75 @@ namespace
   }
 
   /**
+   * The parameters in the format of a .prm file (ParameterHandler::PRM),
+   * with long documentation printed once. The three function subsections
+   * of <Boundary conditions> (Body force, Displacement, Traction) are
+   * deal.II's ParsedFunction, whose entries carry some 35 lines of
+   * documentation of the function parser each; a documentation of more
+   * than four lines that has been printed already is replaced by a line
+   * that refers to the entry where it was printed.
+   *
+   * The text that ParameterHandler prints is a sequence of comment lines
+   * ("# ...") followed by the "set" line of the entry they document, and
+   * "subsection"/"end" lines, all indented by their depth.
+   */
+  void
+  print_prm(const ParameterHandler &prm, std::ostream &out)
+  {
+    std::stringstream text;
+    prm.print_parameters(text, ParameterHandler::PRM);
+
+    std::vector<std::string>           path;
+    std::map<std::string, std::string> printed; // documentation -> entry
+    std::vector<std::string>           comment;
+    std::string                        documentation;
+    const auto                         trimmed = [](const std::string &line) {
+      const auto first = line.find_first_not_of(' ');
+      return first == std::string::npos ? std::string() : line.substr(first);
+    };
+    std::string line;
+    while (std::getline(text, line))
+      {
+        const std::string content = trimmed(line);
+        const std::string indent = line.substr(0, line.size() - content.size());
+        // The header "# Listing of Parameters" is a comment at depth 0 that
+        // no "set" line follows directly; it is short and passes through.
+        if (content.rfind('#', 0) == 0)
+          {
+            comment.push_back(line);
+            documentation += content + '\n';
+            continue;
+          }
+        if (content.rfind("set ", 0) == 0 && comment.size() > 4)
+          {
+            std::string name = content.substr(4, content.find('=') - 4);
+            name             = name.substr(0, name.find_last_not_of(' ') + 1);
+            std::string where;
+            for (const auto &p : path)
+              where += (where.empty() ? "" : "/") + p;
+            const auto [first, inserted] =
+              printed.emplace(documentation,
+                              "<" + name + "> of subsection <" + where + ">");
+            if (!inserted)
+              comment = {indent + "# As " + first->second + " above."};
+          }
+        for (const auto &c : comment)
+          out << c << '\n';
+        comment.clear();
+        documentation.clear();
+        if (content.rfind("subsection ", 0) == 0)
+          path.push_back(content.substr(11));
+        else if (content == "end" && !path.empty())
+          path.pop_back();
+        out << line << '\n';
+      }
+    for (const auto &c : comment)
+      out << c << '\n';
+  }
+
+
+
+  /**
    * dlopen() a plugin with RTLD_NOW | RTLD_GLOBAL (all symbols resolved now,
    * so that a missing one is reported here and not in the middle of a run).
    * A name that exists as a file is opened as that file (dlopen() alone
@@ -210,10 +280,15 @@ namespace
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      rank            = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const bool root = rank == 0;
 
       // The command line: options and at most one parameter file.
       std::vector<std::string> plugins;
@@ -279,7 +354,7 @@ main(int argc, char *argv[])
           ParameterHandler prm;
           declare<2>(prm);
           if (root)
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
+            print_prm(prm, std::cout);
           return 0;
         }
       if (action == "--print-parameters-markdown")
@@ -297,16 +372,21 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One write of the whole line: on several MPI ranks each rank prints
-      // it, and pieces written separately interleave ("qsmpm stopped: qsmpm
-      // stopped: ...").
-      std::cerr << "qsmpm stopped: " + qsmpm::Utils::error_message(exc) + "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("qsmpm stopped: qsmpm stopped: ...").
+      if (rank == 0)
+        std::cerr << "qsmpm stopped: " + qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "qsmpm stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "qsmpm stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

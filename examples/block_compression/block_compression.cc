@@ -32,6 +32,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
@@ -117,80 +118,69 @@ namespace BlockCompression
   // from a subsection "Block compression" that we declare here. All its
   // entries are scalars, so switching between 2D and 3D only needs
   // "set Dimension = 3".
-  struct Parameters
+  //
+  // The struct follows the pattern of the library's own parameter structs
+  // (ParameterStruct, as in deal.II's step-68): each member's initializer
+  // is its default, and add_parameters() declares the entry bound to it
+  // with ParameterHandler::add_parameter(), so that name, default and
+  // documentation are written once. ParameterStruct adds
+  // declare_parameters(), which declares the entries with their defaults,
+  // and parse_parameters(), which reads the values of the parsed file into
+  // an object.
+  struct Parameters : ParameterStruct<Parameters>
   {
-    double       width;
-    double       height;
-    double       depth;
-    unsigned int cells_over_height;
-    unsigned int empty_cells;
-    double       plate_displacement;
-    double       tolerance;
+    double       width              = 1.0;
+    double       height             = 1.0;
+    double       depth              = 1.0;
+    unsigned int cells_over_height  = 8;
+    unsigned int empty_cells        = 4;
+    double       plate_displacement = 0.01;
+    double       tolerance          = 0.01;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
   };
 
 
 
   void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Block compression");
     {
-      prm.declare_entry("Block width",
-                        "1.0",
-                        Patterns::Double(0.),
-                        "W: extent of the block in x.");
-      prm.declare_entry("Block height",
-                        "1.0",
-                        Patterns::Double(0.),
+      prm.add_parameter("Block width",
+                        width,
+                        "W: extent of the block in x.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Block height",
+                        height,
                         "H: extent of the block in y, the distance between "
-                        "the plates. The grid has the same height.");
-      prm.declare_entry("Block depth",
-                        "1.0",
-                        Patterns::Double(0.),
-                        "D: extent of the block in z (3D only).");
-      prm.declare_entry("Cells over the height",
-                        "8",
-                        Patterns::Integer(1),
-                        "Number of (square) grid cells over H.");
-      prm.declare_entry("Empty cells beside the block",
-                        "4",
-                        Patterns::Integer(0),
+                        "the plates. The grid has the same height.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Block depth",
+                        depth,
+                        "D: extent of the block in z (3D only).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Cells over the height",
+                        cells_over_height,
+                        "Number of (square) grid cells over H.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Empty cells beside the block",
+                        empty_cells,
                         "The grid extends this many cells beyond the block "
-                        "in x (and z); these cells start without points.");
-      prm.declare_entry("Plate displacement",
-                        "0.01",
-                        Patterns::Double(),
+                        "in x (and z); these cells start without points.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Plate displacement",
+                        plate_displacement,
                         "delta: the top plate moves down by delta * t, t = "
-                        "load factor.");
-      prm.declare_entry("Tolerance",
-                        "0.01",
-                        Patterns::Double(0.),
+                        "load factor.",
+                        Patterns::Double());
+      prm.add_parameter("Tolerance",
+                        tolerance,
                         "Largest accepted relative difference between the "
                         "computed plate force and the small-strain value; "
-                        "the program fails if it is exceeded.");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Block compression");
-    {
-      width              = prm.get_double("Block width");
-      height             = prm.get_double("Block height");
-      depth              = prm.get_double("Block depth");
-      cells_over_height  = prm.get_integer("Cells over the height");
-      empty_cells        = prm.get_integer("Empty cells beside the block");
-      plate_displacement = prm.get_double("Plate displacement");
-      tolerance          = prm.get_double("Tolerance");
+                        "the program fails if it is exceeded.",
+                        Patterns::Double(0.));
     }
     prm.leave_subsection();
   }
@@ -500,9 +490,14 @@ namespace BlockCompression
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
 
       // The parameter file: the first argument, or the one next to the
       // executable (CMake copies it into the build directory).
@@ -526,13 +521,24 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      std::cerr << "block_compression stopped: "
-                << qsmpm::Utils::error_message(exc) << std::endl;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("block_compression stopped: block_compression stopped:
+      // ...").
+      if (rank == 0)
+        std::cerr << "block_compression stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "block_compression stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "block_compression stopped: unknown exception"
+                  << std::endl;
       return 1;
     }
   return 0;

@@ -354,15 +354,171 @@ namespace Column
 
 
 
-  // @sect3{The log-log plot}
+  // @sect3{The ConvergenceStudy class}
+  //
+  // The program itself is a class, like step-44's Solid: the constructor
+  // reads the parameter file, run() does all runs of the study -- one
+  // SelfWeightColumn per kind of shape functions and grid -- and writes
+  // their results, one method per stage.
+  template <int dim>
+  class ConvergenceStudy
+  {
+  public:
+    explicit ConvergenceStudy(const std::string &parameter_file);
+
+    void
+    run();
+
+  private:
+    void
+    print_exact_compaction();
+    void
+    open_table();
+    void
+    run_shape_functions(const std::string &shape_functions);
+    void
+    write_plot() const;
+
+    // The parameter handler keeps the library's subsections, which every
+    // SelfWeightColumn reads again; the entries of "Column" are bound to
+    // the members of column (add_parameter()), which parsing the file
+    // fills.
+    ParameterHandler   prm;
+    Parameters         column;
+    ConditionalOStream pcout;
+    std::ofstream      csv;
+  };
+
+
+
+  // @sect4{ConvergenceStudy::ConvergenceStudy}
+  //
+  // "Dimension" was read by main() already; it is declared so that the
+  // file may hold it.
+  template <int dim>
+  ConvergenceStudy<dim>::ConvergenceStudy(const std::string &parameter_file)
+    : pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
+    column.add_parameters(prm);
+    prm.parse_input(parameter_file);
+  }
+
+
+
+  // @sect4{ConvergenceStudy::run}
+  //
+  // All runs of the study, a line per run on the screen and in the CSV
+  // file, then the observed rates between successive grids.
+  template <int dim>
+  void
+  ConvergenceStudy<dim>::run()
+  {
+    print_exact_compaction();
+    open_table();
+    for (const auto &shape_functions : column.shape_functions)
+      run_shape_functions(shape_functions);
+    if (csv.is_open())
+      {
+        csv.close();
+        write_plot();
+      }
+  }
+
+
+
+  // @sect4{ConvergenceStudy::print_exact_compaction}
+  //
+  // For a Hencky material with nu = 0 the exact compaction is known (see
+  // exact_hencky_compaction()); for other models there is no reference.
+  template <int dim>
+  void
+  ConvergenceStudy<dim>::print_exact_compaction()
+  {
+    prm.enter_subsection("Material");
+    const std::string model = prm.get("Model");
+    if (model == "hencky")
+      {
+        prm.enter_subsection("hencky");
+        const double E = prm.get_double("Young's modulus");
+        if (prm.get_double("Poisson's ratio") == 0.)
+          pcout << column.prefix
+                << "exact compaction (Hencky, nu = 0): " << std::setprecision(5)
+                << exact_hencky_compaction(E, column.weight, column.height)
+                << std::endl;
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  // @sect4{ConvergenceStudy::open_table}
+  //
+  // The CSV file is written by rank 0 only.
+  template <int dim>
+  void
+  ConvergenceStudy<dim>::open_table()
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    csv.open(column.output_file);
+    AssertThrow(csv, ExcMessage("Cannot write <" + column.output_file + ">."));
+    csv << "shape_functions,cells,l2_stress_error,max_stress_error\n";
+  }
+
+
+
+  // @sect4{ConvergenceStudy::run_shape_functions}
+  //
+  // One kind of shape functions on every grid of the study: a line per run,
+  // then the rates of the L2 error between successive grids.
+  template <int dim>
+  void
+  ConvergenceStudy<dim>::run_shape_functions(const std::string &shape_functions)
+  {
+    std::vector<double> l2;
+    for (const unsigned int cells : column.cells)
+      {
+        SelfWeightColumn<dim> run(column, prm, shape_functions, cells);
+        const auto            e = run.run();
+        l2.push_back(e.l2);
+        pcout << column.prefix << std::setw(7) << shape_functions << "  cells "
+              << std::setw(4) << cells << "  L2 " << std::scientific
+              << std::setprecision(3) << e.l2 << "  max " << e.max
+              << std::defaultfloat << std::setprecision(4) << "  compaction "
+              << e.compaction << "  steps " << e.steps << "  newton "
+              << e.newton_min << "-" << e.newton_max << "  gmres/newton "
+              << e.gmres_per_newton_min << "-" << e.gmres_per_newton_max << "  "
+              << std::fixed << std::setprecision(2) << e.wall_time << " s"
+              << std::defaultfloat << std::endl;
+        if (csv.is_open())
+          csv << shape_functions << ',' << cells << ',' << std::setprecision(8)
+              << e.l2 << ',' << e.max << '\n';
+      }
+    for (unsigned int i = 1; i < l2.size(); ++i)
+      pcout << column.prefix << std::setw(7) << shape_functions << "  rate "
+            << column.cells[i - 1] << " -> " << column.cells[i] << ": "
+            << std::setprecision(3)
+            << std::log(l2[i - 1] / l2[i]) /
+                 std::log(double(column.cells[i]) / column.cells[i - 1])
+            << std::endl;
+  }
+
+
+
+  // @sect4{ConvergenceStudy::write_plot}
   //
   // Next to the CSV file, a gnuplot script of the same name with ".gp", and,
   // if gnuplot is installed, the plot itself (".png"): the L2 and maximum
   // errors of each kind of shape functions against the number of cells.
+  template <int dim>
   void
-  write_plot(const std::string &csv_file)
+  ConvergenceStudy<dim>::write_plot() const
   {
-    const std::string stem =
+    const std::string &csv_file = column.output_file;
+    const std::string  stem =
       std::filesystem::path(csv_file).replace_extension().string();
     std::ofstream gp(stem + ".gp");
     gp << "set terminal pngcairo size 800,560 noenhanced\n"
@@ -391,87 +547,6 @@ namespace Column
       std::cout << "wrote " << csv_file << " and " << stem
                 << ".gp (gnuplot not found: no picture)" << std::endl;
   }
-
-
-
-  // @sect3{The convergence study}
-  //
-  // All runs of the study, a line per run on the screen and in the CSV
-  // file, then the observed rates between successive grids.
-  template <int dim>
-  void
-  run_study(const std::string &parameter_file)
-  {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
-    Parameters column;
-    column.add_parameters(prm);
-    prm.parse_input(parameter_file);
-
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                               0);
-    prm.enter_subsection("Material");
-    const std::string model = prm.get("Model");
-    if (model == "hencky")
-      {
-        prm.enter_subsection("hencky");
-        const double E = prm.get_double("Young's modulus");
-        if (prm.get_double("Poisson's ratio") == 0.)
-          pcout << column.prefix
-                << "exact compaction (Hencky, nu = 0): " << std::setprecision(5)
-                << exact_hencky_compaction(E, column.weight, column.height)
-                << std::endl;
-        prm.leave_subsection();
-      }
-    prm.leave_subsection();
-
-    std::ofstream csv;
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      {
-        csv.open(column.output_file);
-        AssertThrow(csv,
-                    ExcMessage("Cannot write <" + column.output_file + ">."));
-        csv << "shape_functions,cells,l2_stress_error,max_stress_error\n";
-      }
-
-    for (const auto &shape_functions : column.shape_functions)
-      {
-        std::vector<double> l2;
-        for (const unsigned int cells : column.cells)
-          {
-            SelfWeightColumn<dim> run(column, prm, shape_functions, cells);
-            const auto            e = run.run();
-            l2.push_back(e.l2);
-            pcout << column.prefix << std::setw(7) << shape_functions
-                  << "  cells " << std::setw(4) << cells << "  L2 "
-                  << std::scientific << std::setprecision(3) << e.l2 << "  max "
-                  << e.max << std::defaultfloat << std::setprecision(4)
-                  << "  compaction " << e.compaction << "  steps " << e.steps
-                  << "  newton " << e.newton_min << "-" << e.newton_max
-                  << "  gmres/newton " << e.gmres_per_newton_min << "-"
-                  << e.gmres_per_newton_max << "  " << std::fixed
-                  << std::setprecision(2) << e.wall_time << " s"
-                  << std::defaultfloat << std::endl;
-            if (csv.is_open())
-              csv << shape_functions << ',' << cells << ','
-                  << std::setprecision(8) << e.l2 << ',' << e.max << '\n';
-          }
-        for (unsigned int i = 1; i < l2.size(); ++i)
-          pcout << column.prefix << std::setw(7) << shape_functions << "  rate "
-                << column.cells[i - 1] << " -> " << column.cells[i] << ": "
-                << std::setprecision(3)
-                << std::log(l2[i - 1] / l2[i]) /
-                     std::log(double(column.cells[i]) / column.cells[i - 1])
-                << std::endl;
-      }
-    if (csv.is_open())
-      {
-        csv.close();
-        write_plot(column.output_file);
-      }
-  }
 } // namespace Column
 
 
@@ -480,30 +555,44 @@ namespace Column
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::string                        parameter_file =
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const std::string parameter_file =
         argc > 1 ? std::string(argv[1]) :
-                                          (std::filesystem::path(argv[0]).parent_path() / "column.prm")
+                   (std::filesystem::path(argv[0]).parent_path() / "column.prm")
                      .string();
       AssertThrow(std::filesystem::exists(parameter_file),
                   dealii::ExcMessage("Cannot find the parameter file <" +
                                      parameter_file + ">."));
       if (qsmpm::Utils::read_dimension(parameter_file) == 2)
-        Column::run_study<2>(parameter_file);
+        Column::ConvergenceStudy<2>(parameter_file).run();
       else
-        Column::run_study<3>(parameter_file);
+        Column::ConvergenceStudy<3>(parameter_file).run();
     }
   catch (std::exception &exc)
     {
-      std::cerr << "column stopped: " << qsmpm::Utils::error_message(exc)
-                << std::endl;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("column stopped: column stopped: ...").
+      if (rank == 0)
+        std::cerr << "column stopped: " + qsmpm::Utils::error_message(exc) +
+                       "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "column stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "column stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

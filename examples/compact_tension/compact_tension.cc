@@ -38,6 +38,7 @@
 #include <limits>
 #include <memory>
 #include <qsmpm/base/parameter_file.h>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/fracture/load_displacement_curve.h>
@@ -90,27 +91,34 @@ namespace CompactTension
   // stepping", "Nonlinear solver", "Output") are read as by the general
   // driver; the specimen comes from "Compact tension" and the few things
   // this program adds from "Run".
-  struct RunParameters
+  //
+  // Both are parameter structs in the manner of the library's
+  // (ParameterStruct, deal.II's step-68): a member's initializer is its
+  // default, and add_parameters() declares the entry bound to it with
+  // ParameterHandler::add_parameter(), so that each entry's name, default
+  // and documentation are written once. The base ParameterStruct adds
+  // declare_parameters() (the entries with their defaults) and
+  // parse_parameters() (the values of a parsed file into an object).
+  struct RunParameters : ParameterStruct<RunParameters>
   {
-    double      stop_fraction;
-    bool        to_complete_failure;
-    bool        end_at_final_load_factor;
-    double      partial_failure_fraction;
-    std::string plot_label;
+    double      stop_fraction            = 0.02;
+    bool        to_complete_failure      = false;
+    bool        end_at_final_load_factor = false;
+    double      partial_failure_fraction = 0.5;
+    std::string plot_label               = "";
 
-    static void
-    declare_parameters(ParameterHandler &prm)
+    void
+    add_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Run");
-      prm.declare_entry("Stop below fraction of peak",
-                        "0.02",
-                        Patterns::Double(0., 1.),
+      prm.add_parameter("Stop below fraction of peak",
+                        stop_fraction,
                         "The run ends after the first step past the peak at "
                         "which the load is below this fraction of the peak "
-                        "load.");
-      prm.declare_entry("Run to complete failure",
-                        "false",
-                        Patterns::Bool(),
+                        "load.",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Run to complete failure",
+                        to_complete_failure,
                         "true: ignore <Stop below fraction of peak> and end "
                         "the run once every crack-band point but the lowest "
                         "one (the hinge, which never breaks) has failed "
@@ -118,38 +126,23 @@ namespace CompactTension
                         "then the whole work of fracture. The tail takes "
                         "load-point displacements of several mm: use "
                         "<Load stepping/Increment growth factor>.");
-      prm.declare_entry("End at final load factor",
-                        "false",
-                        Patterns::Bool(),
+      prm.add_parameter("End at final load factor",
+                        end_at_final_load_factor,
                         "true: a run that reaches <Load stepping/Final load "
                         "factor> before its end criterion (fraction of the "
                         "peak or complete failure) ends there normally, "
                         "with the energy balance at that load-point "
                         "displacement; false: that is an error (the curve is "
                         "incomplete).");
-      prm.declare_entry("Partial failure at fraction of peak",
-                        "0.5",
-                        Patterns::Double(0., 1.),
+      prm.add_parameter("Partial failure at fraction of peak",
+                        partial_failure_fraction,
                         "The point fields of 'partial failure' are written at "
                         "the first step past the peak at which the load is "
-                        "below this fraction of the peak load.");
-      prm.declare_entry("Label",
-                        "",
-                        Patterns::Anything(),
+                        "below this fraction of the peak load.",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Label",
+                        plot_label,
                         "A name for the run in the summary (e.g. b = 15 cm).");
-      prm.leave_subsection();
-    }
-
-    void
-    parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Run");
-      stop_fraction            = prm.get_double("Stop below fraction of peak");
-      to_complete_failure      = prm.get_bool("Run to complete failure");
-      end_at_final_load_factor = prm.get_bool("End at final load factor");
-      partial_failure_fraction =
-        prm.get_double("Partial failure at fraction of peak");
-      plot_label = prm.get("Label");
       prm.leave_subsection();
     }
   };
@@ -655,9 +648,14 @@ namespace CompactTension
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       const bool resume = argc > 2 && std::string(argv[1]) == "--resume";
       AssertThrow(argc > (resume ? 2 : 1),
                   dealii::ExcMessage(
@@ -671,16 +669,22 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One write of the whole line, so that the lines of several MPI ranks
-      // do not interleave.
-      std::cerr << "compact_tension stopped: " +
-                     qsmpm::Utils::error_message(exc) + "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("compact_tension stopped: compact_tension stopped: ...").
+      if (rank == 0)
+        std::cerr << "compact_tension stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "compact_tension stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "compact_tension stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

@@ -25,6 +25,7 @@
 #include <deal.II/base/point.h>
 #include <limits>
 #include <memory>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
@@ -73,7 +74,7 @@ namespace CompactTension
     /**
      * The subsection "Compact tension" of a .prm file.
      */
-    struct Parameters
+    struct Parameters : ParameterStruct<Parameters>
     {
       /// Ligament length b (m).
       double ligament = 0.15;
@@ -101,10 +102,12 @@ namespace CompactTension
        */
       unsigned int grid_margin = 0;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
+      /// Declare the entries of the subsection, bound to the members
+      /// (ParameterHandler::add_parameter(); the initializers above are
+      /// the defaults). ParameterStruct adds declare_parameters() and
+      /// parse_parameters().
       void
-      parse_parameters(ParameterHandler &prm);
+      add_parameters(ParameterHandler &prm);
     };
 
     explicit CompactTensionGeometry(const Parameters &parameters);
@@ -254,86 +257,64 @@ namespace CompactTension
 
   template <int dim>
   void
-  CompactTensionGeometry<dim>::Parameters::declare_parameters(
-    ParameterHandler &prm)
+  CompactTensionGeometry<dim>::Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Compact tension");
     {
-      prm.declare_entry("Ligament length",
-                        "0.15",
-                        Patterns::Double(0.),
+      prm.add_parameter("Ligament length",
+                        ligament,
                         "b (m): the uncracked length below the notch tip. "
-                        "Rounded to a whole number of cells.");
-      prm.declare_entry("Depth",
-                        "0.12",
-                        Patterns::Double(0.),
+                        "Rounded to a whole number of cells.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Depth",
+                        depth,
                         "d (m): specimen thickness. In 2D it only scales the "
-                        "load P.");
-      prm.declare_entry("Cell size",
-                        "0.01",
-                        Patterns::Double(0.),
+                        "load P.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Cell size",
+                        cell_size,
                         "h (m): size of the square grid cells; also the notch "
-                        "width and the width of the crack band.");
-      prm.declare_entry("Width over ligament",
-                        "2.4",
-                        Patterns::Double(0.),
+                        "width and the width of the crack band.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Width over ligament",
+                        width_ratio,
                         "W / b: specimen width (in x, across the notch) over "
                         "the ligament. The original dimensions are unknown; "
                         "2.4 is the ASTM E399 ratio 1.2 W_astm / (W_astm - a) "
-                        "with a = W_astm / 2.");
-      prm.declare_entry("Load plate width",
-                        "2",
-                        Patterns::Integer(1),
+                        "with a = W_astm / 2.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Load plate width",
+                        plate_cells,
                         "Width, in cells, of the rigid pin at the top centre "
                         "of each appendage: the top nodes within half of it "
                         "from the load point are displaced together. At least "
                         "1 (two nodes) with one point per cell, see "
-                        "CompactTensionGeometry::add_supports().");
-      prm.declare_entry(
+                        "CompactTensionGeometry::add_supports().",
+                        Patterns::Integer(1));
+      prm.add_parameter(
         "Back-face point refinement",
-        "1",
-        Patterns::Integer(1, 64),
+        back_face_refinement,
         "k: the crack-band cell at the back face (the end of the ligament) "
         "gets k times as many material points along the ligament (y) as "
         "the other cells, e.g. 1 x k with one point per cell. Its lowest "
         "point is the hinge about which the broken specimen rotates and "
         "which never breaks (a zero-strain mode at that point), so the "
         "crack area that is never dissipated shrinks from h d to h d / k "
-        "(with one point per cell). 1: the paper's one point per cell.");
-      prm.declare_entry(
+        "(with one point per cell). 1: the paper's one point per cell.",
+        Patterns::Integer(1, 64));
+      prm.add_parameter(
         "Grid margin",
-        "0",
-        Patterns::Integer(0, 100),
+        grid_margin,
         "Number of empty grid cells added around the specimen on all four "
         "sides, so that points may leave the specimen's rectangle: needed "
         "when the broken halves rotate apart by degrees (Run to complete "
-        "failure). 0: the grid is the specimen.");
-      prm.declare_entry("Notch depth over ligament",
-                        "1.0",
-                        Patterns::Double(0.),
+        "failure). 0: the grid is the specimen.",
+        Patterns::Integer(0, 100));
+      prm.add_parameter("Notch depth over ligament",
+                        notch_ratio,
                         "a / b: depth of the notch from the top edge over the "
-                        "ligament; the specimen height is a + b.");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  template <int dim>
-  void
-  CompactTensionGeometry<dim>::Parameters::parse_parameters(
-    ParameterHandler &prm)
-  {
-    prm.enter_subsection("Compact tension");
-    {
-      ligament             = prm.get_double("Ligament length");
-      depth                = prm.get_double("Depth");
-      cell_size            = prm.get_double("Cell size");
-      width_ratio          = prm.get_double("Width over ligament");
-      notch_ratio          = prm.get_double("Notch depth over ligament");
-      plate_cells          = prm.get_integer("Load plate width");
-      back_face_refinement = prm.get_integer("Back-face point refinement");
-      grid_margin          = prm.get_integer("Grid margin");
+                        "ligament; the specimen height is a + b.",
+                        Patterns::Double(0.));
     }
     prm.leave_subsection();
   }

@@ -88,18 +88,18 @@ namespace Footing
   // stepping) are read by QuasiStaticProblem.
   struct Parameters
   {
-    double                    half_width           = 1.;
-    double                    width                = 5.;
-    double                    depth                = 5.;
-    double                    space_above          = 0.;
-    double                    settlement           = 0.02;
-    std::vector<unsigned int> cells                = {8, 16};
-    std::vector<std::string>  treatments           = {"F-bar", "none"};
-    double                    tolerance            = 0.03;
-    bool                      check                = true;
-    std::string               directory            = ".";
-    bool                      write_points         = false;
-    bool                      verbose              = false;
+    double                    half_width   = 1.;
+    double                    width        = 5.;
+    double                    depth        = 5.;
+    double                    space_above  = 0.;
+    double                    settlement   = 0.02;
+    std::vector<unsigned int> cells        = {8, 16};
+    std::vector<std::string>  treatments   = {"F-bar", "none"};
+    double                    tolerance    = 0.03;
+    bool                      check        = true;
+    std::string               directory    = ".";
+    bool                      write_points = false;
+    bool                      verbose      = false;
 
     void
     add_parameters(ParameterHandler &prm)
@@ -189,7 +189,8 @@ namespace Footing
       {
         prm.enter_subsection("Drucker-Prager");
         reference.cohesion = prm.get_double("Cohesion");
-        const double phi   = prm.get_double("Friction angle") * numbers::PI / 180.;
+        const double phi =
+          prm.get_double("Friction angle") * numbers::PI / 180.;
         AssertThrow(prm.get("Mohr-Coulomb matching") == "plane strain" &&
                       prm.get_double("Dilatancy angle") ==
                         prm.get_double("Friction angle"),
@@ -201,8 +202,9 @@ namespace Footing
           reference.bearing_factor = 2. + numbers::PI;
         else
           {
-            const double Nq = std::exp(numbers::PI * std::tan(phi)) *
-                              std::pow(std::tan(numbers::PI / 4. + phi / 2.), 2);
+            const double Nq =
+              std::exp(numbers::PI * std::tan(phi)) *
+              std::pow(std::tan(numbers::PI / 4. + phi / 2.), 2);
             reference.bearing_factor = (Nq - 1.) / std::tan(phi);
           }
         reference.description = "Prandtl, c N_c(phi)";
@@ -322,8 +324,8 @@ namespace Footing
     problem.parameters().material_points.formulation.volumetric =
       parse_volumetric_treatment(treatment);
     // Point fields only of the reported run, at its start and end.
-    const bool reported = treatment == footing.treatments.front() &&
-                          cells == footing.cells.back();
+    const bool reported =
+      treatment == footing.treatments.front() && cells == footing.cells.back();
     problem.parameters().output.interval =
       (reported && footing.write_points) ? 1000000 : 0;
     problem.parameters().output.directory =
@@ -358,11 +360,11 @@ namespace Footing
       return static_cast<unsigned int>(std::round(n));
     };
     const unsigned int nx = n_cells(footing.width, "Domain width");
-    const unsigned int ny = n_cells(footing.depth, "Domain depth") +
-                            (footing.space_above > 0. ?
-                               n_cells(footing.space_above,
-                                       "Space above the surface") :
-                               0);
+    const unsigned int ny =
+      n_cells(footing.depth, "Domain depth") +
+      (footing.space_above > 0. ?
+         n_cells(footing.space_above, "Space above the surface") :
+         0);
     problem.grid().make_box(Point<dim>(),
                             Point<dim>(footing.width, ny * h),
                             {{nx, ny}});
@@ -378,9 +380,8 @@ namespace Footing
   {
     const auto  &mp      = problem.parameters().material_points;
     const double surface = footing.depth;
-    problem.points().fill([surface](const Point<dim> &x) {
-      return x[1] < surface;
-    },
+    problem.points().fill([surface](
+                            const Point<dim> &x) { return x[1] < surface; },
                           mp.points_per_direction,
                           mp.placement);
   }
@@ -473,8 +474,7 @@ namespace Footing
     for (const auto &particle : problem.points().get_particle_handler())
       if (particle.get_location()[0] > footing.half_width)
         top = std::max(top, particle.get_location()[1]);
-    result.heave =
-      Utilities::MPI::max(top, MPI_COMM_WORLD) - footing.depth;
+    result.heave = Utilities::MPI::max(top, MPI_COMM_WORLD) - footing.depth;
 
     result.steps      = problem.step_reports().size();
     result.newton_min = result.gmres_min = std::numeric_limits<unsigned>::max();
@@ -522,81 +522,122 @@ namespace Footing
 
 
 
-  // @sect3{Pictures}
+  // @sect3{The FootingStudy class}
   //
-  // gnuplot scripts next to the data, and the pictures if gnuplot is
-  // installed: the pressure-settlement curves of all runs with the exact
-  // limit pressure, and the plastic zone of the reported run.
-  void
-  write_plots(const std::string &directory,
-              const std::vector<StripFooting::Result> &results,
-              const Reference                         &reference,
-              const Parameters                        &footing)
+  // The program itself is a class, like step-44's Solid: the constructor
+  // reads the parameter file and the reference solution, run() does all
+  // runs of the study -- one StripFooting per locking treatment and grid --
+  // and writes their results, one method per stage.
+  class FootingStudy
   {
-    std::ofstream gp(directory + "/footing.gp");
-    gp << "set terminal pngcairo size 800,560 noenhanced\n"
-       << "set datafile separator ','\n"
-       << "set output '" << directory << "/pressure_settlement.png'\n"
-       << "set xlabel 'settlement / a'\nset ylabel 'mean pressure / c'\n"
-       << "set key bottom right\nset grid\n"
-       << "f = '" << directory << "/load_displacement.csv'\n"
-       << "plot ";
-    for (unsigned int r = 0; r < results.size(); ++r)
-      gp << "f using (strcol(1) eq '" << results[r].treatment
-         << "' && $2 == " << results[r].cells << " ? $3/"
-         << footing.half_width << " : 1/0):4 w l lw 2 t '"
-         << results[r].treatment << ", a/h = " << results[r].cells
-         << "', \\\n     ";
-    gp << reference.bearing_factor << " w l lc rgb 'black' dt 2 t '"
-       << reference.description << "'\n";
-    gp << "set output '" << directory << "/plastic_strain.png'\n"
-       << "set size ratio -1\nset xlabel 'x'\nset ylabel 'y'\n"
-       << "set cblabel 'equivalent plastic strain'\nunset key\n"
-       << "set palette rgbformulae 33,13,10\n"
-       << "plot '" << directory
-       << "/plastic_strain.csv' every ::1 using 1:2:3 with points pt 5 "
-          "ps 0.3 lc palette\n";
-    gp.close();
-    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
-        std::system(("gnuplot " + directory + "/footing.gp").c_str()) == 0)
-      std::cout << "wrote " << directory << "/pressure_settlement.png and "
-                << directory << "/plastic_strain.png" << std::endl;
-    else
-      std::cout << "wrote " << directory
-                << "/footing.gp (gnuplot not found: no pictures)" << std::endl;
+  public:
+    explicit FootingStudy(const std::string &parameter_file);
+
+    void
+    run();
+
+  private:
+    Reference
+    parse_parameters(const std::string &parameter_file);
+    void
+    run_all();
+    bool
+    is_reported(const std::string &treatment, const unsigned int cells) const;
+    void
+    write_curves() const;
+    void
+    write_summary() const;
+    void
+    write_plots() const;
+
+    // The parameter handler keeps the library's subsections, which every
+    // StripFooting reads again; the entries of "Footing" are bound to the
+    // members of footing (add_parameter()), which parsing the file fills.
+    // Both are declared before reference, which parse_parameters() makes.
+    ParameterHandler                  prm;
+    Parameters                        footing;
+    const Reference                   reference;
+    const bool                        root;
+    ConditionalOStream                pcout;
+    std::vector<StripFooting::Result> results;
+  };
+
+
+
+  // @sect4{FootingStudy::FootingStudy}
+  FootingStudy::FootingStudy(const std::string &parameter_file)
+    : reference(parse_parameters(parameter_file))
+    , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , pcout(std::cout, root)
+  {
+    if (root)
+      std::filesystem::create_directories(footing.directory);
   }
 
 
 
-  // @sect3{The study}
+  // @sect4{FootingStudy::parse_parameters}
   //
-  // All runs: every treatment on every grid, a line per run, the curves in
-  // load_displacement.csv, the reported run's limit pressure and its check
-  // against the reference in summary.txt.
-  void
-  run_study(const std::string &parameter_file)
+  // The library's subsections and our "Footing" in one ParameterHandler,
+  // so that a misspelt entry in any of them is reported with its name.
+  // "Dimension" is declared so that the file may hold it (the footing is
+  // always 2D). Returns Prandtl's limit pressure for the soil of the file.
+  Reference
+  FootingStudy::parse_parameters(const std::string &parameter_file)
   {
-    ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 2), "");
     QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
-    Parameters footing;
     footing.add_parameters(prm);
     prm.parse_input(parameter_file);
     AssertThrow(!footing.cells.empty() && !footing.treatments.empty(),
                 ExcMessage("Footing: give at least one grid and one "
                            "treatment."));
-    const Reference reference = prandtl_reference(prm);
+    return prandtl_reference(prm);
+  }
 
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    if (root)
-      std::filesystem::create_directories(footing.directory);
+
+
+  // @sect4{FootingStudy::run}
+  //
+  // All runs, a line per run, then on rank 0 the curves in
+  // load_displacement.csv, the reported run's limit pressure and its check
+  // against the reference in summary.txt, and the pictures.
+  void
+  FootingStudy::run()
+  {
     pcout << "Strip footing: c = " << reference.cohesion
           << ", exact limit pressure q_u / c = " << std::setprecision(6)
           << reference.bearing_factor << " (" << reference.description << ")"
           << std::endl;
+    run_all();
+    if (!root)
+      return;
+    write_curves();
+    write_summary();
+    write_plots();
+  }
 
-    std::vector<StripFooting::Result> results;
+
+
+  // @sect4{FootingStudy::is_reported}
+  //
+  // The reported run: the first treatment on the finest grid.
+  bool
+  FootingStudy::is_reported(const std::string &treatment,
+                            const unsigned int cells) const
+  {
+    return treatment == footing.treatments.front() &&
+           cells == footing.cells.back();
+  }
+
+
+
+  // @sect4{FootingStudy::run_all}
+  //
+  // Every treatment on every grid, a line per run.
+  void
+  FootingStudy::run_all()
+  {
     for (const auto &treatment : footing.treatments)
       for (const unsigned int cells : footing.cells)
         {
@@ -605,28 +646,31 @@ namespace Footing
           const auto &r = results.back();
           pcout << std::setw(6) << treatment << "  a/h " << std::setw(3)
                 << cells << "  q/c " << std::fixed << std::setprecision(4)
-                << r.limit_pressure_over_c << "  error "
-                << std::showpos << std::setprecision(2)
-                << 100. * (r.limit_pressure_over_c / reference.bearing_factor - 1.)
-                << std::noshowpos << " %  last 10% of settlement: "
-                << 100. * r.plateau_change << " %  heave/a "
-                << std::setprecision(3) << r.heave / footing.half_width
-                << std::defaultfloat << "  steps " << r.steps << "  newton "
-                << r.newton_min << "-" << r.newton_max << "  gmres/step "
-                << r.gmres_min << "-" << r.gmres_max << "  " << std::fixed
-                << std::setprecision(1) << r.wall_time << " s"
-                << std::defaultfloat << std::endl;
-          // The reported run: the first treatment on the finest grid.
-          if (treatment == footing.treatments.front() &&
-              cells == footing.cells.back())
-            {
-              run.write_plastic_strain(footing.directory +
-                                       "/plastic_strain.csv");
-            }
+                << r.limit_pressure_over_c << "  error " << std::showpos
+                << std::setprecision(2)
+                << 100. *
+                     (r.limit_pressure_over_c / reference.bearing_factor - 1.)
+                << std::noshowpos
+                << " %  last 10% of settlement: " << 100. * r.plateau_change
+                << " %  heave/a " << std::setprecision(3)
+                << r.heave / footing.half_width << std::defaultfloat
+                << "  steps " << r.steps << "  newton " << r.newton_min << "-"
+                << r.newton_max << "  gmres/step " << r.gmres_min << "-"
+                << r.gmres_max << "  " << std::fixed << std::setprecision(1)
+                << r.wall_time << " s" << std::defaultfloat << std::endl;
+          if (is_reported(treatment, cells))
+            run.write_plastic_strain(footing.directory + "/plastic_strain.csv");
         }
+  }
 
-    if (!root)
-      return;
+
+
+  // @sect4{FootingStudy::write_curves}
+  //
+  // The pressure-settlement curves of all runs in one CSV file.
+  void
+  FootingStudy::write_curves() const
+  {
     std::ofstream csv(footing.directory + "/load_displacement.csv");
     csv << "treatment,cells_per_half_width,settlement,pressure_over_c\n"
         << std::setprecision(8);
@@ -634,13 +678,23 @@ namespace Footing
       for (const auto &[s, q] : r.curve)
         csv << r.treatment << ',' << r.cells << ',' << s << ','
             << q / reference.cohesion << '\n';
-    csv.close();
+  }
 
-    const auto &reported = *std::find_if(
-      results.begin(), results.end(), [&](const StripFooting::Result &r) {
-        return r.treatment == footing.treatments.front() &&
-               r.cells == footing.cells.back();
-      });
+
+
+  // @sect4{FootingStudy::write_summary}
+  //
+  // The reported run's limit pressure and its check against the reference,
+  // in summary.txt and on the screen.
+  void
+  FootingStudy::write_summary() const
+  {
+    const auto &reported =
+      *std::find_if(results.begin(),
+                    results.end(),
+                    [&](const StripFooting::Result &r) {
+                      return is_reported(r.treatment, r.cells);
+                    });
     const double error =
       reported.limit_pressure_over_c / reference.bearing_factor - 1.;
     std::ofstream summary(footing.directory + "/summary.txt");
@@ -648,8 +702,7 @@ namespace Footing
             << "limit_pressure_over_c = " << reported.limit_pressure_over_c
             << "\nexact_over_c = " << reference.bearing_factor
             << "\nrelative_error = " << error
-            << "\ntolerance = " << footing.tolerance
-            << "\ncheck = "
+            << "\ntolerance = " << footing.tolerance << "\ncheck = "
             << (!footing.check ? "not applicable (large deformation)" :
                 std::abs(error) <= footing.tolerance ? "PASS" :
                                                        "FAIL")
@@ -672,7 +725,49 @@ namespace Footing
                 << (std::abs(error) <= footing.tolerance ? "within" : "OUTSIDE")
                 << " the tolerance " << 100. * footing.tolerance << " %";
     std::cout << ")" << std::endl;
-    write_plots(footing.directory, results, reference, footing);
+  }
+
+
+
+  // @sect4{FootingStudy::write_plots}
+  //
+  // gnuplot scripts next to the data, and the pictures if gnuplot is
+  // installed: the pressure-settlement curves of all runs with the exact
+  // limit pressure, and the plastic zone of the reported run.
+  void
+  FootingStudy::write_plots() const
+  {
+    const std::string &directory = footing.directory;
+    std::ofstream      gp(directory + "/footing.gp");
+    gp << "set terminal pngcairo size 800,560 noenhanced\n"
+       << "set datafile separator ','\n"
+       << "set output '" << directory << "/pressure_settlement.png'\n"
+       << "set xlabel 'settlement / a'\nset ylabel 'mean pressure / c'\n"
+       << "set key bottom right\nset grid\n"
+       << "f = '" << directory << "/load_displacement.csv'\n"
+       << "plot ";
+    for (unsigned int r = 0; r < results.size(); ++r)
+      gp << "f using (strcol(1) eq '" << results[r].treatment
+         << "' && $2 == " << results[r].cells << " ? $3/" << footing.half_width
+         << " : 1/0):4 w l lw 2 t '" << results[r].treatment
+         << ", a/h = " << results[r].cells << "', \\\n     ";
+    gp << reference.bearing_factor << " w l lc rgb 'black' dt 2 t '"
+       << reference.description << "'\n";
+    gp << "set output '" << directory << "/plastic_strain.png'\n"
+       << "set size ratio -1\nset xlabel 'x'\nset ylabel 'y'\n"
+       << "set cblabel 'equivalent plastic strain'\nunset key\n"
+       << "set palette rgbformulae 33,13,10\n"
+       << "plot '" << directory
+       << "/plastic_strain.csv' every ::1 using 1:2:3 with points pt 5 "
+          "ps 0.3 lc palette\n";
+    gp.close();
+    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
+        std::system(("gnuplot " + directory + "/footing.gp").c_str()) == 0)
+      std::cout << "wrote " << directory << "/pressure_settlement.png and "
+                << directory << "/plastic_strain.png" << std::endl;
+    else
+      std::cout << "wrote " << directory
+                << "/footing.gp (gnuplot not found: no pictures)" << std::endl;
   }
 } // namespace Footing
 
@@ -682,27 +777,43 @@ namespace Footing
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       const std::string parameter_file =
-        argc > 1 ? std::string(argv[1]) :
-                   (std::filesystem::path(argv[0]).parent_path() / "footing.prm")
-                     .string();
+        argc > 1 ?
+          std::string(argv[1]) :
+          (std::filesystem::path(argv[0]).parent_path() / "footing.prm")
+            .string();
       AssertThrow(std::filesystem::exists(parameter_file),
                   dealii::ExcMessage("Cannot find the parameter file <" +
                                      parameter_file + ">."));
-      Footing::run_study(parameter_file);
+      Footing::FootingStudy study(parameter_file);
+      study.run();
     }
   catch (std::exception &exc)
     {
-      std::cerr << "footing stopped: " << qsmpm::Utils::error_message(exc)
-                << std::endl;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("footing stopped: footing stopped: ...").
+      if (rank == 0)
+        std::cerr << "footing stopped: " + qsmpm::Utils::error_message(exc) +
+                       "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "footing stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "footing stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

@@ -36,6 +36,7 @@
 #include <memory>
 #include <numeric>
 #include <qsmpm/base/parameter_file.h>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/base/rotation.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/homogenization/columnar_voronoi.h>
@@ -62,121 +63,127 @@ namespace Polycrystal
   // come from the library's subsection "Material/cubic elastic" and the
   // solver settings from "Nonlinear solver", so that the same entries mean
   // the same thing in every qsmpm program.
-  struct Parameters
+  //
+  // The struct is a parameter struct in the manner of the library's
+  // (ParameterStruct, deal.II's step-68): each member's initializer is its
+  // default, add_parameters() declares the entry bound to it with
+  // ParameterHandler::add_parameter() -- name, default and documentation
+  // written once -- and check() tests what a single entry's pattern cannot.
+  // ParameterStruct adds declare_parameters() (the entries with their
+  // defaults) and parse_parameters() (the values of a parsed file into an
+  // object, then check()).
+  struct Parameters : ParameterStruct<Parameters>
   {
-    double                   side_length;
-    unsigned int             n_grains;
-    unsigned int             grain_seed;
-    bool                     periodic_grains;
-    unsigned int             cells_in_plane;
-    unsigned int             cells_through_thickness;
-    unsigned int             points_per_direction;
-    std::string              odf_file;
-    unsigned int             n_elementary_volumes;
-    double                   threshold_degrees;
-    unsigned int             texture_seed;
-    std::vector<std::string> boundary_conditions;
-    double                   strain;
-    unsigned int             n_load_steps;
-    unsigned int             n_realizations;
-    std::string              output_directory;
+    double                   side_length             = 1.0;
+    unsigned int             n_grains                = 1000;
+    unsigned int             grain_seed              = 1;
+    bool                     periodic_grains         = false;
+    unsigned int             cells_in_plane          = 96;
+    unsigned int             cells_through_thickness = 4;
+    unsigned int             points_per_direction    = 2;
+    std::string              odf_file = "odf/electrodeposited_ni.txt";
+    unsigned int             n_elementary_volumes = 50000;
+    double                   threshold_degrees    = 7;
+    unsigned int             texture_seed         = 1;
+    std::vector<std::string> boundary_conditions  = {"mixed"};
+    double                   strain               = 0.004;
+    unsigned int             n_load_steps         = 2;
+    unsigned int             n_realizations       = 1;
+    std::string              output_directory     = "polycrystal-output";
 
-    static void
-    declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+    add_parameters(ParameterHandler &prm);
+    void
+    check() const;
   };
 
 
 
   void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  Parameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Polycrystal");
     {
-      prm.declare_entry("Side length",
-                        "1.0",
-                        Patterns::Double(0.),
+      prm.add_parameter("Side length",
+                        side_length,
                         "L: edge of the cubic sample (the paper's 1 micron; "
-                        "the stiffness does not depend on it).");
-      prm.declare_entry("Number of grains",
-                        "1000",
-                        Patterns::Integer(1),
+                        "the stiffness does not depend on it).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Number of grains",
+                        n_grains,
                         "Voronoi generating points in the film plane (x, y); "
-                        "grains are columns through the thickness z.");
-      prm.declare_entry("Grain seed",
-                        "1",
-                        Patterns::Integer(0),
+                        "grains are columns through the thickness z.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Grain seed",
+                        grain_seed,
                         "Seed of the generating points (realization r uses "
-                        "seed + r).");
-      prm.declare_entry("Periodic grains",
-                        "false",
-                        Patterns::Bool(),
+                        "seed + r).",
+                        Patterns::Integer(0));
+      prm.add_parameter("Periodic grains",
+                        periodic_grains,
                         "Periodic tessellation of the film plane (grains cut "
                         "by one face continue on the opposite face).");
-      prm.declare_entry("Cells in plane",
-                        "96",
-                        Patterns::Integer(1),
-                        "Background grid cells along x and along y.");
-      prm.declare_entry("Cells through thickness",
-                        "4",
-                        Patterns::Integer(1),
+      prm.add_parameter("Cells in plane",
+                        cells_in_plane,
+                        "Background grid cells along x and along y.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Cells through thickness",
+                        cells_through_thickness,
                         "Background grid cells along z. The grains are "
-                        "columns, so z may be coarser than the plane.");
-      prm.declare_entry("Points per cell per direction",
-                        "2",
-                        Patterns::Integer(1, 6),
+                        "columns, so z may be coarser than the plane.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Points per cell per direction",
+                        points_per_direction,
                         "Regularly placed material points per cell and "
-                        "direction.");
-      prm.declare_entry("ODF file",
-                        "odf/electrodeposited_ni.txt",
-                        Patterns::Anything(),
+                        "direction.",
+                        Patterns::Integer(1, 6));
+      prm.add_parameter("ODF file",
+                        odf_file,
                         "Orientation distribution on the 5 degree Bunge grid "
                         "(format: see OrientationDistribution); relative to "
                         "the directory of the parameter file.");
-      prm.declare_entry("Elementary volumes",
-                        "50000",
-                        Patterns::Integer(1),
-                        "N_u of the texture discretization (paper Sec. 4.3).");
-      prm.declare_entry("Disorientation threshold",
-                        "7",
-                        Patterns::Double(0., 62.8),
+      prm.add_parameter("Elementary volumes",
+                        n_elementary_volumes,
+                        "N_u of the texture discretization (paper Sec. 4.3).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Disorientation threshold",
+                        threshold_degrees,
                         "Degrees; the orientations averaged into one grain "
-                        "lie within this disorientation of a seed.");
-      prm.declare_entry("Texture seed",
-                        "1",
-                        Patterns::Integer(0),
+                        "lie within this disorientation of a seed.",
+                        Patterns::Double(0., 62.8));
+      prm.add_parameter("Texture seed",
+                        texture_seed,
                         "Seed of the texture sampling (realization r uses "
-                        "seed + r).");
-      prm.declare_entry("Boundary conditions",
-                        "mixed",
-                        Patterns::List(
-                          Patterns::Selection("mixed|affine|periodic")),
+                        "seed + r).",
+                        Patterns::Integer(0));
+      prm.add_parameter("Boundary conditions",
+                        boundary_conditions,
                         "mixed: the paper's tests (four confined faces free "
                         "to slide, two loaded faces); affine: the "
                         "macroscopic displacement on all faces; periodic: "
                         "periodic fluctuations about the macroscopic "
                         "displacement (meant for <Periodic grains> = true). "
                         "A list runs all of them on the first realization; "
-                        "the first gives effective_stiffness.csv.");
-      prm.declare_entry("Strain",
-                        "0.004",
-                        Patterns::Double(0.),
+                        "the first gives effective_stiffness.csv.",
+                        Patterns::List(
+                          Patterns::Selection("mixed|affine|periodic")));
+      prm.add_parameter("Strain",
+                        strain,
                         "Macroscopic strain of each test (the paper's "
-                        "faces move by 0.002 L each: 0.004).");
-      prm.declare_entry("Load steps",
-                        "2",
-                        Patterns::Integer(1),
-                        "Load steps per test.");
-      prm.declare_entry("Number of realizations",
-                        "1",
-                        Patterns::Integer(1),
+                        "faces move by 0.002 L each: 0.004).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Load steps",
+                        n_load_steps,
+                        "Load steps per test.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Number of realizations",
+                        n_realizations,
                         "M samples with seeds (grain seed + r, texture seed "
                         "+ r); M > 1 gives the mean, standard deviation and "
-                        "histogram of the in-plane modulus.");
-      prm.declare_entry("Output directory",
-                        "polycrystal-output",
-                        Patterns::Anything(),
+                        "histogram of the in-plane modulus.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Output directory",
+                        output_directory,
                         "Where results go (relative to the working "
                         "directory).");
     }
@@ -185,32 +192,11 @@ namespace Polycrystal
 
 
 
+  // What the patterns of single entries cannot check. ParameterStruct's
+  // parse_parameters() calls it after reading the entries.
   void
-  Parameters::parse_parameters(ParameterHandler  &prm,
-                               const std::string &prm_directory)
+  Parameters::check() const
   {
-    prm.enter_subsection("Polycrystal");
-    {
-      side_length             = prm.get_double("Side length");
-      n_grains                = prm.get_integer("Number of grains");
-      grain_seed              = prm.get_integer("Grain seed");
-      periodic_grains         = prm.get_bool("Periodic grains");
-      cells_in_plane          = prm.get_integer("Cells in plane");
-      cells_through_thickness = prm.get_integer("Cells through thickness");
-      points_per_direction = prm.get_integer("Points per cell per direction");
-      odf_file             = prm.get("ODF file");
-      if (!odf_file.empty() && std::filesystem::path(odf_file).is_relative())
-        odf_file = (std::filesystem::path(prm_directory) / odf_file).string();
-      n_elementary_volumes = prm.get_integer("Elementary volumes");
-      threshold_degrees    = prm.get_double("Disorientation threshold");
-      texture_seed         = prm.get_integer("Texture seed");
-      boundary_conditions  = Utils::split(prm.get("Boundary conditions"), ',');
-      strain               = prm.get_double("Strain");
-      n_load_steps         = prm.get_integer("Load steps");
-      n_realizations       = prm.get_integer("Number of realizations");
-      output_directory     = prm.get("Output directory");
-    }
-    prm.leave_subsection();
     AssertThrow(!boundary_conditions.empty(),
                 ExcMessage("Polycrystal: <Boundary conditions> is empty."));
     AssertThrow(side_length > 0,
@@ -531,8 +517,13 @@ namespace Polycrystal
     prm.parse_input(parameter_file);
 
     Parameters parameters;
-    parameters.parse_parameters(
-      prm, std::filesystem::path(parameter_file).parent_path().string());
+    parameters.parse_parameters(prm);
+    if (!parameters.odf_file.empty() &&
+        std::filesystem::path(parameters.odf_file).is_relative())
+      parameters.odf_file =
+        (std::filesystem::path(parameter_file).parent_path() /
+         parameters.odf_file)
+          .string();
     solver.parse_parameters(prm);
     return parameters;
   }
@@ -986,9 +977,14 @@ namespace Polycrystal
 int
 main(int argc, char *argv[])
 {
+  // The rank of this process, for the catch blocks below: by the time they
+  // run, the MPI_InitFinalize object of the try block is gone, and MPI with
+  // it.
+  unsigned int rank = 0;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       if (argc > 1 && std::string(argv[1]) == "--make-odfs")
         {
           AssertThrow(argc > 2,
@@ -1010,19 +1006,22 @@ main(int argc, char *argv[])
     }
   catch (std::exception &exc)
     {
-      // One line that names the cause (the entry, the file), as in the
-      // other qsmpm programs: what() would add deal.II's banner with file,
-      // line and the violated condition, which is of no use to a user.
-      // Written at once, so that the lines of several MPI ranks do not
-      // interleave.
-      std::cerr << "polycrystal stopped: " + qsmpm::Utils::error_message(exc) +
-                     "\n"
-                << std::flush;
+      // The errors of qsmpm are collective: every rank reads the same
+      // parameter file and checks the same values, and a load step that
+      // fails, fails on every rank with the same message (the library
+      // broadcasts it). So one rank, rank 0, prints it, as one line
+      // written at once: lines written piece by piece by several ranks
+      // interleave ("polycrystal stopped: polycrystal stopped: ...").
+      if (rank == 0)
+        std::cerr << "polycrystal stopped: " +
+                       qsmpm::Utils::error_message(exc) + "\n"
+                  << std::flush;
       return 1;
     }
   catch (...)
     {
-      std::cerr << "polycrystal stopped: unknown exception" << std::endl;
+      if (rank == 0)
+        std::cerr << "polycrystal stopped: unknown exception" << std::endl;
       return 1;
     }
   return 0;

@@ -122,22 +122,111 @@ namespace qsmpm
       const auto end = text.find("Stacktrace:");
       if (end != std::string::npos)
         text = text.substr(0, end);
-      // Drop separator lines of dashes, fold white space.
+      // Drop separator lines of dashes.
       for (auto dashes = text.find("---"); dashes != std::string::npos;
            dashes      = text.find("---"))
         text.erase(dashes, text.find_first_not_of('-', dashes) - dashes);
-      std::string result;
+
+      // The message may quote the text of a file: ParameterHandler quotes
+      // a line it cannot parse, or the value or name of an entry, and a
+      // binary file would send its bytes to the terminal. What the user
+      // sees is a printable excerpt on one line: white space folded into
+      // single blanks, every byte that is neither printable ASCII nor part
+      // of a printable UTF-8 character (code point U+00A0 or higher; the
+      // C1 controls U+0080-U+009F are terminal commands) replaced by '?',
+      // each quotation <...> longer than 80 characters cut to its start
+      // and end, and a message still longer than 600 characters (a quoted
+      // line may itself hold '<' and '>') to its first 330 and last 220
+      // characters, which keep where the error is and what it is.
+      std::string printable;
       bool        space = false;
-      for (const char c : text)
-        if (std::isspace(static_cast<unsigned char>(c)))
-          space = !result.empty();
-        else
-          {
-            if (space)
-              result += ' ';
-            result += c;
-            space = false;
-          }
+      for (std::size_t i = 0; i < text.size();)
+        {
+          const unsigned char c = text[i];
+          if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+              c == '\f')
+            {
+              space = !printable.empty();
+              ++i;
+              continue;
+            }
+          if (space)
+            printable += ' ';
+          space = false;
+          if (c >= 0x21 && c < 0x7f)
+            {
+              printable += static_cast<char>(c);
+              ++i;
+              continue;
+            }
+          // A UTF-8 sequence: the length from its first byte, then the
+          // continuation bytes and the code point (shortest form only).
+          const std::size_t length = (c >= 0xc2 && c <= 0xdf) ? 2 :
+                                     (c >= 0xe0 && c <= 0xef) ? 3 :
+                                     (c >= 0xf0 && c <= 0xf4) ? 4 :
+                                                                0;
+          unsigned long     code   = length == 2 ? (c & 0x1f) :
+                                     length == 3 ? (c & 0x0f) :
+                                                   (c & 0x07);
+          bool              valid  = length > 0 && i + length <= text.size();
+          for (std::size_t k = 1; valid && k < length; ++k)
+            {
+              const unsigned char next = text[i + k];
+              valid                    = (next & 0xc0) == 0x80;
+              code                     = (code << 6) | (next & 0x3f);
+            }
+          valid = valid && code >= 0xa0 && (length < 3 || code >= 0x800) &&
+                  (code < 0xd800 || code > 0xdfff) &&
+                  (length < 4 || (code >= 0x10000 && code <= 0x10ffff));
+          if (valid)
+            {
+              printable += text.substr(i, length);
+              i += length;
+            }
+          else
+            {
+              printable += '?';
+              ++i;
+            }
+        }
+
+      // Long quotations: the first 50 and the last 25 characters (bytes;
+      // a cut is moved off UTF-8 continuation bytes).
+      const auto boundary = [](const std::string &s, std::size_t i) {
+        while (i < s.size() &&
+               (static_cast<unsigned char>(s[i]) & 0xc0) == 0x80)
+          ++i;
+        return i;
+      };
+      std::string result;
+      for (std::size_t i = 0; i < printable.size();)
+        {
+          const std::size_t open  = printable.find('<', i);
+          const std::size_t close = open == std::string::npos ?
+                                      std::string::npos :
+                                      printable.find('>', open + 1);
+          if (close == std::string::npos)
+            {
+              result += printable.substr(i);
+              break;
+            }
+          result += printable.substr(i, open + 1 - i);
+          const std::string quote =
+            printable.substr(open + 1, close - open - 1);
+          if (quote.size() > 80)
+            {
+              const std::size_t head = boundary(quote, 50),
+                                tail = boundary(quote, quote.size() - 25);
+              result += quote.substr(0, head) + " ... " + quote.substr(tail);
+            }
+          else
+            result += quote;
+          result += '>';
+          i = close + 1;
+        }
+      if (result.size() > 600)
+        result = result.substr(0, boundary(result, 330)) + " ... " +
+                 result.substr(boundary(result, result.size() - 220));
       return result;
     }
 

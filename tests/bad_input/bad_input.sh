@@ -5,18 +5,20 @@
 #
 #  - exit with a non-zero code, by itself (not by a signal: code < 128, and
 #    not killed by the time limit),
-#  - print exactly one distinct line "<program> stopped: <message>" to
-#    stderr, and that message must contain a keyword chosen here: the entry,
-#    the subsection or the file that is wrong (not deal.II's wording, which
+#  - print exactly one line "<program> stopped: <message>" to stderr, and
+#    that message must contain a keyword chosen here: the entry, the
+#    subsection or the file that is wrong (not deal.II's wording, which
 #    changes between releases),
+#  - keep that line printable and short: printable ASCII only (a binary file
+#    must not send its bytes to the terminal), at most 700 characters,
 #  - print no stack trace, deal.II exception banner or signal report,
 #  - write nothing as converged: no reactions.csv or steps.csv with data
 #    rows, and none of the files a finished run writes (summary.txt,
 #    load_displacement.csv, effective_stiffness.csv, realizations.csv).
 #
-# On two MPI ranks every rank that sees the error prints the same line (the
-# errors are collective: all ranks read the same file and check the same
-# values), so identical duplicates count as one line.
+# On two MPI ranks the line is printed once as well: the errors are
+# collective (all ranks read the same file and check the same values, and a
+# failed step fails on all ranks), and rank 0 alone prints them.
 #
 #   bad_input.sh <qsmpm> <compact_tension> <polycrystal> <source dir>
 #
@@ -61,10 +63,14 @@ run_case()
   [ $status -eq 124 ] && why="$why time limit;"
   [ $status -ge 128 ] && why="$why signal (exit code $status);"
   local stopped
-  stopped=$(grep "stopped:" stderr.txt | sort -u)
+  stopped=$(grep -a "stopped:" stderr.txt)
   local n_lines
-  n_lines=$(printf '%s' "$stopped" | grep -c "stopped:")
-  [ "$n_lines" -ne 1 ] && why="$why $n_lines distinct 'stopped:' lines;"
+  n_lines=$(printf '%s' "$stopped" | grep -ac "stopped:")
+  [ "$n_lines" -ne 1 ] && why="$why $n_lines 'stopped:' lines;"
+  printf '%s' "$stopped" | LC_ALL=C grep -aq '[^ -~]' &&
+    why="$why bytes other than printable ASCII in the message;"
+  [ "$(printf '%s' "$stopped" | wc -c)" -gt 700 ] &&
+    why="$why message longer than 700 characters;"
   printf '%s' "$stopped" | grep -qF -- "$keyword" ||
     why="$why message does not name <$keyword>;"
   # deal.II's exception banner, a signal, and (in a -DQSMPM_SANITIZE=ON
@@ -196,6 +202,14 @@ run_case binary_garbage "problem.prm" 1 "$qsmpm" problem.prm
 mkdir -p "$work/binary_garbage_2_ranks"
 cp "$work/binary_garbage/problem.prm" "$work/binary_garbage_2_ranks/"
 run_case binary_garbage_2_ranks "problem.prm" 2 "$qsmpm" problem.prm
+# A valid line, then a line of some 4000 binary bytes (no comment sign '#',
+# no continuation '\\'): the message quotes a printable excerpt of it.
+mkdir -p "$work/binary_long_line"
+{ echo 'set Dimension = 2'
+  awk 'BEGIN { for (r = 0; r < 16; ++r) for (i = 1; i < 256; ++i)
+               if (i != 10 && i != 35 && i != 92) printf "%c", i }'
+} > "$work/binary_long_line/problem.prm"
+run_case binary_long_line "problem.prm" 1 "$qsmpm" problem.prm
 # Geometry that contradicts itself.
 driver_case geometry_inverted_box "Upper corner" 1 \
   $'subsection Geometry\n set Upper corner = -1,1\nend'
