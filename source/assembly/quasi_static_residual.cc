@@ -171,20 +171,10 @@ namespace qsmpm
 
 
   template <int dim>
-  unsigned long
-  QuasiStaticResidual<dim>::n_evaluations() const
-  {
-    return evaluation_count;
-  }
-
-
-
-  template <int dim>
   void
   QuasiStaticResidual<dim>::evaluate(const TrilinosWrappers::MPI::Vector &du,
                                      TrilinosWrappers::MPI::Vector &R) const
   {
-    ++evaluation_count;
     update_packed_state();
     if (same_layout)
       {
@@ -259,9 +249,8 @@ namespace qsmpm
     // in the packed copy, or their property arrays are), then the forces.
     // Each phase is then a loop over independent cells or points that the
     // processor can overlap, where one cell at a time left it waiting for
-    // the results of short dependent chains (2D block of 262,144 points:
-    // 2.8 -> 2.5-2.7 ms per residual; blocks of 4, 16 or 32 cells were
-    // slower, doc/benchmarks.md).
+    // the results of short dependent chains (blocks of 8 cells were the
+    // fastest; the figures are in doc/benchmarks.md).
     constexpr unsigned int block_cells            = 8;
     const bool             symmetric_small_strain = !finite_strain && !fbar;
     double                 du_cell[max_dofs];

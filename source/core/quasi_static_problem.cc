@@ -61,11 +61,19 @@ namespace qsmpm
     , background_grid(communicator)
     , displacement_constraints(bcs)
     , external_force(bcs)
+  {}
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::return_large_blocks_to_system()
   {
     // Until the degrees of freedom are known (setup_step_data()), every
     // block of 128 KiB or more comes from mmap: the grid and the points are
     // made once, and the blocks that the particle storage outgrows while it
     // is filled go back to the system instead of fragmenting the heap.
+    manage_heap = true;
     Utils::return_large_blocks_to_system(0);
   }
 
@@ -201,7 +209,8 @@ namespace qsmpm
                                "not supported (the affine jump is not added "
                                "to nodes reached across periodic faces); use "
                                "Shape functions = linear."));
-        // Blocks of more than one and a half vectors of the grid's dofs
+        // If the program asked for it (return_large_blocks_to_system()):
+        // blocks of more than one and a half vectors of the grid's dofs
         // (the points' data, the shape-function cache, the stiffness, ML's
         // temporaries) come from mmap and go back to the system when freed;
         // vectors, which the Krylov solver and ML allocate in every
@@ -209,9 +218,10 @@ namespace qsmpm
         // Utils::return_large_blocks_to_system()). Per-point arrays of 8
         // bytes or more per point are already larger than that with 2^dim
         // points per cell.
-        Utils::return_large_blocks_to_system(
-          3 * sizeof(double) *
-          background_grid.locally_relevant_dofs().n_elements() / 2);
+        if (manage_heap)
+          Utils::return_large_blocks_to_system(
+            3 * sizeof(double) *
+            background_grid.locally_relevant_dofs().n_elements() / 2);
         residual = std::make_unique<QuasiStaticResidual<dim>>(
           background_grid,
           points(),
@@ -680,9 +690,7 @@ namespace qsmpm
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the
-    // next step (fresh pages cost a page fault each). Measured on the
-    // strip benchmark (256 x 256 cells, reuse 5, 5 steps): commit and move
-    // points 0.29 -> 0.08 s, shape functions 0.22 -> 0.16 s.
+    // next step (fresh pages cost a page fault each).
     if (points().locate_in_cells())
       {
         points_consistent = true;
@@ -691,8 +699,7 @@ namespace qsmpm
     // Sorting moves the points' data in memory. Releasing the cache first
     // keeps it from adding to the copy of all particle data that deal.II
     // makes while sorting, the peak of a step that reuses an earlier
-    // preconditioner (measured on the strip benchmark, 256 x 256 cells:
-    // 463 -> 440 MB).
+    // preconditioner.
     cache.clear();
     const auto lost = points().sort_into_cells();
     // In parallel, deal.II finds a point's new cell only among the

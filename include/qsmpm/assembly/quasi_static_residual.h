@@ -114,10 +114,6 @@ namespace qsmpm
     double
     typical_increment_norm() const;
 
-    /// The number of residual evaluations since construction.
-    unsigned long
-    n_evaluations() const;
-
     /**
      * The smallest J = det F (finite strain) or J = (1 + tr d eps) J_old
      * (small strain) of this rank's points at the increment of the last
@@ -325,10 +321,9 @@ namespace qsmpm
     std::unique_ptr<Epetra_Export> exporter;
     /// Whether the ghosted layout is the owned one (one rank): evaluate()
     /// then needs neither.
-    bool                  same_layout      = false;
-    mutable unsigned long evaluation_count = 0;
-    mutable double        min_volume_ratio = 0.;
-    mutable double        dissipated       = 0.;
+    bool           same_layout      = false;
+    mutable double min_volume_ratio = 0.;
+    mutable double dissipated       = 0.;
   };
 } // namespace qsmpm
 

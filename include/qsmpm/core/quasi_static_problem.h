@@ -87,6 +87,23 @@ namespace qsmpm
     ~QuasiStaticProblem();
 
     /**
+     * Opt in to the memory policy of qsmpm's programs (the driver, the
+     * examples and the benchmarks call it right after construction). It
+     * changes the C library's allocator for the whole process, which is
+     * why the library does not do it by itself: from now on every block
+     * of 128 KiB or more comes from mmap and goes back to the system when
+     * freed, and once the degrees of freedom are known (the first load
+     * step) only blocks of more than one and a half vectors of the grid's
+     * dofs do, while the vectors that the Krylov solver and the
+     * preconditioner allocate in every iteration stay on the heap. Without
+     * it the large temporaries of an AMG set-up and of the sorting of the
+     * points stay resident for the rest of the run (see
+     * Utils::return_large_blocks_to_system()).
+     */
+    void
+    return_large_blocks_to_system();
+
+    /**
      * Set up everything from a parsed ParameterHandler (declared with
      * Parameters::declare_parameters): grid, model, points, loads.
      */
@@ -315,6 +332,8 @@ namespace qsmpm
     /// EquilibriumAudit::evaluate()).
     double load_scale = 0.;
     bool   lost_load_warned = false;
+    /// Whether return_large_blocks_to_system() was called.
+    bool manage_heap = false;
     /// The degrees of freedom of the step held for lack of material or
     /// stiffness.
     IndexSet held_dofs;
