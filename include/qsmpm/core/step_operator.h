@@ -3,9 +3,12 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <iomanip>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/step_constraints.h>
+#include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
+#include <sstream>
 
 namespace qsmpm
 {
@@ -20,6 +23,8 @@ namespace qsmpm
   {
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
+    /// What a residual evaluation found on this rank's points.
+    using Evaluation = typename QuasiStaticResidual<dim>::Evaluation;
 
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
@@ -31,12 +36,14 @@ namespace qsmpm
     }
 
     /// R(du) = f_ext - f_int(du) (QuasiStaticResidual), with coupled rows
-    /// added to their masters.
-    void
+    /// added to their masters; returns what the evaluation found on this
+    /// rank's points.
+    Evaluation
     residual(const VectorType &du, VectorType &R) const
     {
-      residual_evaluator.evaluate(du, R);
+      const Evaluation evaluation = residual_evaluator.evaluate(du, R);
       constraints.condense(R);
+      return evaluation;
     }
 
     /// Zero the rows without an equation of a residual-like vector.
@@ -66,14 +73,41 @@ namespace qsmpm
     }
 
     /**
-     * The energy all points dissipate in the trial state of the last
-     * residual() (summed over the ranks), for path following.
+     * The energy all points dissipate in the trial state of the residual()
+     * that returned @p evaluation (summed over the ranks), for path
+     * following.
      */
     double
-    dissipation() const
+    dissipation(const Evaluation &evaluation) const
     {
-      return dealii::Utilities::MPI::sum(residual_evaluator.dissipation(),
+      return dealii::Utilities::MPI::sum(evaluation.dissipation,
                                          constraints.get_communicator());
+    }
+
+    /**
+     * Reject a converged step whose solution, the state of the residual()
+     * that returned @p evaluation, turned a point inside out: at small
+     * strain J = (1 + tr d eps) J_old can pass zero while the residual
+     * stays finite. Such a step fails (and is cut back) like one that did
+     * not converge.
+     */
+    void
+    reject_inverted_points(const Evaluation &evaluation,
+                           NewtonReport     &report) const
+    {
+      if (!report.converged)
+        return;
+      const double min_J =
+        dealii::Utilities::MPI::min(evaluation.minimum_volume_ratio,
+                                    constraints.get_communicator());
+      if (!(min_J > 0.))
+        {
+          std::ostringstream message;
+          message << "a material point was turned inside out (J = "
+                  << std::setprecision(3) << min_J << " <= 0)";
+          report.converged = false;
+          report.failure   = message.str();
+        }
     }
 
     void
