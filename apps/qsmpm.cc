@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/base/version.h>
 #include <qsmpm/core/quasi_static_problem.h>
@@ -72,30 +73,11 @@ namespace
     declare<dim>(prm);
     prm.parse_input(filename);
     qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+    problem.return_large_blocks_to_system();
     problem.initialize(prm);
     if (resume)
       problem.resume();
     problem.run();
-  }
-
-  /**
-   * The inverse of the name mangling of ParameterHandler's XML output,
-   * which writes every character other than [a-zA-Z0-9] as _xx (hex).
-   */
-  std::string
-  demangle(const std::string &name)
-  {
-    std::string result;
-    for (std::size_t i = 0; i < name.size(); ++i)
-      if (name[i] == '_' && i + 2 < name.size())
-        {
-          result.push_back(
-            static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16)));
-          i += 2;
-        }
-      else
-        result.push_back(name[i]);
-    return result;
   }
 
   /**
@@ -142,7 +124,7 @@ namespace
               heading = true;
             }
           const auto value = child.get<std::string>("default_value");
-          out << "- **" << markdown_text(demangle(key))
+          out << "- **" << markdown_text(qsmpm::Utils::demangle(key))
               << "** = " << (value.empty() ? "*(empty)*" : "`" + value + "`")
               << "  \n"
               << "  *"
@@ -156,7 +138,8 @@ namespace
     for (const auto &[key, child] : node)
       if (!child.get_child_optional("value"))
         write_markdown(child,
-                       (path.empty() ? "" : path + "/") + demangle(key),
+                       (path.empty() ? "" : path + "/") +
+                         qsmpm::Utils::demangle(key),
                        out);
   }
 

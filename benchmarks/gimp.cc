@@ -89,6 +89,7 @@ namespace
   block_step(const unsigned int n, const qsmpm::ShapeFunctions shape)
   {
     qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+    problem.return_large_blocks_to_system();
     problem.parameters().material_points.formulation.shape_functions = shape;
     Benchmarks::setup_block(problem, n, "amg");
     Timer timer;
@@ -127,6 +128,7 @@ namespace
     const unsigned int           n = 16;
     const double                 h = 50. / n, l0 = (n - 1 + f) * h;
     qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    problem.return_large_blocks_to_system();
     problem.pcout().set_condition(false);
     auto &prm = problem.parameters();
     prm.material_points.formulation.kinematics =

@@ -26,6 +26,7 @@ namespace
   run(const unsigned int n, const std::string &preconditioner)
   {
     qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+    problem.return_large_blocks_to_system();
     Benchmarks::setup_block(problem, n, preconditioner);
     problem.run();
     const auto &report = problem.step_reports().at(0);

@@ -59,6 +59,7 @@ main(int argc, char *argv[])
       const unsigned int n_steps = 5;
 
       qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+      problem.return_large_blocks_to_system();
       problem.pcout().set_condition(false);
       const double rss_start = Benchmarks::resident_memory();
       Benchmarks::make_unit_box(problem.grid(), option["--cells"]);

@@ -241,8 +241,8 @@ namespace
     // Commit du on both (stresses change), then a new du, same cache.
     TrilinosWrappers::MPI::Vector du_ghosted(packed.ghosted_layout());
     du_ghosted = du;
-    packed.commit(du_ghosted, packed_points);
-    full.commit(du_ghosted, full_points);
+    packed.commit(du_ghosted);
+    full.commit(du_ghosted);
     for (const auto i : grid.locally_owned_dofs())
       du(i) = 1e-3 * std::cos(0.4 + 2.3 * i);
     du.compress(VectorOperation::insert);

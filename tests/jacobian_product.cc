@@ -116,7 +116,7 @@ test(const qsmpm::Formulation &formulation)
                                                grid.locally_relevant_dofs(),
                                                MPI_COMM_WORLD);
       u0_ghosted = u0;
-      residual.commit(u0_ghosted, points);
+      residual.commit(u0_ghosted);
     }
   qsmpm::TangentAssembler<dim> tangent;
   tangent.reinit(grid, formulation.gimp());

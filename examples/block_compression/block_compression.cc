@@ -275,6 +275,7 @@ namespace BlockCompression
     : block(parse_parameters(parameter_file))
     , problem(MPI_COMM_WORLD)
   {
+    problem.return_large_blocks_to_system();
     problem.parameters().parse_parameters(prm);
   }
 

@@ -186,6 +186,7 @@ namespace Column
     , h(column.height / cells)
     , problem(MPI_COMM_WORLD)
   {
+    problem.return_large_blocks_to_system();
     // Solver, load stepping and output from the file; the formulation
     // from the study. The material model is the one in the file.
     problem.parameters().parse_parameters(prm);

@@ -233,6 +233,7 @@ namespace CompactTension
     , geometry(parse_parameters(parameter_file))
     , problem(communicator)
   {
+    problem.return_large_blocks_to_system();
     problem.parameters().parse_parameters(prm);
     problem.set_checkpoint_state([this]() { return save_state(); },
                                  [this](const std::string &text) {

@@ -320,6 +320,7 @@ namespace Footing
     , h(footing.half_width / cells)
     , problem(MPI_COMM_WORLD)
   {
+    problem.return_large_blocks_to_system();
     problem.parameters().parse_parameters(prm);
     problem.parameters().material_points.formulation.volumetric =
       parse_volumetric_treatment(treatment);

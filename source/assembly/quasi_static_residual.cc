@@ -9,13 +9,13 @@
 namespace qsmpm
 {
   template <int dim>
-  QuasiStaticResidual<dim>::QuasiStaticResidual(
-    const BackgroundGrid<dim>   &grid,
-    const MaterialPointSet<dim> &points,
-    const ShapeCache<dim>       &cache,
-    const bool                   update_volumes)
+  QuasiStaticResidual<dim>::QuasiStaticResidual(const BackgroundGrid<dim> &grid,
+                                                MaterialPointSet<dim> &points,
+                                                const ShapeCache<dim> &cache,
+                                                const bool update_volumes)
     : grid(grid)
     , points(points)
+    , writable_points(points)
     , cache(cache)
     , model(points.get_model())
     , update_volumes(update_volumes)
@@ -171,40 +171,30 @@ namespace qsmpm
 
 
   template <int dim>
-  unsigned long
-  QuasiStaticResidual<dim>::n_evaluations() const
-  {
-    return evaluation_count;
-  }
-
-
-
-  template <int dim>
-  void
+  typename QuasiStaticResidual<dim>::Evaluation
   QuasiStaticResidual<dim>::evaluate(const TrilinosWrappers::MPI::Vector &du,
                                      TrilinosWrappers::MPI::Vector &R) const
   {
-    ++evaluation_count;
+    Evaluation result;
     update_packed_state();
     if (same_layout)
       {
         // One rank (no ghosts): the loop reads du and adds into R = f_ext
         // in place, without the copies of import and export.
         R = f_ext;
-        loop<false>(du.trilinos_vector()[0], R.trilinos_vector()[0], nullptr);
-        return;
+        loop<false>(du.trilinos_vector()[0], R.trilinos_vector()[0], result);
+        return result;
       }
     du_ghosted.trilinos_vector().Import(du.trilinos_vector(),
                                         *importer,
                                         Insert);
     local_force->PutScalar(0.);
-    loop<false>(du_ghosted.trilinos_vector()[0],
-                local_force->Values(),
-                nullptr);
+    loop<false>(du_ghosted.trilinos_vector()[0], local_force->Values(), result);
     R.trilinos_vector().PutScalar(0.);
     const int ierr = R.trilinos_vector().Export(*local_force, *exporter, Add);
     AssertThrow(ierr == 0, ExcTrilinosError(ierr));
     R += f_ext;
+    return result;
   }
 
 
@@ -212,16 +202,14 @@ namespace qsmpm
   template <int dim>
   void
   QuasiStaticResidual<dim>::commit(
-    const TrilinosWrappers::MPI::Vector &du_increment,
-    MaterialPointSet<dim>               &written)
+    const TrilinosWrappers::MPI::Vector &du_increment)
   {
-    Assert(&written == &points,
-           ExcMessage("commit() must be given the points of the residual."));
     Assert(du_increment.trilinos_vector().Map().SameAs(
              du_ghosted.trilinos_vector().Map()),
            ExcMessage("commit() needs du with the ghosted layout."));
     update_packed_state();
-    loop<true>(du_increment.trilinos_vector()[0], nullptr, &written);
+    Evaluation unused;
+    loop<true>(du_increment.trilinos_vector()[0], nullptr, unused);
     // The points' state has changed: gathered again before the next
     // evaluation.
     packed_generation = std::numeric_limits<unsigned long>::max();
@@ -232,162 +220,190 @@ namespace qsmpm
   template <int dim>
   template <bool write_back>
   void
-  QuasiStaticResidual<dim>::loop(const double          *du_values,
-                                 double                *force,
-                                 MaterialPointSet<dim> *written) const
+  QuasiStaticResidual<dim>::loop(const double *du_values,
+                                 double       *force,
+                                 Evaluation   &result) const
   {
-    constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
-    const unsigned int     n_state  = state_layout.n_state;
-    const bool finite_strain        = points.get_formulation().finite_strain();
-    const bool fbar                 = points.get_formulation().fbar();
-    // The trial fields go back to the points only if the model changes
-    // them.
-    const bool copy_state = n_state > 0 && !model.state_is_constant();
-    // Linear shape functions: every point's stencil is the cell's vertices
-    // in their order, known at compile time.
-    const bool vertex_stencil =
-      cache.stencil_size() == GeometryInfo<dim>::vertices_per_cell;
-
-    if (!write_back)
-      {
-        min_volume_ratio = std::numeric_limits<double>::infinity();
-        dissipated       = 0.;
-      }
-
+    const LoopKind kind = loop_kind();
     // Blocks of cells: the kinematics of all their points first, one call
     // of the model for all of them (their committed states are consecutive
     // in the packed copy, or their property arrays are), then the forces.
     // Each phase is then a loop over independent cells or points that the
     // processor can overlap, where one cell at a time left it waiting for
-    // the results of short dependent chains (2D block of 262,144 points:
-    // 2.8 -> 2.5-2.7 ms per residual; blocks of 4, 16 or 32 cells were
-    // slower, doc/benchmarks.md).
-    constexpr unsigned int block_cells            = 8;
-    const bool             symmetric_small_strain = !finite_strain && !fbar;
-    double                 du_cell[max_dofs];
-    double                 f_cell[max_dofs];
+    // the results of short dependent chains (blocks of 8 cells were the
+    // fastest; the figures are in doc/benchmarks.md).
+    constexpr unsigned int block_cells = 8;
     for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
       {
         const unsigned int c1    = std::min(c0 + block_cells, cache.n_cells());
         const unsigned int first = cache.cell(c0).first_point;
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
-        block_first                 = first;
-        if (grad_du_scratch.size() < n_points)
-          {
-            grad_du_scratch.resize(n_points);
-            strain_increment_scratch.resize(n_points);
-            stress_scratch.resize(n_points);
-            force_stress_scratch.resize(n_points);
-            monomial_scratch.resize(n_points);
-            volume_scratch.resize(n_points);
-            mean_volume_change_scratch.resize(n_points);
-            state_scratch.resize(n_points * n_state);
-          }
-
-        // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e. in
-        // the configuration at the start of the step; for all points of a
-        // cell before their stresses, since F-bar needs the cell's mean
-        // volume change. Small strain without F-bar on an affine cell needs
-        // only sym(grad du), and its forces come from symmetric stresses.
-        for (unsigned int c = c0; c < c1; ++c)
-          {
-            const int *dofs = cache.local_dofs(c);
-            for (unsigned int i = 0; i < cache.n_dofs(c); ++i)
-              du_cell[i] = du_values[dofs[i]];
-            const auto              &range = cache.cell(c);
-            const AffineQ1Cell<dim> *affine =
-              vertex_stencil ? cache.affine_cell(c) : nullptr;
-            if (affine && symmetric_small_strain)
-              affine_cell_kinematics<true>(*affine, du_cell, range);
-            else if (affine)
-              affine_cell_kinematics<false>(*affine, du_cell, range);
-            else if (vertex_stencil)
-              cell_gradients<true>(du_cell, range);
-            else
-              cell_gradients<false>(du_cell, range);
-            const double mean_volume_change =
-              fbar ? cell_mean_volume_change(range, finite_strain) : 0.;
-            if (finite_strain)
-              std::fill(mean_volume_change_scratch.begin() +
-                          (range.first_point - first),
-                        mean_volume_change_scratch.begin() +
-                          (range.end_point - first),
-                        mean_volume_change);
-            else if (!affine || !symmetric_small_strain)
-              for (unsigned int p = range.first_point; p < range.end_point; ++p)
-                {
-                  SymmetricTensor<2, dim> &d_eps =
-                    strain_increment_scratch[p - first];
-                  d_eps = symmetrize(grad_du_scratch[p - first]);
-                  if (fbar)
-                    d_eps += (mean_volume_change - trace(d_eps)) / dim *
-                             unit_symmetric_tensor<dim>();
-                }
-          }
-
-        // The stresses of all points of the block, and with them the
-        // volume-weighted stress measures of the forces.
-        const PointStateBatch<dim> old =
-          packed_record > 0 ? PointStateBatch<dim>(state_layout,
-                                                   committed(first),
-                                                   packed_record,
-                                                   &cache.position(first),
-                                                   n_points) :
-                              PointStateBatch<dim>(state_layout,
-                                                   cache.property_arrays(first),
-                                                   &cache.position(first),
-                                                   n_points);
-        if (finite_strain)
-          finite_strain_stresses<write_back>(old, first, written);
-        else
-          small_strain_stresses<write_back>(old, first, written);
-        if (fbar && !finite_strain && !write_back)
+        scratch.start_block(first, n_points, state_layout.n_state);
+        block_kinematics(kind, c0, c1, du_values);
+        block_stresses<write_back>(kind, first, n_points, result);
+        if (write_back)
+          continue;
+        // F-bar at small strain: the forces of the virtual F-bar strain.
+        if (kind.fbar && !kind.finite_strain)
           for (unsigned int c = c0; c < c1; ++c)
             project_fbar_force_stresses(cache.cell(c));
+        block_forces(kind, c0, c1, force);
+      }
+  }
 
-        if (write_back)
-          {
-            if (copy_state)
-              for (unsigned int i = 0; i < n_points; ++i)
-                std::copy(state_scratch.data() + i * n_state,
-                          state_scratch.data() + (i + 1) * n_state,
-                          cache.properties(first + i, *written) +
-                            points.get_offsets().state);
-            continue;
-          }
 
-        if (track_dissipation)
-          for (unsigned int i = 0; i < n_points; ++i)
+
+  template <int dim>
+  typename QuasiStaticResidual<dim>::LoopKind
+  QuasiStaticResidual<dim>::loop_kind() const
+  {
+    LoopKind kind;
+    kind.finite_strain          = points.get_formulation().finite_strain();
+    kind.fbar                   = points.get_formulation().fbar();
+    kind.symmetric_small_strain = !kind.finite_strain && !kind.fbar;
+    kind.vertex_stencil =
+      cache.stencil_size() == GeometryInfo<dim>::vertices_per_cell;
+    return kind;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticResidual<dim>::block_kinematics(const LoopKind    &kind,
+                                             const unsigned int c0,
+                                             const unsigned int c1,
+                                             const double      *du_values) const
+  {
+    constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
+    const unsigned int     first    = scratch.block_first;
+    double                 du_cell[max_dofs];
+    // (2.18): grad du = sum_i du_i (x) grad N_i, on the grid, i.e. in
+    // the configuration at the start of the step; for all points of a
+    // cell before their stresses, since F-bar needs the cell's mean
+    // volume change. Small strain without F-bar on an affine cell needs
+    // only sym(grad du), and its forces come from symmetric stresses.
+    for (unsigned int c = c0; c < c1; ++c)
+      {
+        const int *dofs = cache.local_dofs(c);
+        for (unsigned int i = 0; i < cache.n_dofs(c); ++i)
+          du_cell[i] = du_values[dofs[i]];
+        const auto              &range = cache.cell(c);
+        const AffineQ1Cell<dim> *affine =
+          kind.vertex_stencil ? cache.affine_cell(c) : nullptr;
+        if (affine && kind.symmetric_small_strain)
+          affine_cell_kinematics<true>(*affine, du_cell, range);
+        else if (affine)
+          affine_cell_kinematics<false>(*affine, du_cell, range);
+        else if (kind.vertex_stencil)
+          cell_gradients<true>(du_cell, range);
+        else
+          cell_gradients<false>(du_cell, range);
+        const double mean_volume_change =
+          kind.fbar ? cell_mean_volume_change(range, kind.finite_strain) : 0.;
+        if (kind.finite_strain)
+          std::fill(scratch.mean_volume_change.begin() +
+                      (range.first_point - first),
+                    scratch.mean_volume_change.begin() +
+                      (range.end_point - first),
+                    mean_volume_change);
+        else if (!affine || !kind.symmetric_small_strain)
+          for (unsigned int p = range.first_point; p < range.end_point; ++p)
             {
-              // Assembled once: old[i] reads the whole point state.
-              const PointState<dim> point = old[i];
-              dissipated +=
-                point.volume *
-                model.dissipation(point,
-                                  ArrayView<const double>(state_scratch.data() +
-                                                            i * n_state,
-                                                          n_state));
+              SymmetricTensor<2, dim> &d_eps =
+                scratch.strain_increment[p - first];
+              d_eps = symmetrize(scratch.grad_du[p - first]);
+              if (kind.fbar)
+                d_eps += (mean_volume_change - trace(d_eps)) / dim *
+                         unit_symmetric_tensor<dim>();
             }
+      }
+  }
 
-        for (unsigned int c = c0; c < c1; ++c)
-          {
-            const auto              &range  = cache.cell(c);
-            const unsigned int       n_dofs = cache.n_dofs(c);
-            const AffineQ1Cell<dim> *affine =
-              vertex_stencil ? cache.affine_cell(c) : nullptr;
-            std::fill(f_cell, f_cell + n_dofs, 0.);
-            if (affine && symmetric_small_strain)
-              add_affine_symmetric_forces(*affine, range, f_cell);
-            else if (affine)
-              add_affine_cell_forces(*affine, range, f_cell);
-            else if (vertex_stencil)
-              add_cell_forces<true>(range, f_cell);
-            else
-              add_cell_forces<false>(range, f_cell);
-            const int *dofs = cache.local_dofs(c);
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              force[dofs[i]] += f_cell[i];
-          }
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::block_stresses(const LoopKind    &kind,
+                                           const unsigned int first,
+                                           const unsigned int n_points,
+                                           Evaluation        &result) const
+  {
+    const unsigned int n_state = state_layout.n_state;
+    // The stresses of all points of the block, and with them the
+    // volume-weighted stress measures of the forces.
+    const PointStateBatch<dim> old =
+      packed_record > 0 ? PointStateBatch<dim>(state_layout,
+                                               committed(first),
+                                               packed_record,
+                                               &cache.position(first),
+                                               n_points) :
+                          PointStateBatch<dim>(state_layout,
+                                               cache.property_arrays(first),
+                                               &cache.position(first),
+                                               n_points);
+    if (kind.finite_strain)
+      finite_strain_stresses<write_back>(old, first, result);
+    else
+      small_strain_stresses<write_back>(old, first, result);
+
+    if (write_back)
+      {
+        // The trial fields go back to the points only if the model changes
+        // them.
+        if (n_state > 0 && !model.state_is_constant())
+          for (unsigned int i = 0; i < n_points; ++i)
+            std::copy(scratch.state.data() + i * n_state,
+                      scratch.state.data() + (i + 1) * n_state,
+                      cache.properties(first + i, writable_points) +
+                        points.get_offsets().state);
+        return;
+      }
+
+    if (track_dissipation)
+      for (unsigned int i = 0; i < n_points; ++i)
+        {
+          // Assembled once: old[i] reads the whole point state.
+          const PointState<dim> point = old[i];
+          result.dissipation +=
+            point.volume *
+            model.dissipation(point,
+                              ArrayView<const double>(scratch.state.data() +
+                                                        i * n_state,
+                                                      n_state));
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticResidual<dim>::block_forces(const LoopKind    &kind,
+                                         const unsigned int c0,
+                                         const unsigned int c1,
+                                         double            *force) const
+  {
+    constexpr unsigned int max_dofs = ShapeCache<dim>::max_dofs_per_group;
+    double                 f_cell[max_dofs];
+    for (unsigned int c = c0; c < c1; ++c)
+      {
+        const auto              &range  = cache.cell(c);
+        const unsigned int       n_dofs = cache.n_dofs(c);
+        const AffineQ1Cell<dim> *affine =
+          kind.vertex_stencil ? cache.affine_cell(c) : nullptr;
+        std::fill(f_cell, f_cell + n_dofs, 0.);
+        if (affine && kind.symmetric_small_strain)
+          add_affine_symmetric_forces(*affine, range, f_cell);
+        else if (affine)
+          add_affine_cell_forces(*affine, range, f_cell);
+        else if (kind.vertex_stencil)
+          add_cell_forces<true>(range, f_cell);
+        else
+          add_cell_forces<false>(range, f_cell);
+        const int *dofs = cache.local_dofs(c);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          force[dofs[i]] += f_cell[i];
       }
   }
 
@@ -417,7 +433,7 @@ namespace qsmpm
             for (unsigned int a = 0; a < dim; ++a)
               grad_du[a] += du_cell[node * dim + a] * grad_N[k];
           }
-        grad_du_scratch[p - block_first] = grad_du;
+        scratch.grad_du[p - scratch.block_first] = grad_du;
       }
   }
 
@@ -440,13 +456,14 @@ namespace qsmpm
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         // Kept for the forces of the same points.
-        auto &m = monomial_scratch[p - block_first];
+        auto &m = scratch.monomials[p - scratch.block_first];
         AffineQ1Cell<dim>::monomials(cache.reference_location(p), m);
         if (symmetric)
-          strain_increment_scratch[p - block_first] =
+          scratch.strain_increment[p - scratch.block_first] =
             AffineQ1Cell<dim>::symmetric_gradient(K_sym, m);
         else
-          grad_du_scratch[p - block_first] = AffineQ1Cell<dim>::gradient(K, m);
+          scratch.grad_du[p - scratch.block_first] =
+            AffineQ1Cell<dim>::gradient(K, m);
       }
   }
 
@@ -462,13 +479,13 @@ namespace qsmpm
     constexpr unsigned int n_terms               = AffineQ1Cell<dim>::n_terms;
     constexpr unsigned int n_sym                 = AffineQ1Cell<dim>::n_sym;
     double                 H_sym[n_terms][n_sym] = {};
-    for (unsigned int i = range.first_point - block_first;
-         i < range.end_point - block_first;
+    for (unsigned int i = range.first_point - scratch.block_first;
+         i < range.end_point - scratch.block_first;
          ++i)
       {
-        const auto                    &m      = monomial_scratch[i];
-        const SymmetricTensor<2, dim> &sigma  = stress_scratch[i];
-        const double                   volume = volume_scratch[i];
+        const auto                    &m      = scratch.monomials[i];
+        const SymmetricTensor<2, dim> &sigma  = scratch.stress[i];
+        const double                   volume = scratch.volume[i];
         for (unsigned int w = 0; w < n_terms; ++w)
           {
             const double scale = volume * m[w];
@@ -493,9 +510,10 @@ namespace qsmpm
     constexpr unsigned int n_terms               = AffineQ1Cell<dim>::n_terms;
     double                 H[n_terms][dim * dim] = {};
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
-      AffineQ1Cell<dim>::add_force_terms(force_stress_scratch[p - block_first],
-                                         monomial_scratch[p - block_first],
-                                         H);
+      AffineQ1Cell<dim>::add_force_terms(
+        scratch.force_stress[p - scratch.block_first],
+        scratch.monomials[p - scratch.block_first],
+        H);
     affine.add_nodal_forces(H, -1., f_cell);
   }
 
@@ -521,7 +539,8 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N = cache.gradients(p);
-            const Tensor<2, dim> &S = force_stress_scratch[p - block_first];
+            const Tensor<2, dim> &S =
+              scratch.force_stress[p - scratch.block_first];
             for (unsigned int k = 0; k < n_vertices; ++k)
               f[k] += S * grad_N[k];
           }
@@ -535,7 +554,7 @@ namespace qsmpm
         const Tensor<1, dim> *grad_N  = cache.gradients(p);
         const unsigned short *nodes   = cache.nodes(p);
         const unsigned int    stencil = cache.stencil_size(p);
-        const Tensor<2, dim> &S       = force_stress_scratch[p - block_first];
+        const Tensor<2, dim> &S = scratch.force_stress[p - scratch.block_first];
         for (unsigned int k = 0; k < stencil; ++k)
           {
             const Tensor<1, dim> f = S * grad_N[k];
@@ -553,46 +572,46 @@ namespace qsmpm
   QuasiStaticResidual<dim>::small_strain_stresses(
     const PointStateBatch<dim> &old,
     const unsigned int          first,
-    MaterialPointSet<dim>      *written) const
+    Evaluation                 &result) const
   {
     const auto        &offsets         = own_offsets;
     const auto        &written_offsets = points.get_offsets();
     const unsigned int n               = old.size();
-    // Every cell's forces from volume_scratch (add_affine_symmetric_forces()).
+    // Every cell's forces from scratch.volume (add_affine_symmetric_forces()).
     const bool all_symmetric_affine = !points.get_formulation().fbar() &&
                                       cache.n_affine_cells() == cache.n_cells();
 
-    // The strain increments are in strain_increment_scratch (see loop()).
+    // The strain increments are in scratch.strain_increment (see loop()).
 
     // (2.20)-(2.21): trial stresses from the committed states, one call of
     // the model for the whole cell.
     model.update_stresses(
       old,
-      ArrayView<const SymmetricTensor<2, dim>>(strain_increment_scratch.data(),
+      ArrayView<const SymmetricTensor<2, dim>>(scratch.strain_increment.data(),
                                                n),
-      ArrayView<SymmetricTensor<2, dim>>(stress_scratch.data(), n),
-      ArrayView<double>(state_scratch.data(), n * state_layout.n_state));
+      ArrayView<SymmetricTensor<2, dim>>(scratch.stress.data(), n),
+      ArrayView<double>(scratch.state.data(), n * state_layout.n_state));
 
     // (2.23)-(2.24): J and the volume at the end of the step.
-    double min_J = min_volume_ratio;
+    double min_J = result.minimum_volume_ratio;
     for (unsigned int i = 0; i < n; ++i)
       {
         const double *data = committed(first + i);
         const double  J =
-          (1. + trace(strain_increment_scratch[i])) * data[offsets.J];
+          (1. + trace(scratch.strain_increment[i])) * data[offsets.J];
         const double volume = update_volumes ?
                                 J * data[offsets.initial_volume] :
                                 data[offsets.initial_volume];
         if (write_back)
           {
-            double *const out = cache.properties(first + i, *written);
+            double *const out = cache.properties(first + i, writable_points);
             // The committed strain from the property array: the batch
             // holds it only if the model reads it.
             Utils::write_symmetric<dim>(Utils::read_symmetric<dim>(
                                           out + written_offsets.strain) +
-                                          strain_increment_scratch[i],
+                                          scratch.strain_increment[i],
                                         out + written_offsets.strain);
-            Utils::write_symmetric<dim>(stress_scratch[i],
+            Utils::write_symmetric<dim>(scratch.stress[i],
                                         out + written_offsets.stress);
             out[written_offsets.J]      = J;
             out[written_offsets.volume] = volume;
@@ -601,19 +620,19 @@ namespace qsmpm
           {
             min_J = std::min(min_J, J);
             // add_affine_symmetric_forces() scales the stresses itself;
-            // the other cells' forces read force_stress_scratch.
-            volume_scratch[i] = volume;
+            // the other cells' forces read scratch.force_stress.
+            scratch.volume[i] = volume;
             if (all_symmetric_affine)
               continue;
             // Entry by entry: deal.II's conversion of a symmetric tensor
             // is a function call per point.
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int b = 0; b < dim; ++b)
-                force_stress_scratch[i][a][b] =
-                  volume * stress_scratch[i][a][b];
+                scratch.force_stress[i][a][b] =
+                  volume * scratch.stress[i][a][b];
           }
       }
-    min_volume_ratio = min_J;
+    result.minimum_volume_ratio = min_J;
   }
 
 
@@ -624,25 +643,26 @@ namespace qsmpm
   QuasiStaticResidual<dim>::finite_strain_stresses(
     const PointStateBatch<dim> &old,
     const unsigned int          first,
-    MaterialPointSet<dim>      *written) const
+    Evaluation                 &result) const
   {
     const auto        &offsets         = own_offsets;
     const auto        &written_offsets = points.get_offsets();
     const unsigned int n_state         = state_layout.n_state;
     const bool         fbar            = points.get_formulation().fbar();
+    double             min_J           = result.minimum_volume_ratio;
 
     for (unsigned int i = 0; i < old.size(); ++i)
       {
         const double   *data = committed(first + i);
-        Tensor<2, dim> &S    = force_stress_scratch[i];
+        Tensor<2, dim> &S    = scratch.force_stress[i];
 
         FiniteStrainKinematics<dim> kinematics;
         kinematics.F_old =
           Utils::read_tensor<dim>(data + offsets.deformation_gradient);
         const Tensor<2, dim> delta_F =
-          unit_symmetric_tensor<dim>() + grad_du_scratch[i];
+          unit_symmetric_tensor<dim>() + scratch.grad_du[i];
         const double det_delta_F        = determinant(delta_F);
-        const double mean_volume_change = mean_volume_change_scratch[i];
+        const double mean_volume_change = scratch.mean_volume_change[i];
         // F-bar: the model sees the cell's mean volume change.
         kinematics.delta_F =
           fbar ?
@@ -662,10 +682,10 @@ namespace qsmpm
           old[i],
           kinematics,
           tau,
-          ArrayView<double>(state_scratch.data() + i * n_state, n_state));
+          ArrayView<double>(scratch.state.data() + i * n_state, n_state));
         if (write_back)
           {
-            double *const out = cache.properties(first + i, *written);
+            double *const out = cache.properties(first + i, writable_points);
             const double  J   = determinant(kinematics.F);
             // For output: the logarithmic strain 1/2 ln b.
             Utils::write_symmetric<dim>(
@@ -684,10 +704,10 @@ namespace qsmpm
             // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T} grad_n N.
             S = data[offsets.initial_volume] * Tensor<2, dim>(tau) *
                 transpose(invert(delta_F));
-            min_volume_ratio =
-              std::min(min_volume_ratio, det_delta_F * data[offsets.J]);
+            min_J = std::min(min_J, det_delta_F * data[offsets.J]);
           }
       }
+    result.minimum_volume_ratio = min_J;
   }
 
 
@@ -704,8 +724,9 @@ namespace qsmpm
     double             sum = 0., total_volume = 0.;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const double          omega   = committed(p)[volume];
-        const Tensor<2, dim> &grad_du = grad_du_scratch[p - block_first];
+        const double          omega = committed(p)[volume];
+        const Tensor<2, dim> &grad_du =
+          scratch.grad_du[p - scratch.block_first];
         sum += omega * (finite_strain ?
                           determinant(unit_symmetric_tensor<dim>() + grad_du) :
                           trace(grad_du));
@@ -741,34 +762,16 @@ namespace qsmpm
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         W += committed(p)[volume];
-        V_trace += trace(force_stress_scratch[p - block_first]);
+        V_trace += trace(scratch.force_stress[p - scratch.block_first]);
       }
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        Tensor<2, dim> &S = force_stress_scratch[p - block_first];
+        Tensor<2, dim> &S = scratch.force_stress[p - scratch.block_first];
         const double    shift =
           (committed(p)[volume] / W * V_trace - trace(S)) / dim;
         for (unsigned int a = 0; a < dim; ++a)
           S[a][a] += shift;
       }
-  }
-
-
-
-  template <int dim>
-  double
-  QuasiStaticResidual<dim>::minimum_volume_ratio() const
-  {
-    return min_volume_ratio;
-  }
-
-
-
-  template <int dim>
-  double
-  QuasiStaticResidual<dim>::dissipation() const
-  {
-    return dissipated;
   }
 
 

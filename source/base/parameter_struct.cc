@@ -7,30 +7,28 @@ namespace qsmpm
 {
   namespace Utils
   {
+    std::string
+    demangle(const std::string &name)
+    {
+      std::string result;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size())
+          {
+            result.push_back(
+              static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16)));
+            i += 2;
+          }
+        else
+          result.push_back(name[i]);
+      return result;
+    }
+
+
+
     namespace
     {
       /// An entry: the subsections that lead to it and its name.
       using EntryPath = std::pair<std::vector<std::string>, std::string>;
-
-      /**
-       * The inverse of the name mangling of ParameterHandler's JSON output,
-       * which writes every character other than [a-zA-Z0-9] as _xx (hex).
-       */
-      std::string
-      demangle(const std::string &name)
-      {
-        std::string result;
-        for (std::size_t i = 0; i < name.size(); ++i)
-          if (name[i] == '_' && i + 2 < name.size())
-            {
-              result.push_back(static_cast<char>(
-                std::stoi(name.substr(i + 1, 2), nullptr, 16)));
-              i += 2;
-            }
-          else
-            result.push_back(name[i]);
-        return result;
-      }
 
       void
       collect_entries(const boost::property_tree::ptree &node,

@@ -349,17 +349,4 @@ namespace qsmpm
         M[a][b] = C[voigt_i[a]][voigt_j[a]][voigt_i[b]][voigt_j[b]];
     return M;
   }
-
-
-
-  SymmetricTensor<4, 3>
-  Rotation::from_voigt(const std::array<std::array<double, 6>, 6> &M)
-  {
-    SymmetricTensor<4, 3> C;
-    for (unsigned int a = 0; a < 6; ++a)
-      for (unsigned int b = 0; b < 6; ++b)
-        C[voigt_i[a]][voigt_j[a]][voigt_i[b]][voigt_j[b]] =
-          0.5 * (M[a][b] + M[b][a]);
-    return C;
-  }
 } // namespace qsmpm

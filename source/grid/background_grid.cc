@@ -335,6 +335,32 @@ namespace qsmpm
 
 
   template <int dim>
+  std::vector<Point<dim>>
+  BackgroundGrid<dim>::coarse_vertices(const std::size_t max_count) const
+  {
+    std::vector<bool>       seen(triangulation.n_vertices(), false);
+    std::vector<Point<dim>> vertices;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int v : cell->vertex_indices())
+        if (!seen[cell->vertex_index(v)])
+          {
+            seen[cell->vertex_index(v)] = true;
+            vertices.push_back(cell->vertex(v));
+          }
+    const std::size_t stride = 1 + vertices.size() / max_count;
+    if (stride > 1)
+      {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < vertices.size(); i += stride)
+          vertices[n++] = vertices[i];
+        vertices.resize(n);
+      }
+    return vertices;
+  }
+
+
+
+  template <int dim>
   void
   BackgroundGrid<dim>::node_block_dofs(
     const typename DoFHandler<dim>::active_cell_iterator &cell,

@@ -122,16 +122,19 @@ namespace qsmpm
         if (prm.boundary_type == BoundaryType::periodic)
           problem.grid().make_periodic({0, 1, 2});
         problem.set_model(make_model());
-        problem.points().fill([](const Point<3> &) { return true; },
-                              prm.points_per_direction,
-                              MaterialPointSet<3>::Placement::regular);
+        // The material ids are given to fill(), so that the model
+        // initializes each point's state for its id.
+        std::array<unsigned int, 3> n_per_direction;
+        n_per_direction.fill(prm.points_per_direction);
+        problem.points().fill(
+          [](const Point<3> &) { return true; },
+          MaterialPointSet<3>::reference_rule(
+            MaterialPointSet<3>::Placement::regular, n_per_direction),
+          material_id ? material_id :
+                        MaterialId([](const Point<3> &) { return 0u; }));
         const auto &offsets = problem.points().get_offsets();
-        if (material_id)
-          for (auto &particle : problem.points().get_particle_handler())
-            particle.get_properties()[offsets.material_id] =
-              material_id(particle.get_location());
-        points = problem.points().n_global_points();
-        cells  = problem.grid().get_triangulation().n_global_active_cells();
+        points              = problem.points().n_global_points();
+        cells = problem.grid().get_triangulation().n_global_active_cells();
 
         // The macroscopic displacement gradient H of the test.
         const unsigned int i = voigt_i[k], j = voigt_j[k];

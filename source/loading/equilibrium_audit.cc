@@ -1,5 +1,5 @@
-#include <deal.II/base/mpi.h>
 #include <algorithm>
+#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <qsmpm/loading/equilibrium_audit.h>
 #include <sstream>
@@ -66,6 +66,55 @@ namespace qsmpm
 
   template <int dim>
   std::string
+  EquilibriumAudit<dim>::Result::lost_load(
+    const double t_new,
+    const double tolerance,
+    const double residual_tolerance) const
+  {
+    std::ostringstream message;
+    message << "the converged step to t = " << t_new << " lost "
+            << std::setprecision(3) << 100. * imbalance()
+            << " % of the load (the applied load is not carried by the "
+               "displacement conditions; Equilibrium check/Lost load "
+               "tolerance = "
+            << tolerance << "): " << causes(tolerance, residual_tolerance) << '.';
+    return message.str();
+  }
+
+
+
+  template <int dim>
+  void
+  EquilibriumAudit<dim>::locate_points_beyond_grid(const ShapeCache<dim> &cache,
+                                                   const MPI_Comm communicator,
+                                                   Result        &result)
+  {
+    // The rank of the point with the most weight beyond the grid tells
+    // where it is.
+    result.n_points_beyond_grid =
+      dealii::Utilities::MPI::sum(cache.n_points_beyond_grid(), communicator);
+    if (result.n_points_beyond_grid == 0)
+      return;
+    const double largest =
+      dealii::Utilities::MPI::max(cache.largest_weight_beyond_grid(),
+                                  communicator);
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank = dealii::Utilities::MPI::min(
+      cache.largest_weight_beyond_grid() == largest ?
+        dealii::Utilities::MPI::this_mpi_process(communicator) :
+        n_ranks,
+      communicator);
+    result.point_beyond_grid =
+      dealii::Utilities::MPI::broadcast(communicator,
+                                        cache.point_beyond_grid(),
+                                        rank);
+  }
+
+
+
+  template <int dim>
+  std::string
   EquilibriumAudit<dim>::Result::causes(const double tolerance,
                                         const double residual_tolerance) const
   {
@@ -102,9 +151,10 @@ namespace qsmpm
               << " % leaves through the grid's edge (the weights of points "
                  "near it are no partition of unity";
         if (n_points_beyond_grid > 0)
-          words << ": " << n_points_beyond_grid
-                << " GIMP point domain(s) reach beyond the grid, most of all at ("
-                << point_beyond_grid << ")";
+          words
+            << ": " << n_points_beyond_grid
+            << " GIMP point domain(s) reach beyond the grid, most of all at ("
+            << point_beyond_grid << ")";
         words << "; enlarge the grid, Geometry/Lower corner and Upper "
                  "corner, by at least half a cell beyond the body)";
         add(words.str());
@@ -127,12 +177,13 @@ namespace qsmpm
 
   template <int dim>
   typename EquilibriumAudit<dim>::Result
-  EquilibriumAudit<dim>::evaluate(const BackgroundGrid<dim>          &grid,
-                                  const DisplacementConstraints<dim> &conditions,
-                                  const IndexSet                      &held,
-                                  const TrilinosWrappers::MPI::Vector &R,
-                                  const TrilinosWrappers::MPI::Vector &f_ext,
-                                  const double reference_scale)
+  EquilibriumAudit<dim>::evaluate(
+    const BackgroundGrid<dim>           &grid,
+    const DisplacementConstraints<dim>  &conditions,
+    const IndexSet                      &held,
+    const TrilinosWrappers::MPI::Vector &R,
+    const TrilinosWrappers::MPI::Vector &f_ext,
+    const double                         reference_scale)
   {
     const IndexSet &owned = grid.locally_owned_dofs();
     if (component.size() != owned.n_elements() || !(component_owned == owned))
@@ -208,10 +259,9 @@ namespace qsmpm
     // is prescribed) have a resultant of round-off size: measured against
     // it, its round-off would be a loss of 100 %. The sum of the nodal
     // forces' magnitudes bounds that round-off.
-    magnitudes   = dealii::Utilities::MPI::sum(magnitudes, communicator);
-    result.scale = std::max({reference_scale,
-                             result.applied.norm(),
-                             1e-6 * magnitudes});
+    magnitudes = dealii::Utilities::MPI::sum(magnitudes, communicator);
+    result.scale =
+      std::max({reference_scale, result.applied.norm(), 1e-6 * magnitudes});
     for (const auto &reaction : result.reactions)
       result.scale = std::max(result.scale, reaction.norm());
     return result;

@@ -111,17 +111,15 @@ namespace qsmpm
     AssertThrow(parameters.growth_factor >= 1.,
                 ExcMessage("Load stepping: <Increment growth factor> must be "
                            ">= 1."));
+    control_type = parse_control(parameters.control);
     if (path_following())
       {
-        const std::string &name = parameters.control;
-        AssertThrow(name == "dissipation" || name == "opening",
-                    ExcMessage("Load stepping: unknown <Control> = " + name +
-                               "."));
-        const std::string entry =
-          name == "dissipation" ? "Dissipation increment" : "Opening increment";
-        nominal_target = name == "dissipation" ?
-                           parameters.dissipation_increment :
-                           parameters.opening_increment;
+        const std::string &name       = parameters.control;
+        const bool         dissipates = control_type == Control::dissipation;
+        const std::string  entry =
+          dissipates ? "Dissipation increment" : "Opening increment";
+        nominal_target = dissipates ? parameters.dissipation_increment :
+                                      parameters.opening_increment;
         AssertThrow(nominal_target > 0.,
                     ExcMessage("Load stepping: <" + entry +
                                "> must be > 0 with Control = " + name + "."));
@@ -150,10 +148,40 @@ namespace qsmpm
 
 
 
+  LoadStepper::Control
+  LoadStepper::parse_control(const std::string &name)
+  {
+    if (name == "displacement")
+      return Control::displacement;
+    if (name == "dissipation")
+      return Control::dissipation;
+    AssertThrow(name == "opening",
+                ExcMessage("Load stepping: unknown <Control> = " + name + "."));
+    return Control::opening;
+  }
+
+
+
+  std::string
+  LoadStepper::to_string(const Control control)
+  {
+    switch (control)
+      {
+        case Control::displacement:
+          return "displacement";
+        case Control::dissipation:
+          return "dissipation";
+        default:
+          return "opening";
+      }
+  }
+
+
+
   bool
   LoadStepper::path_following() const
   {
-    return parameters.control != "displacement";
+    return control_type != Control::displacement;
   }
 
 
@@ -167,10 +195,10 @@ namespace qsmpm
 
 
 
-  const std::string &
+  LoadStepper::Control
   LoadStepper::control() const
   {
-    return parameters.control;
+    return control_type;
   }
 
 

@@ -49,14 +49,6 @@ namespace qsmpm
 
 
 
-  bool
-  StepConstraints::has_couplings() const
-  {
-    return any_coupling;
-  }
-
-
-
   void
   StepConstraints::distribute(VectorType &du) const
   {

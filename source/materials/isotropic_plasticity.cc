@@ -239,12 +239,12 @@ namespace qsmpm
   IsotropicPlasticity<dim>::committed_tangent(
     const ArrayView<const double> &) const
   {
-    // The preconditioner's matrix: the elastic stiffness. Measured on the
-    // footing (examples/footing, F-bar): the continuum elastoplastic
-    // tangent, assembled without the F-bar linearization, is nearly
-    // singular in the deviatoric directions and locks in the volumetric
-    // ones; with it GMRES needed up to 1000 iterations and Newton failed in
-    // steps that converge with the elastic matrix in 8-9 iterations.
+    // The preconditioner's matrix: the elastic stiffness. The continuum
+    // elastoplastic tangent, assembled without the F-bar linearization, is
+    // nearly singular in the deviatoric directions and locks in the
+    // volumetric ones: on the footing (examples/footing, F-bar) GMRES then
+    // stalls and Newton fails in steps that converge with the elastic
+    // matrix.
     return D;
   }
 

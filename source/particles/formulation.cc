@@ -3,19 +3,6 @@
 
 namespace qsmpm
 {
-  Kinematics
-  parse_kinematics(const std::string &name)
-  {
-    if (name == "small strain")
-      return Kinematics::small_strain;
-    AssertThrow(name == "finite strain",
-                dealii::ExcMessage("Unknown kinematics <" + name +
-                                   ">: use small strain or finite strain."));
-    return Kinematics::finite_strain;
-  }
-
-
-
   ShapeFunctions
   parse_shape_functions(const std::string &name)
   {

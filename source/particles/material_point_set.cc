@@ -2,6 +2,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <numeric>
@@ -593,6 +594,33 @@ namespace qsmpm
     const types::particle_index before = particle_handler.n_global_particles();
     particle_handler.sort_particles_into_subdomains_and_cells();
     return before - particle_handler.n_global_particles();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::sort_into_cells_without_loss(const double moved)
+  {
+    const auto   lost      = sort_into_cells();
+    const double cell_size = grid.min_cell_size();
+    if (lost > 0 &&
+        dealii::Utilities::MPI::n_mpi_processes(grid.get_communicator()) > 1 &&
+        moved >= cell_size)
+      {
+        std::ostringstream message;
+        message << lost
+                << " material points were lost: in a parallel run a point "
+                   "may move at most one cell per load step, and in this "
+                   "step a point moved "
+                << std::setprecision(3) << moved / cell_size
+                << " cells. Use more load steps.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    AssertThrow(lost == 0,
+                ExcMessage(std::to_string(lost) +
+                           " material points left the background grid. "
+                           "Enlarge the grid around the body."));
   }
 
 

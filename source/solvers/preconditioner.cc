@@ -115,13 +115,11 @@ namespace qsmpm
       {
         // Start from deal.II's settings for an elliptic problem with linear
         // elements, then replace the null space by the rigid-body modes.
-        // A W-cycle keeps the GMRES iteration count flat under refinement
-        // (measured: 8 -> 10 iterations from 32x64 to 128x256 cells in 2D;
-        // a V-cycle gives 8 -> 13).
+        // A W-cycle keeps the GMRES iteration count nearly flat under
+        // refinement, where a V-cycle's grows.
         // Free the hierarchy of the last build before making the new one:
-        // otherwise both are alive during the setup (measured on the strip
-        // benchmark, N = 256: 80 MB more peak memory when rebuilding every
-        // step).
+        // otherwise both are alive during the setup, which raises the peak
+        // memory of a run that rebuilds every step.
         amg.clear();
         rigid_body_modes.reset();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -143,9 +141,8 @@ namespace qsmpm
         // make_rigid_body_modes()) form one block: ML aggregates nodes
         // instead of single dofs, as smoothed aggregation for elasticity
         // assumes. ML's default of one equation lets an aggregate take the
-        // x but not the y dof of a node. Measured on the strip benchmark
-        // (256 x 256 cells): 11 -> 8 GMRES iterations per step, the setup
-        // 30% faster and its peak memory 20 MB lower.
+        // x but not the y dof of a node; per node, GMRES needs fewer
+        // iterations and the setup is faster and needs less memory.
         parameters.set("PDE equations", static_cast<int>(dim));
         amg.initialize(K, parameters);
       }

@@ -63,13 +63,14 @@ namespace qsmpm
    * evaluations read the committed state from a packed copy of the fields
    * the model declares (ConstitutiveModel::batch_fields()).
    *
-   * evaluate() is pure: it reads the committed point state and writes only
-   * the residual. This is what makes finite-difference Jacobian-vector
-   * products, line searches and rejected steps safe; the types say so, as
-   * the residual holds the points read-only and the ShapeCache hands out
-   * writable point data only to the holder of the writable point set.
-   * commit() is given that set: it evaluates the same formulas once more for
-   * the converged increment and stores strain, stress, model state, J and
+   * evaluate() is pure: it reads the committed point state, writes only
+   * the residual, and returns what else it found (Evaluation). This is what
+   * makes finite-difference Jacobian-vector products, line searches and
+   * rejected steps safe; the types say so, as evaluate() is const and reads
+   * the points through a read-only reference, and the ShapeCache hands out
+   * writable point data only to the holder of the writable point set, which
+   * only commit() uses: it evaluates the same formulas once more for the
+   * converged increment and stores strain, stress, model state, J and
    * volume on the points.
    *
    * The residual includes the rows of constrained degrees of freedom: there,
@@ -81,13 +82,35 @@ namespace qsmpm
   {
   public:
     /**
-     * @p update_volumes = false keeps Omega_p = Omega_p^0 (a geometrically
-     * linear model, used to compare with linear finite elements).
+     * What an evaluation finds besides the residual, on this rank's points.
      */
-    QuasiStaticResidual(const BackgroundGrid<dim>   &grid,
-                        const MaterialPointSet<dim> &points,
-                        const ShapeCache<dim>       &cache,
-                        const bool                   update_volumes = true);
+    struct Evaluation
+    {
+      /**
+       * The smallest J = det F (finite strain) or J = (1 + tr d eps) J_old
+       * (small strain) at the increment; +infinity on a rank without
+       * points. A converged increment with J <= 0 somewhere has turned a
+       * point inside out (possible at small strain, where the residual
+       * stays finite) and must be rejected.
+       */
+      double minimum_volume_ratio = std::numeric_limits<double>::infinity();
+      /**
+       * The energy the points dissipate in the trial state
+       * (ConstitutiveModel::dissipation() times the point volume at the
+       * start of the step); 0 if the model computes none.
+       */
+      double dissipation = 0.;
+    };
+
+    /**
+     * @p update_volumes = false keeps Omega_p = Omega_p^0 (a geometrically
+     * linear model, used to compare with linear finite elements). The
+     * residual keeps @p points; only commit() writes to them.
+     */
+    QuasiStaticResidual(const BackgroundGrid<dim> &grid,
+                        MaterialPointSet<dim>     &points,
+                        const ShapeCache<dim>     &cache,
+                        const bool                 update_volumes = true);
 
     /// Size the internal vectors; call after the grid's dofs changed.
     void
@@ -98,19 +121,18 @@ namespace qsmpm
     set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
 
     /// R = f_ext - f_int(du). Does not change any point.
-    void
+    Evaluation
     evaluate(const TrilinosWrappers::MPI::Vector &du,
              TrilinosWrappers::MPI::Vector       &R) const;
 
     /**
-     * Store the state of the converged increment on @p points, the point
-     * set of the constructor. @p du_ghosted holds the increment with the
-     * layout of ghosted_layout() (the caller imports the ghost entries once
-     * and moves the points with the same vector).
+     * Store the state of the converged increment on the points of the
+     * constructor. @p du_ghosted holds the increment with the layout of
+     * ghosted_layout() (the caller imports the ghost entries once and moves
+     * the points with the same vector).
      */
     void
-    commit(const TrilinosWrappers::MPI::Vector &du_ghosted,
-           MaterialPointSet<dim>               &points);
+    commit(const TrilinosWrappers::MPI::Vector &du_ghosted);
 
     /// A vector with the locally relevant layout (for ShapeCache::reinit).
     const TrilinosWrappers::MPI::Vector &
@@ -124,49 +146,111 @@ namespace qsmpm
     double
     typical_increment_norm() const;
 
-    /// The number of residual evaluations since construction.
-    unsigned long
-    n_evaluations() const;
-
-    /**
-     * The smallest J = det F (finite strain) or J = (1 + tr d eps) J_old
-     * (small strain) of this rank's points at the increment of the last
-     * evaluate(); +infinity on a rank without points. A converged increment
-     * with J <= 0 somewhere has turned a point inside out (possible at small
-     * strain, where the residual stays finite) and must be rejected.
-     */
-    double
-    minimum_volume_ratio() const;
-
-    /**
-     * The energy the points of this rank dissipate in the trial state of
-     * the last evaluate() (ConstitutiveModel::dissipation() times the
-     * point volume at the start of the step).
-     */
-    double
-    dissipation() const;
-
   private:
+    /**
+     * Scratch space for the points of a block of cells (see loop()): grad
+     * du, the strain increments, the trial stresses and fields, the
+     * volume-weighted stress measures of the forces, the monomials of
+     * AffineQ1Cell, the volumes and, for F-bar at finite strain, the mean
+     * volume change of each point's cell. Point p is entry p - block_first.
+     */
+    struct Scratch
+    {
+      std::vector<Tensor<2, dim>>                        grad_du;
+      std::vector<SymmetricTensor<2, dim>>               strain_increment;
+      std::vector<SymmetricTensor<2, dim>>               stress;
+      std::vector<double>                                state;
+      std::vector<Tensor<2, dim>>                        force_stress;
+      std::vector<typename AffineQ1Cell<dim>::Monomials> monomials;
+      std::vector<double>                                volume;
+      std::vector<double>                                mean_volume_change;
+      unsigned int                                       block_first = 0;
+
+      /// Start the block of @p n_points points from @p first, with
+      /// @p n_state state variables each; the arrays only grow.
+      void
+      start_block(const unsigned int first,
+                  const unsigned int n_points,
+                  const unsigned int n_state)
+      {
+        block_first = first;
+        if (grad_du.size() < n_points)
+          {
+            grad_du.resize(n_points);
+            strain_increment.resize(n_points);
+            stress.resize(n_points);
+            force_stress.resize(n_points);
+            monomials.resize(n_points);
+            volume.resize(n_points);
+            mean_volume_change.resize(n_points);
+            state.resize(n_points * n_state);
+          }
+      }
+    };
+
+    /// What the loop does, the same for all blocks of cells.
+    struct LoopKind
+    {
+      bool finite_strain;
+      bool fbar;
+      /// Small strain without F-bar: sym(grad du) suffices.
+      bool symmetric_small_strain;
+      /// Linear shape functions: every point's stencil is the cell's
+      /// vertices in their order, known at compile time.
+      bool vertex_stencil;
+    };
+
+    LoopKind
+    loop_kind() const;
+
     /**
      * The loop over cells and their points shared by evaluate() and
      * commit(), with du in the local storage @p du_values of a vector with
      * the layout of ghosted_layout(). evaluate() adds the forces into
-     * @p force, the local storage of a vector of the same layout; commit()
-     * writes the state into @p written, the points' set.
+     * @p force, the local storage of a vector of the same layout, and
+     * records in @p result; commit() writes the state into the points.
      *
-     * Per block of a few cells: grad du (or, where it suffices, sym grad
-     * du) at all their points, their stresses (one call of
-     * ConstitutiveModel::update_stresses() at small strain), and the forces
-     * cell by cell. The scratch arrays below hold the block's points.
+     * Per block of a few cells: block_kinematics(), block_stresses() and
+     * (evaluate()) block_forces(), with the block's points in the scratch
+     * arrays.
      */
     template <bool write_back>
     void
-    loop(const double          *du_values,
-         double                *force,
-         MaterialPointSet<dim> *written) const;
+    loop(const double *du_values, double *force, Evaluation &result) const;
 
     /**
-     * grad du at the points of the cell @p range into grad_du_scratch,
+     * grad du (or, where it suffices, sym grad du) at all points of the
+     * cells [@p c0, @p c1), and the strain increments (with F-bar the
+     * cells' mean volume changes).
+     */
+    void
+    block_kinematics(const LoopKind    &kind,
+                     const unsigned int c0,
+                     const unsigned int c1,
+                     const double      *du_values) const;
+
+    /**
+     * The stresses of the block's @p n_points points from @p first (one
+     * call of ConstitutiveModel::update_stresses() at small strain) and
+     * with them the volume-weighted stress measures of the forces and,
+     * for evaluate(), the dissipation; commit() writes the state.
+     */
+    template <bool write_back>
+    void
+    block_stresses(const LoopKind    &kind,
+                   const unsigned int first,
+                   const unsigned int n_points,
+                   Evaluation        &result) const;
+
+    /// The forces of the cells [@p c0, @p c1), added into @p force.
+    void
+    block_forces(const LoopKind    &kind,
+                 const unsigned int c0,
+                 const unsigned int c1,
+                 double            *force) const;
+
+    /**
+     * grad du at the points of the cell @p range into Scratch::grad_du,
      * from the cell's values
      * @p du_cell. With @p vertex_stencil (linear shape functions) every
      * stencil is the cell's vertices in their order, and the loops have
@@ -180,9 +264,9 @@ namespace qsmpm
     /**
      * cell_gradients() on an affine cell with linear shape functions, from
      * the points' positions (see AffineQ1Cell), keeping the points'
-     * monomials in monomial_scratch for the forces. With @p symmetric
+     * monomials in Scratch::monomials for the forces. With @p symmetric
      * (small strain without F-bar) only sym(grad du), the strain
-     * increments, straight into strain_increment_scratch (from the
+     * increments, straight into Scratch::strain_increment (from the
      * symmetric parts of the K_w), without grad du.
      */
     template <bool symmetric>
@@ -194,7 +278,7 @@ namespace qsmpm
 
     /**
      * The forces of affine_cell_kinematics<true>(): from the stresses in
-     * stress_scratch and the volumes in volume_scratch of the points of
+     * Scratch::stress and the volumes in Scratch::volume of the points of
      * the cell @p range, summed over their symmetric entries.
      */
     void
@@ -211,7 +295,7 @@ namespace qsmpm
 
     /**
      * Subtract the internal forces of the points of the cell @p range, from
-     * their stress measures in force_stress_scratch, from the cell's forces
+     * their stress measures in Scratch::force_stress, from the cell's forces
      * @p f_cell.
      */
     template <bool vertex_stencil>
@@ -220,38 +304,39 @@ namespace qsmpm
                     double                                    *f_cell) const;
 
     /**
-     * Small strain: from the strain increments in strain_increment_scratch
+     * Small strain: from the strain increments in Scratch::strain_increment
      * of the points @p first, ... of the block's batch @p old, their trial
      * stresses from one call of the model's batched update, and J and the
      * volume at the end of the step. evaluate() keeps the volumes in
-     * volume_scratch and volume times stress in force_stress_scratch (the
+     * Scratch::volume and volume times stress in Scratch::force_stress (the
      * latter not if every cell's forces come from
      * add_affine_symmetric_forces()); commit() writes strain, stress, J
-     * and volume into @p written.
+     * and volume into the points.
      */
     template <bool write_back>
     void
     small_strain_stresses(const PointStateBatch<dim> &old,
                           const unsigned int          first,
-                          MaterialPointSet<dim>      *written) const;
+                          Evaluation                 &result) const;
 
     /**
      * Finite strain: F = Delta F F_old and the Kirchhoff stress at each
      * point of the batch (with F-bar, the cell's mean volume change from
-     * mean_volume_change_scratch); evaluate() keeps Omega_0 P = Omega_0 tau
-     * Delta F^{-T} in force_stress_scratch (NaN at an inverted point); commit()
-     * writes the logarithmic strain, Cauchy stress, F, J and the volume.
+     * Scratch::mean_volume_change); evaluate() keeps Omega_0 P = Omega_0 tau
+     * Delta F^{-T} in Scratch::force_stress (NaN at an inverted point);
+     * commit() writes the logarithmic strain, Cauchy stress, F, J and the
+     * volume.
      */
     template <bool write_back>
     void
     finite_strain_stresses(const PointStateBatch<dim> &old,
                            const unsigned int          first,
-                           MaterialPointSet<dim>      *written) const;
+                           Evaluation                 &result) const;
 
     /**
      * F-bar: the volume-weighted mean over the points of the cell @p range
      * of the volume change of the step, Delta J (finite strain) or tr d eps
-     * (small strain), from the gradients in grad_du_scratch.
+     * (small strain), from the gradients in Scratch::grad_du.
      */
     double
     cell_mean_volume_change(const typename ShapeCache<dim>::CellRange &range,
@@ -285,8 +370,10 @@ namespace qsmpm
     void
     update_packed_state() const;
 
-    const BackgroundGrid<dim>    &grid;
-    const MaterialPointSet<dim>  &points;
+    const BackgroundGrid<dim>   &grid;
+    const MaterialPointSet<dim> &points;
+    /// The same points, for commit() only.
+    MaterialPointSet<dim>        &writable_points;
     const ShapeCache<dim>        &cache;
     const ConstitutiveModel<dim> &model;
     const bool                    update_volumes;
@@ -296,8 +383,8 @@ namespace qsmpm
     mutable TrilinosWrappers::MPI::Vector  du_ghosted;
     mutable std::unique_ptr<Epetra_Vector> local_force;
     /// Whether the model computes a dissipation (ConstitutiveModel::
-    /// computes_dissipation()): if not, dissipation() is 0 without asking
-    /// it at every point.
+    /// computes_dissipation()): if not, Evaluation::dissipation is 0 without
+    /// asking it at every point.
     const bool track_dissipation;
     /// Where the model's batched update finds the point state (in the
     /// packed record, or in the property array without a packed copy).
@@ -323,32 +410,14 @@ namespace qsmpm
     /// number) before the first gathering and after commit().
     mutable unsigned long packed_generation =
       std::numeric_limits<unsigned long>::max();
-    /// Scratch for the points of the cell being evaluated: grad du, the
-    /// strain increments, the trial stresses and fields, and the
-    /// volume-weighted stress measures of the forces.
-    mutable std::vector<Tensor<2, dim>>          grad_du_scratch;
-    mutable std::vector<SymmetricTensor<2, dim>> strain_increment_scratch;
-    mutable std::vector<SymmetricTensor<2, dim>> stress_scratch;
-    mutable std::vector<double>                  state_scratch;
-    mutable std::vector<Tensor<2, dim>>          force_stress_scratch;
-    /// The monomials of AffineQ1Cell at the cell's points.
-    mutable std::vector<typename AffineQ1Cell<dim>::Monomials> monomial_scratch;
-    mutable std::vector<double>                                volume_scratch;
-    /// F-bar at finite strain: the mean volume change of each point's cell.
-    mutable std::vector<double> mean_volume_change_scratch;
-    /// The first point of the block of cells whose points the scratch
-    /// arrays hold: point p is entry p - block_first.
-    mutable unsigned int block_first = 0;
+    mutable Scratch scratch;
     /// Communication plans owned -> relevant and back, built once: deal.II's
     /// vector assignment between layouts would rebuild one per evaluation.
     std::unique_ptr<Epetra_Import> importer;
     std::unique_ptr<Epetra_Export> exporter;
     /// Whether the ghosted layout is the owned one (one rank): evaluate()
     /// then needs neither.
-    bool                  same_layout      = false;
-    mutable unsigned long evaluation_count = 0;
-    mutable double        min_volume_ratio = 0.;
-    mutable double        dissipated       = 0.;
+    bool same_layout = false;
   };
 } // namespace qsmpm
 

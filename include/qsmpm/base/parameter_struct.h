@@ -15,6 +15,14 @@ namespace qsmpm
   namespace Utils
   {
     /**
+     * The inverse of the name mangling of ParameterHandler's JSON and XML
+     * output, which writes every character other than [a-zA-Z0-9] of a
+     * name as _xx (hex).
+     */
+    std::string
+    demangle(const std::string &name);
+
+    /**
      * Call @p add_parameters on @p prm, which declares entries bound to the
      * members of @p owner (ParameterHandler::add_parameter()), and let @p prm
      * keep @p owner alive: parsing @p prm writes into it.

@@ -108,10 +108,6 @@ namespace qsmpm
     /// engineering shear strains) of a stiffness tensor.
     static std::array<std::array<double, 6>, 6>
     to_voigt(const SymmetricTensor<4, 3> &C);
-
-    /// The stiffness tensor of a 6x6 Voigt matrix (its symmetric part).
-    static SymmetricTensor<4, 3>
-    from_voigt(const std::array<std::array<double, 6>, 6> &C);
   };
 } // namespace qsmpm
 

@@ -138,16 +138,14 @@ namespace qsmpm
      * temporaries of ML's Galerkin products in an AMG setup and the copy of
      * all particle data that deal.II's sorting of the particles makes for a
      * moment then stay resident for the rest of the run, and the blocks
-     * allocated later fragment the heap further (measured on the strip
-     * benchmark, 256 x 256 cells, with AMG: 117 MB of free heap after the
-     * AMG setup; a peak of 488 MB without and 463 MB with mmap, see
-     * doc/benchmarks.md).
+     * allocated later fragment the heap further, which raises the peak
+     * memory of a run (figures in doc/benchmarks.md).
      *
      * Blocks below the threshold stay on the heap, where a block that is
      * freed and allocated again costs no page faults: choose it above the
      * size of the vectors that the Krylov solver and the preconditioner
      * allocate in every iteration (with glibc's default of 128 KiB, the
-     * page faults of those made the strip benchmark 10-20% slower).
+     * page faults of those slow the solver down noticeably).
      */
     void
     return_large_blocks_to_system(const std::size_t smallest_block);

@@ -11,22 +11,28 @@
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
+#include <qsmpm/core/path_following_setup.h>
+#include <qsmpm/core/step_constraint_maker.h>
 #include <qsmpm/core/step_operator.h>
+#include <qsmpm/core/step_report.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/io/probe_writer.h>
+#include <qsmpm/io/run_state.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/loading/equilibrium_audit.h>
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
-#include <qsmpm/loading/opening_gauge.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
 #include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
+#include <qsmpm/solvers/preconditioner_reuse.h>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace qsmpm
@@ -47,6 +53,15 @@ namespace qsmpm
    * It can be set up from a .prm file (initialize()) or piece by piece from
    * C++ (grid(), set_model(), points(), boundary_conditions(),
    * parameters()).
+   *
+   * run() is a loop over load steps, each a call of take_step(): an attempt
+   * (advance(), or advance_path_following() with Load stepping/Control =
+   * dissipation or opening), then either reject_step() (a cut-back) or the
+   * progress line, write_step_output() and a checkpoint. Its parts live in
+   * classes of their own: the step's constraints (StepConstraintMaker), the
+   * reuse of preconditioners (PreconditionerReuse), path following
+   * (PathFollowingSetup) and the state of the run that checkpoints keep
+   * (RunState).
    */
   template <int dim>
   class QuasiStaticProblem
@@ -75,17 +90,27 @@ namespace qsmpm
     };
 
     /// What happened in one accepted load step.
-    struct StepReport
-    {
-      unsigned int step;
-      double       load_factor;
-      unsigned int cut_backs;
-      NewtonReport newton;
-      double       wall_time;
-    };
+    using StepReport = qsmpm::StepReport;
 
     explicit QuasiStaticProblem(const MPI_Comm communicator);
     ~QuasiStaticProblem();
+
+    /**
+     * Opt in to the memory policy of qsmpm's programs (the driver, the
+     * examples and the benchmarks call it right after construction). It
+     * changes the C library's allocator for the whole process, which is
+     * why the library does not do it by itself: from now on every block
+     * of 128 KiB or more comes from mmap and goes back to the system when
+     * freed, and once the degrees of freedom are known (the first load
+     * step) only blocks of more than one and a half vectors of the grid's
+     * dofs do, while the vectors that the Krylov solver and the
+     * preconditioner allocate in every iteration stay on the heap. Without
+     * it the large temporaries of an AMG set-up and of the sorting of the
+     * points stay resident for the rest of the run (see
+     * Utils::return_large_blocks_to_system()).
+     */
+    void
+    return_large_blocks_to_system();
 
     /**
      * Set up everything from a parsed ParameterHandler (declared with
@@ -218,55 +243,15 @@ namespace qsmpm
     timer();
 
   private:
+    /// Residual, preconditioner and vectors for the grid's degrees of
+    /// freedom (made again after resume()).
     void
     setup_step_data();
-
-    /// The degrees of freedom without enough material (no equation).
-    IndexSet
-    inactive_dofs() const;
-
-    /**
-     * The degrees of freedom whose stiffness against their own motion (the
-     * diagonal of the tangent, TangentAssembler::assemble_diagonal()) is at
-     * most <Material points/Minimum nodal stiffness> times the mean over
-     * the dofs: held fixed in the step.
-     */
-    IndexSet
-    dofs_without_stiffness() const;
-
-    /// The diagonal of the tangent at the points (into @p diagonal) and its
-    /// mean over the dofs that have stiffness.
-    double
-    mean_stiffness(VectorType &diagonal) const;
-
-    /**
-     * The closed constraints of the step t_old -> t_new: those of the
-     * displacement conditions (and periodicity), checked against the
-     * material, and zero increments on the nodes without enough material.
-     */
-    void
-    make_step_constraints(const double               t_old,
-                          const double               t_new,
-                          AffineConstraints<double> &constraints);
 
     /// Shape functions, constraints of t_old -> t_new, loads and the
     /// preconditioner of a step.
     void
     prepare_step(const double t_old, const double t_new);
-
-    /// Count a step of the current preconditioner; mark it for a rebuild
-    /// after a failure (including a step check_volume_ratios() rejected)
-    /// or when GMRES slowed down (reuse growth).
-    void
-    count_preconditioner_use(const NewtonReport &report);
-
-    /// Reject a converged step that turned a point inside out. If
-    /// @p last_evaluation_at_du, the solver's last residual evaluation was
-    /// at du (NewtonKrylov guarantees it), and its volume ratios serve.
-    void
-    check_volume_ratios(const StepOperator<dim> &op,
-                        NewtonReport            &report,
-                        const bool               last_evaluation_at_du);
 
     /**
      * The force balance of the converged step to @p t_new (before it is
@@ -281,15 +266,38 @@ namespace qsmpm
     void
     commit_step();
 
+    /// The start of run(): restore a resumed run, print the header, write
+    /// the initial fields and choose the probes.
+    void
+    start_run(LoadStepper       &stepper,
+              OutputWriter<dim> &writer,
+              ProbeWriter<dim>  &probes);
+
     /**
      * One attempt at the next load step of run(), with its progress line
      * and output; false if the step callback asked to stop.
      */
     bool
-    take_step(LoadStepper                    &stepper,
-              OutputWriter<dim>              &writer,
-              ProbeWriter<dim>               &probes,
-              const std::vector<std::string> &names);
+    take_step(LoadStepper       &stepper,
+              OutputWriter<dim> &writer,
+              ProbeWriter<dim>  &probes);
+
+    /// After a failed attempt at t_old -> t_new: try again with a new
+    /// preconditioner, or cut the increment back.
+    void
+    reject_step(LoadStepper        &stepper,
+                const NewtonReport &newton,
+                const double        t_old,
+                const double        t_new);
+
+    /// reactions.csv, probes.csv and the fields of an accepted step to
+    /// @p t_new (@p stop: the last step of the run).
+    void
+    write_step_output(const LoadStepper &stepper,
+                      OutputWriter<dim> &writer,
+                      ProbeWriter<dim>  &probes,
+                      const double       t_new,
+                      const bool         stop);
 
     /**
      * After an error in run(): write the fields of the last accepted step
@@ -299,77 +307,198 @@ namespace qsmpm
     std::string
     write_last_converged_state(OutputWriter<dim> &writer);
 
-    /// Whether path following has checked that the prescribed
-    /// displacements are proportional to the load factor.
-    bool proportionality_checked = false;
-    /// With Control = opening: the gauge (made by run()).
-    std::unique_ptr<OpeningGauge<dim>> gauge;
-
-    MPI_Comm                                  communicator;
-    ConditionalOStream                        progress;
-    TimerOutput                               timer_output;
-    Parameters                                prm_values;
-    BackgroundGrid<dim>                       background_grid;
-    std::unique_ptr<ConstitutiveModel<dim>>   model;
-    std::unique_ptr<MaterialPointSet<dim>>    material_points;
-    BoundaryDescriptor<dim>                   bcs;
-    DisplacementConstraints<dim>              displacement_constraints;
-    ExternalForceAssembler<dim>               external_force;
-    EquilibriumAudit<dim>                     audit;
-    typename EquilibriumAudit<dim>::Result    last_audit;
-    /// The largest scale of the loads of the steps so far (see
-    /// EquilibriumAudit::evaluate()).
-    double load_scale = 0.;
-    bool   lost_load_warned = false;
+    MPI_Comm                                communicator;
+    ConditionalOStream                      progress;
+    TimerOutput                             timer_output;
+    Parameters                              prm_values;
+    BackgroundGrid<dim>                     background_grid;
+    std::unique_ptr<ConstitutiveModel<dim>> model;
+    std::unique_ptr<MaterialPointSet<dim>>  material_points;
+    BoundaryDescriptor<dim>                 bcs;
+    DisplacementConstraints<dim>            displacement_constraints;
+    ExternalForceAssembler<dim>             external_force;
+    EquilibriumAudit<dim>                   audit;
+    typename EquilibriumAudit<dim>::Result  last_audit;
+    bool                                    lost_load_warned = false;
+    /// Whether return_large_blocks_to_system() was called.
+    bool manage_heap = false;
     /// The degrees of freedom of the step held for lack of material or
     /// stiffness.
     IndexSet held_dofs;
     /// Whether the points hold the state of the last accepted step (false
     /// while commit_step() works), its step and load factor, and the last
     /// step whose fields were written.
-    bool         points_consistent  = true;
-    unsigned int last_step          = 0;
-    double       last_load_factor   = 0.;
-    int          last_written_step  = -1;
+    bool                                      points_consistent = true;
+    unsigned int                              last_step         = 0;
+    double                                    last_load_factor  = 0.;
+    int                                       last_written_step = -1;
     ShapeCache<dim>                           cache;
+    StepConstraintMaker<dim>                  constraint_maker;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
     GhostPenalty<dim>                         ghost_penalty;
     Preconditioner<dim>                       preconditioner;
-    /// Load steps the preconditioner has served (0: build one before the
-    /// next step), and its GMRES iterations per Newton iteration in the
-    /// first of them (see Nonlinear solver/Preconditioner reuse steps).
-    unsigned int preconditioner_age    = 0;
-    double       preconditioner_rate   = 0.;
-    unsigned int preconditioner_builds = 0;
-    /// Whether the last prepare_step() kept an earlier preconditioner.
-    bool            preconditioner_reused = false;
-    StepConstraints step_constraints;
-    VectorType      du;
+    PreconditionerReuse                       preconditioner_reuse;
+    PathFollowingSetup<dim>                   path_following;
+    StepConstraints                           step_constraints;
+    VectorType                                du;
     /// With Initial guess = extrapolation: the increments of the last
     /// converged load step and its load-factor increment (0: none, the
     /// next step starts from the linear predictor).
-    VectorType                              last_increment;
-    double                                  last_load_increment = 0.;
-    VectorType                              R;
-    VectorType                              f_ext;
-    std::vector<Tensor<1, dim>>             last_reactions;
-    std::vector<StepReport>                 reports;
-    std::function<bool(const StepReport &)> step_callback;
-
-    // Checkpoints: what resume() read, for run(), and the caller's state.
-    void
-    write_checkpoint(const LoadStepper       &stepper,
-                     const OutputWriter<dim> &writer);
-    void
-    restore_run_state(LoadStepper &stepper, OutputWriter<dim> &writer);
-
-    bool                                     resumed      = false;
-    unsigned int                             resumed_step = 0;
-    std::string                              resume_state;
+    VectorType last_increment;
+    double     last_load_increment = 0.;
+    VectorType R;
+    VectorType f_ext;
+    /// Reactions, load scale and step reports; checkpoints.
+    RunState<dim> run_state;
+    /// The names of the columns of reactions.csv.
+    std::vector<std::string>                 condition_names;
+    std::function<bool(const StepReport &)>  step_callback;
     std::function<std::string()>             save_user_state;
     std::function<void(const std::string &)> restore_user_state;
   };
+
+
+
+  template <int dim>
+  inline BackgroundGrid<dim> &
+  QuasiStaticProblem<dim>::grid()
+  {
+    return background_grid;
+  }
+
+
+
+  template <int dim>
+  inline MaterialPointSet<dim> &
+  QuasiStaticProblem<dim>::points()
+  {
+    return const_cast<MaterialPointSet<dim> &>(std::as_const(*this).points());
+  }
+
+
+
+  template <int dim>
+  inline const MaterialPointSet<dim> &
+  QuasiStaticProblem<dim>::points() const
+  {
+    AssertThrow(material_points,
+                ExcMessage("Choose a constitutive model (set_model) before "
+                           "adding material points."));
+    return *material_points;
+  }
+
+
+
+  template <int dim>
+  inline BoundaryDescriptor<dim> &
+  QuasiStaticProblem<dim>::boundary_conditions()
+  {
+    return bcs;
+  }
+
+
+
+  template <int dim>
+  inline typename QuasiStaticProblem<dim>::Parameters &
+  QuasiStaticProblem<dim>::parameters()
+  {
+    return prm_values;
+  }
+
+
+
+  template <int dim>
+  inline void
+  QuasiStaticProblem<dim>::set_checkpoint_state(
+    const std::function<std::string()>             &save,
+    const std::function<void(const std::string &)> &restore)
+  {
+    save_user_state    = save;
+    restore_user_state = restore;
+  }
+
+
+
+  template <int dim>
+  inline unsigned int
+  QuasiStaticProblem<dim>::n_preconditioner_builds() const
+  {
+    return preconditioner_reuse.n_builds();
+  }
+
+
+
+  template <int dim>
+  inline const std::vector<typename QuasiStaticProblem<dim>::StepReport> &
+  QuasiStaticProblem<dim>::step_reports() const
+  {
+    return run_state.reports;
+  }
+
+
+
+  template <int dim>
+  inline void
+  QuasiStaticProblem<dim>::set_step_callback(
+    const std::function<bool(const StepReport &)> &callback)
+  {
+    step_callback = callback;
+  }
+
+
+
+  template <int dim>
+  inline const std::vector<Tensor<1, dim>> &
+  QuasiStaticProblem<dim>::reactions() const
+  {
+    return run_state.reactions;
+  }
+
+
+
+  template <int dim>
+  inline const typename QuasiStaticProblem<dim>::VectorType &
+  QuasiStaticProblem<dim>::increment() const
+  {
+    return du;
+  }
+
+
+
+  template <int dim>
+  inline const typename EquilibriumAudit<dim>::Result &
+  QuasiStaticProblem<dim>::equilibrium() const
+  {
+    return last_audit;
+  }
+
+
+
+  template <int dim>
+  inline const TrilinosWrappers::SparseMatrix &
+  QuasiStaticProblem<dim>::stiffness() const
+  {
+    return tangent.matrix();
+  }
+
+
+
+  template <int dim>
+  inline ConditionalOStream &
+  QuasiStaticProblem<dim>::pcout()
+  {
+    return progress;
+  }
+
+
+
+  template <int dim>
+  inline TimerOutput &
+  QuasiStaticProblem<dim>::timer()
+  {
+    return timer_output;
+  }
 } // namespace qsmpm
 
 #endif

@@ -3,10 +3,13 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <iomanip>
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/step_constraints.h>
+#include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
+#include <sstream>
 
 namespace qsmpm
 {
@@ -21,6 +24,8 @@ namespace qsmpm
   {
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
+    /// What a residual evaluation found on this rank's points.
+    using Evaluation = typename QuasiStaticResidual<dim>::Evaluation;
 
     /// The step's operator; @p ghost_penalty, if given, stabilizes the
     /// nodes of cut cells.
@@ -36,14 +41,16 @@ namespace qsmpm
     }
 
     /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
-    /// penalty, if any), with coupled rows added to their masters.
-    void
+    /// penalty, if any), with coupled rows added to their masters; returns
+    /// what the evaluation found on this rank's points.
+    Evaluation
     residual(const VectorType &du, VectorType &R) const
     {
-      residual_evaluator.evaluate(du, R);
+      const Evaluation evaluation = residual_evaluator.evaluate(du, R);
       if (ghost_penalty != nullptr)
         ghost_penalty->subtract_forces(du, R);
       constraints.condense(R);
+      return evaluation;
     }
 
     /// Zero the rows without an equation of a residual-like vector.
@@ -73,14 +80,41 @@ namespace qsmpm
     }
 
     /**
-     * The energy all points dissipate in the trial state of the last
-     * residual() (summed over the ranks), for path following.
+     * The energy all points dissipate in the trial state of the residual()
+     * that returned @p evaluation (summed over the ranks), for path
+     * following.
      */
     double
-    dissipation() const
+    dissipation(const Evaluation &evaluation) const
     {
-      return dealii::Utilities::MPI::sum(residual_evaluator.dissipation(),
+      return dealii::Utilities::MPI::sum(evaluation.dissipation,
                                          constraints.get_communicator());
+    }
+
+    /**
+     * Reject a converged step whose solution, the state of the residual()
+     * that returned @p evaluation, turned a point inside out: at small
+     * strain J = (1 + tr d eps) J_old can pass zero while the residual
+     * stays finite. Such a step fails (and is cut back) like one that did
+     * not converge.
+     */
+    void
+    reject_inverted_points(const Evaluation &evaluation,
+                           NewtonReport     &report) const
+    {
+      if (!report.converged)
+        return;
+      const double min_J =
+        dealii::Utilities::MPI::min(evaluation.minimum_volume_ratio,
+                                    constraints.get_communicator());
+      if (!(min_J > 0.))
+        {
+          std::ostringstream message;
+          message << "a material point was turned inside out (J = "
+                  << std::setprecision(3) << min_J << " <= 0)";
+          report.converged = false;
+          report.failure   = message.str();
+        }
     }
 
     void

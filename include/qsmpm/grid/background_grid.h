@@ -176,6 +176,14 @@ namespace qsmpm
     min_cell_size() const;
 
     /**
+     * The vertices of the coarse grid, which every rank holds, each once:
+     * all of them, or, if there are more than @p max_count, every k-th of
+     * them (in the same order on every rank), at most @p max_count.
+     */
+    std::vector<Point<dim>>
+    coarse_vertices(const std::size_t max_count) const;
+
+    /**
      * Whether the (bi/tri)linear map of @p cell is affine,
      * x = vertex(0) + J xi (a parallelogram or parallelepiped: every cell
      * of a Cartesian grid), to 1e-12 of |J|; @p jacobian is J, columns

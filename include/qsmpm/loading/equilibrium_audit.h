@@ -8,6 +8,7 @@
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/displacement_constraints.h>
+#include <qsmpm/particles/shape_cache.h>
 #include <string>
 #include <vector>
 
@@ -87,8 +88,8 @@ namespace qsmpm
       /// The number of held degrees of freedom with a force on them.
       unsigned int n_held_loaded = 0;
       /// The number of GIMP points whose domain reaches beyond the grid,
-      /// and the one that reaches furthest (set by the caller, who knows the points; they
-      /// are named when E is a cause).
+      /// and the one that reaches furthest (set by the caller, who knows the
+      /// points; they are named when E is a cause).
       unsigned int n_points_beyond_grid = 0;
       Point<dim>   point_beyond_grid;
       /// The size of the loads the imbalance is measured against.
@@ -115,7 +116,27 @@ namespace qsmpm
        */
       std::string
       causes(const double tolerance, const double residual_tolerance) const;
+
+      /**
+       * The sentence that reports the loss of a converged step to load
+       * factor @p t_new that lost load (see causes()), with its causes.
+       */
+      std::string
+      lost_load(const double t_new,
+                const double tolerance,
+                const double residual_tolerance) const;
     };
+
+    /**
+     * Set n_points_beyond_grid and point_beyond_grid of @p result: the GIMP
+     * points of @p cache (over all ranks of @p communicator) whose domains
+     * reach beyond the grid's edge, where load leaves, and the one with
+     * the most weight there. Collective.
+     */
+    static void
+    locate_points_beyond_grid(const ShapeCache<dim> &cache,
+                              const MPI_Comm         communicator,
+                              Result                &result);
 
     /**
      * The balance of a converged step: @p R is the condensed residual at

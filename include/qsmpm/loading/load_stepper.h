@@ -81,6 +81,26 @@ namespace qsmpm
       add_parameters(ParameterHandler &prm);
     };
 
+    /// How the load factor of a step is found (the entry Control).
+    enum class Control
+    {
+      /// Prescribed (the paper's method).
+      displacement,
+      /// An unknown: the step dissipates a given energy.
+      dissipation,
+      /// An unknown: the step opens a gauge by a given length.
+      opening
+    };
+
+    /// The Control of the text of the entry ("displacement",
+    /// "dissipation" or "opening"); throws for any other.
+    static Control
+    parse_control(const std::string &name);
+
+    /// The text of the entry Control for @p control.
+    static std::string
+    to_string(const Control control);
+
     explicit LoadStepper(const Parameters &parameters);
 
     /// The parameters the stepper was made with.
@@ -119,8 +139,8 @@ namespace qsmpm
     bool
     path_following() const;
 
-    /// The entry Control: "displacement", "dissipation" or "opening".
-    const std::string &
+    /// The entry Control.
+    Control
     control() const;
 
     /// With path following: what the next attempt must dissipate (Control
@@ -194,11 +214,13 @@ namespace qsmpm
     increment_cap() const;
 
     const Parameters parameters;
-    const double     nominal_increment;
-    double           t         = 0.;
-    double           increment = 0.;
-    unsigned int     n_steps   = 0;
-    unsigned int     cut_backs = 0;
+    /// The entry Control, parsed.
+    Control      control_type = Control::displacement;
+    const double nominal_increment;
+    double       t         = 0.;
+    double       increment = 0.;
+    unsigned int n_steps   = 0;
+    unsigned int cut_backs = 0;
     /// Path following: the nominal and the cut-back target of a step's
     /// constraint (dissipation or opening), and the force.
     double nominal_target = 0.;

@@ -51,10 +51,6 @@ namespace qsmpm
     MPI_Comm
     get_communicator() const;
 
-    /// Whether any rank has a coupled (periodic) degree of freedom.
-    bool
-    has_couplings() const;
-
     /// du_i = sum_j c_ij du_j + b_i on the constrained components.
     void
     distribute(VectorType &du) const;

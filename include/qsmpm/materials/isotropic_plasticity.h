@@ -51,8 +51,8 @@ namespace qsmpm
    * the preconditioner at the start of a step) is the elastic D. At a zero
    * increment the algorithmic tangent of a point on the yield surface is
    * only one-sided; the continuum elastoplastic tangent (continuum_tangent())
-   * was tried and measured worse as a preconditioner on the footing with
-   * F-bar (GMRES up to 1000 iterations, failed Newton steps), because the
+   * was tried and is worse as a preconditioner on the footing with
+   * F-bar (GMRES stalls, Newton steps fail), because the
    * assembled matrix lacks the F-bar linearization and is nearly singular
    * in the deviatoric and locked in the volumetric directions. The same
    * rule applies to consistent_tangent() with a zero increment.

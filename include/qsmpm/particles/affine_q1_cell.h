@@ -9,8 +9,8 @@
 
 // Every loop below has bounds known at compile time (dim, 2^dim) and is
 // unrolled completely (#pragma GCC unroll), so that the conditions on bits
-// fold away: without it the residual's kernel is 1.5x slower (3.1 against
-// 2.1 ms on the 2D block of doc/benchmarks.md).
+// fold away; without it the residual's kernel is markedly slower (figures in
+// doc/benchmarks.md).
 
 namespace qsmpm
 {
@@ -55,8 +55,8 @@ namespace qsmpm
       SymmetricTensor<2, dim>::n_independent_components;
     /// Row and column of the entries of a symmetric tensor in deal.II's
     /// unrolled order, as a table made at compile time (called in the
-    /// loops, SymmetricTensor::unrolled_to_component_indices() was not
-    /// folded away: b15.prm 7 % slower).
+    /// loops, SymmetricTensor::unrolled_to_component_indices() is not
+    /// folded away).
     static constexpr std::array<std::array<unsigned int, 2>, n_sym>
       unrolled_indices = [] {
         std::array<std::array<unsigned int, 2>, n_sym> table{};

@@ -112,10 +112,6 @@ namespace qsmpm
     }
   };
 
-  /// "small strain" or "finite strain".
-  Kinematics
-  parse_kinematics(const std::string &name);
-
   /// "linear", "uGIMP" or "cpGIMP".
   ShapeFunctions
   parse_shape_functions(const std::string &name);

@@ -199,6 +199,17 @@ namespace qsmpm
     types::particle_index
     sort_into_cells();
 
+    /**
+     * sort_into_cells() after a step in which a point moved at most
+     * @p moved (advect()); throws with a message if points were lost: in a
+     * parallel run, deal.II finds a point's new cell only among the
+     * neighbours of its old one (the ghost layer), so a point that moved
+     * more than a cell is lost there; otherwise points that left the grid
+     * are.
+     */
+    void
+    sort_into_cells_without_loss(const double moved);
+
     Particles::ParticleHandler<dim> &
     get_particle_handler();
     const Particles::ParticleHandler<dim> &

@@ -75,24 +75,15 @@ namespace qsmpm
       dst.add(-1., R_du);
       dst *= 1. / h;
       op.set_constrained_to_zero(dst);
-      ++n_products;
-    }
-
-    /// Number of products (residual evaluations) so far.
-    unsigned int
-    n_vmults() const
-    {
-      return n_products;
     }
 
   private:
-    const Operator      &op;
-    const VectorType    &du;
-    const VectorType    &R_du;
-    const double         sqrt_eps_prec;
-    const double         increment_scale;
-    mutable VectorType   perturbed;
-    mutable unsigned int n_products = 0;
+    const Operator    &op;
+    const VectorType  &du;
+    const VectorType  &R_du;
+    const double       sqrt_eps_prec;
+    const double       increment_scale;
+    mutable VectorType perturbed;
   };
 } // namespace qsmpm
 

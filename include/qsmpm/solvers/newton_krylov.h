@@ -10,6 +10,8 @@
 #include <qsmpm/solvers/jacobian_free_operator.h>
 #include <qsmpm/solvers/newton_parameters.h>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace qsmpm
@@ -40,6 +42,13 @@ namespace qsmpm
 
   namespace internal
   {
+    /// What Operator::residual() returns besides the residual.
+    template <typename Operator, typename VectorType>
+    using EvaluationOf =
+      std::decay_t<decltype(std::declval<const Operator &>().residual(
+        std::declval<const VectorType &>(),
+        std::declval<VectorType &>()))>;
+
     /**
      * An operator's preconditioner as deal.II's solvers want it (a vmult()),
      * mapping residual-like Krylov vectors to admissible corrections; shared
@@ -85,7 +94,63 @@ namespace qsmpm
                     const double            force_level)
     {
       return parameters.tolerance *
-             std::max({parameters.residual_floor, reference, 1e-6 * force_level});
+             std::max(
+               {parameters.residual_floor, reference, 1e-6 * force_level});
+    }
+
+    /// What one GMRES solve did.
+    struct LinearSolve
+    {
+      unsigned int iterations;
+      /// Reduction of the linear residual that was reached.
+      double reduction;
+    };
+
+    /**
+     * The linear solve of both Newton solvers: GMRES on J s = rhs to the
+     * relative tolerance @p tolerance, with the operator's preconditioner
+     * on the right, so that GMRES measures the true residual. The
+     * constrained components of @p rhs are zeroed first, and @p s satisfies
+     * the homogeneous constraints on return (zero if @p rhs is). A
+     * correction that GMRES does not solve to the tolerance is returned
+     * all the same (an inexact correction is still a descent direction in
+     * most cases; Newton's test decides) and counted in
+     * report.inexact_linear_solves; the iterations are added to
+     * report.linear_iterations.
+     */
+    template <typename Operator, typename VectorType>
+    LinearSolve
+    solve_correction(const Operator                                   &op,
+                     const JacobianFreeOperator<Operator, VectorType> &J,
+                     const NewtonParameters &parameters,
+                     const double            tolerance,
+                     VectorType             &rhs,
+                     VectorType             &s,
+                     NewtonReport           &report)
+    {
+      op.set_constrained_to_zero(rhs);
+      s                     = 0.;
+      const double rhs_norm = rhs.l2_norm();
+      if (rhs_norm == 0.)
+        return {0, 0.};
+      SolverControl control(parameters.max_linear_iterations,
+                            tolerance * rhs_norm,
+                            /*log_history=*/false,
+                            /*log_result=*/false);
+      typename SolverGMRES<VectorType>::AdditionalData data(
+        parameters.gmres_restart + 2, /*right_preconditioning=*/true);
+      SolverGMRES<VectorType> gmres(control, data);
+      try
+        {
+          gmres.solve(J, s, rhs, AdmissiblePreconditioner<Operator>{op});
+        }
+      catch (const SolverControl::NoConvergence &)
+        {
+          ++report.inexact_linear_solves;
+        }
+      op.make_admissible(s);
+      report.linear_iterations += control.last_step();
+      return {control.last_step(), control.last_value() / rhs_norm};
     }
   } // namespace internal
 
@@ -98,7 +163,10 @@ namespace qsmpm
    * JacobianFreeOperator.
    *
    * Operator is the nonlinear problem of one load step and must provide
-   *   - void residual(const VectorType &du, VectorType &R) const;
+   *   - Evaluation residual(const VectorType &du, VectorType &R) const;
+   *     (R(du), and what else the evaluation found, e.g. the smallest
+   *     volume ratio of the points: a copyable type, returned by solve()
+   *     for the solution);
    *   - void set_constrained_to_zero(VectorType &v) const;
    *     (residual space: zero the rows without an equation);
    *   - void make_admissible(VectorType &v) const;
@@ -121,6 +189,9 @@ namespace qsmpm
   class NewtonKrylov
   {
   public:
+    /// What Operator::residual() returns besides the residual.
+    using Evaluation = typename internal::EvaluationOf<Operator, VectorType>;
+
     /**
      * With NewtonParameters::verbose, one line per iteration goes to
      * @p log (a ConditionalOStream that is active on one rank only).
@@ -158,13 +229,23 @@ namespace qsmpm
      * constrained part, as above, at the cost of one more residual.
      * (InitialGuess::boundary_values: @p du is du_0.)
      *
-     * On a converged return, @p R is R(@p du) and the last call of
-     * op.residual() was at @p du (no Jacobian product follows the last
-     * update): whatever the operator records of its last evaluation (the
-     * smallest volume ratio of the points) is that of the solution.
+     * On return, @p R is R(@p du), and @p evaluation what the evaluation
+     * of that residual found (Operator::residual()'s return value, e.g.
+     * the smallest volume ratio of the points).
      */
     NewtonReport
     solve(const Operator &op, VectorType &du, VectorType &R) const
+    {
+      Evaluation evaluation;
+      return solve(op, du, R, evaluation);
+    }
+
+    /// As above, with what the evaluation of the returned residual found.
+    NewtonReport
+    solve(const Operator &op,
+          VectorType     &du,
+          VectorType     &R,
+          Evaluation     &evaluation) const
     {
       NewtonReport report;
       VectorType   s, rhs, trial;
@@ -188,7 +269,7 @@ namespace qsmpm
           reference   = internal::free_norm(op, R, rhs);
           force_level = R.l2_norm();
         }
-      op.residual(du, R);
+      evaluation  = op.residual(du, R);
       double norm = internal::free_norm(op, R, rhs);
       if (parameters.initial_guess != InitialGuess::extrapolation)
         {
@@ -203,7 +284,7 @@ namespace qsmpm
       double forcing = parameters.linear_tolerance, previous_norm = reference;
       if (parameters.initial_guess == InitialGuess::linear_predictor &&
           norm > target && std::isfinite(norm))
-        norm = predict(op, du, R, report);
+        norm = predict(op, du, R, evaluation, report);
 
       for (unsigned int n = report.newton_iterations;; ++n)
         {
@@ -241,8 +322,8 @@ namespace qsmpm
           rhs *= -1.;
           const JacobianFreeOperator<Operator, VectorType> J(
             op, du, R, parameters.sqrt_eps_prec);
-          const LinearSolve linear =
-            solve_linear(op, J, rhs, forcing, s, report);
+          const internal::LinearSolve linear = internal::solve_correction(
+            op, J, parameters, forcing, rhs, s, report);
           if (!std::isfinite(s.l2_norm()))
             {
               report.failure = "GMRES returned a correction that is not a "
@@ -256,13 +337,14 @@ namespace qsmpm
             {
               trial = du;
               trial.add(alpha, s);
-              op.residual(trial, R);
-              const double trial_norm = internal::free_norm(op, R, rhs);
+              const Evaluation trial_evaluation = op.residual(trial, R);
+              const double     trial_norm = internal::free_norm(op, R, rhs);
               if (k == parameters.max_line_search_steps ||
                   (std::isfinite(trial_norm) &&
                    trial_norm <= (1. - 1e-4 * alpha) * norm))
                 {
-                  norm = trial_norm;
+                  norm       = trial_norm;
+                  evaluation = trial_evaluation;
                   break;
                 }
               alpha *= 0.5;
@@ -297,13 +379,15 @@ namespace qsmpm
     }
 
     /**
-     * The linear predictor (see solve()): replaces @p du by b + g + s and
-     * @p R by its residual; returns the norm of the free part of R.
+     * The linear predictor (see solve()): replaces @p du by b + g + s,
+     * @p R by its residual and @p evaluation by what its evaluation found;
+     * returns the norm of the free part of R.
      */
     double
     predict(const Operator &op,
             VectorType     &du,
             VectorType     &R,
+            Evaluation     &evaluation,
             NewtonReport   &report) const
     {
       VectorType base(du), rhs(du), s(du);
@@ -318,10 +402,10 @@ namespace qsmpm
       J.vmult(rhs, s);
       rhs += R;
       rhs *= -1.;
-      const LinearSolve linear =
-        solve_linear(op, J, rhs, parameters.linear_tolerance, s, report);
+      const internal::LinearSolve linear = internal::solve_correction(
+        op, J, parameters, parameters.linear_tolerance, rhs, s, report);
       du += s;
-      op.residual(du, R);
+      evaluation               = op.residual(du, R);
       const double norm        = internal::free_norm(op, R, rhs);
       report.newton_iterations = 1;
       report.residual_history.push_back(norm);
@@ -329,62 +413,12 @@ namespace qsmpm
       return norm;
     }
 
-    /// What one GMRES solve did.
-    struct LinearSolve
-    {
-      unsigned int iterations;
-      /// Reduction of the linear residual that was reached.
-      double reduction;
-    };
-
-    /**
-     * GMRES on J s = rhs (constrained components of rhs and s zero) to the
-     * relative tolerance @p tolerance, with the operator's preconditioner on
-     * the right, so that GMRES measures the true residual.
-     */
-    LinearSolve
-    solve_linear(const Operator                                   &op,
-                 const JacobianFreeOperator<Operator, VectorType> &J,
-                 VectorType                                       &rhs,
-                 const double                                      tolerance,
-                 VectorType                                       &s,
-                 NewtonReport                                     &report) const
-    {
-      op.set_constrained_to_zero(rhs);
-      s                      = 0.;
-      const double  rhs_norm = rhs.l2_norm();
-      SolverControl control(parameters.max_linear_iterations,
-                            tolerance * rhs_norm,
-                            /*log_history=*/false,
-                            /*log_result=*/false);
-      typename SolverGMRES<VectorType>::AdditionalData data(
-        parameters.gmres_restart + 2, /*right_preconditioning=*/true);
-      SolverGMRES<VectorType> gmres(control, data);
-      try
-        {
-          gmres.solve(J,
-                      s,
-                      rhs,
-                      internal::AdmissiblePreconditioner<Operator>{op});
-        }
-      catch (const SolverControl::NoConvergence &)
-        {
-          // An inexact correction is still a descent direction in most
-          // cases; Newton's test decides.
-          ++report.inexact_linear_solves;
-        }
-      op.make_admissible(s);
-      report.linear_iterations += control.last_step();
-      return {control.last_step(),
-              rhs_norm > 0. ? control.last_value() / rhs_norm : 0.};
-    }
-
     /// One line per Newton iteration if verbose.
     void
-    print_iteration(const NewtonReport &report,
-                    const double        norm,
-                    const LinearSolve  &linear,
-                    const double        alpha) const
+    print_iteration(const NewtonReport          &report,
+                    const double                 norm,
+                    const internal::LinearSolve &linear,
+                    const double                 alpha) const
     {
       if (log != nullptr)
         *log << "    newton " << std::setw(2) << report.newton_iterations

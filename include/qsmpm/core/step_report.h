@@ -1,0 +1,32 @@
+#ifndef qsmpm_core_step_report_h
+#define qsmpm_core_step_report_h
+
+#include <qsmpm/solvers/newton_krylov.h>
+#include <string>
+
+namespace qsmpm
+{
+  /**
+   * What happened in one accepted load step of QuasiStaticProblem::run()
+   * (QuasiStaticProblem::StepReport).
+   */
+  struct StepReport
+  {
+    unsigned int step;
+    double       load_factor;
+    unsigned int cut_backs;
+    NewtonReport newton;
+    double       wall_time;
+
+    /**
+     * The progress line of the step: load factor, Newton and GMRES
+     * iterations, the residual norms, the fraction of the load @p lost
+     * (EquilibriumAudit::Result::imbalance()), the wall time and any
+     * cut-backs and line-search halvings.
+     */
+    std::string
+    progress_line(const double lost) const;
+  };
+} // namespace qsmpm
+
+#endif
