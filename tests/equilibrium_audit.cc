@@ -38,9 +38,9 @@
 
 #include <array>
 #include <iostream>
-#include <vector>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <vector>
 
 namespace
 {
@@ -129,11 +129,9 @@ namespace
         });
         problem.run();
         const unsigned int u = problem.points().get_offsets().displacement;
-        for (const auto &particle :
-             problem.points().get_particle_handler())
+        for (const auto &particle : problem.points().get_particle_handler())
           outcome.deflection =
-            std::max(outcome.deflection,
-                     -particle.get_properties()[u + 1]);
+            std::max(outcome.deflection, -particle.get_properties()[u + 1]);
         outcome.deflection =
           Utilities::MPI::max(outcome.deflection, MPI_COMM_WORLD);
       }
@@ -166,7 +164,7 @@ namespace
   std::string
   in_units(const std::string &input, const std::string &E, const std::string &q)
   {
-    std::string result = input;
+    std::string result  = input;
     const auto  replace = [&](const std::string &from, const std::string &to) {
       const auto pos = result.find(from);
       AssertThrow(pos != std::string::npos, ExcInternalError());
@@ -192,7 +190,9 @@ main(int argc, char *argv[])
   double largest = 0.;
   for (const double value : ok.imbalance)
     largest = std::max(largest, value);
-  check("  largest |applied + clamp| / |applied| over the steps", largest, 1e-6);
+  check("  largest |applied + clamp| / |applied| over the steps",
+        largest,
+        1e-6);
   check("  |clamp - q L h| / (q L h) at the end",
         ok.clamp.empty() ? 1. : std::abs(ok.clamp.back() - 75.) / 75.,
         1e-6);
@@ -240,8 +240,8 @@ main(int argc, char *argv[])
               run("floor",
                   in_units(sound, "1e-4", "7.5e-9") +
                     "subsection Nonlinear solver\n"
-                                          "  set Residual floor = 1\n"
-                                          "end\n"),
+                    "  set Residual floor = 1\n"
+                    "end\n"),
               {"Residual floor"});
 
   deallog << "5. Units of force scaled, default stopping test" << std::endl;
@@ -260,14 +260,13 @@ main(int argc, char *argv[])
     }
 
   deallog << "6. Case 1 with Stop on lost load = false" << std::endl;
-  const Outcome warned =
-    run("warned",
-        cantilever(end_traction,
-                   "10,2",
-                   "40,32",
-                   "subsection Equilibrium check\n"
-                   "  set Stop on lost load = false\n"
-                   "end\n"));
+  const Outcome warned = run("warned",
+                             cantilever(end_traction,
+                                        "10,2",
+                                        "40,32",
+                                        "subsection Equilibrium check\n"
+                                        "  set Stop on lost load = false\n"
+                                        "end\n"));
   check_that("  does not stop for the lost load",
              warned.message.find("Stop on lost load") == std::string::npos);
   double lost = 0.;

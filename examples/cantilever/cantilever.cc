@@ -19,6 +19,8 @@
  */
 
 // @sect3{Include files}
+#include "reissner_beam.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,14 +33,12 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <sstream>
 #include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
+#include <sstream>
 #include <string>
 #include <vector>
-
-#include "reissner_beam.h"
 
 namespace Cantilever
 {
@@ -175,9 +175,9 @@ namespace Cantilever
     unsigned int           cells = 0;
     std::vector<TipRecord> records;
     double                 s_tip = 0.; // arc length of the tip section
-    unsigned int           newton_min = std::numeric_limits<unsigned int>::max(),
+    unsigned int newton_min      = std::numeric_limits<unsigned int>::max(),
                  newton_max = 0, gmres = 0, newton = 0;
-    double       wall_time  = 0.;
+    double wall_time = 0.;
   };
 
 
@@ -209,12 +209,12 @@ namespace Cantilever
     std::pair<double, double>
     tip() const;
 
-    const Parameters       &parameters;
-    const double            h;
-    const double            load;
-    QuasiStaticProblem<2>   problem;
-    types::particle_index   top_id = 0, bottom_id = 0;
-    Run                     result;
+    const Parameters     &parameters;
+    const double          h;
+    const double          load;
+    QuasiStaticProblem<2> problem;
+    types::particle_index top_id = 0, bottom_id = 0;
+    Run                   result;
   };
 
 
@@ -235,7 +235,7 @@ namespace Cantilever
     mp.formulation.shape_functions = parse_shape_functions(shape_functions);
     if (n_steps > 0)
       problem.parameters().load_stepping.n_steps = n_steps;
-    problem.parameters().output.interval               = 0;
+    problem.parameters().output.interval = 0;
     problem.pcout().set_condition(false);
     result.shape_functions = shape_functions;
     result.cells           = cells;
@@ -291,20 +291,20 @@ namespace Cantilever
     double      x_max   = -std::numeric_limits<double>::max();
     for (const auto &particle : handler)
       x_max = std::max(x_max, particle.get_location()[0]);
-    x_max = Utilities::MPI::max(x_max, MPI_COMM_WORLD);
+    x_max           = Utilities::MPI::max(x_max, MPI_COMM_WORLD);
     const auto pick = [&](const double sign) {
       std::pair<double, types::particle_index> best{
         std::numeric_limits<double>::max(), 0};
       for (const auto &particle : handler)
         if (particle.get_location()[0] > x_max - 1e-9 * h)
-          best = std::min(best,
-                          {sign * particle.get_location()[1],
-                           particle.get_id()});
+          best =
+            std::min(best,
+                     {sign * particle.get_location()[1], particle.get_id()});
       const double y = Utilities::MPI::min(best.first, MPI_COMM_WORLD);
-      return Utilities::MPI::min(best.first == y ?
-                                   best.second :
-                                   std::numeric_limits<types::particle_index>::max(),
-                                 MPI_COMM_WORLD);
+      return Utilities::MPI::min(
+        best.first == y ? best.second :
+                          std::numeric_limits<types::particle_index>::max(),
+        MPI_COMM_WORLD);
     };
     bottom_id    = pick(1.);
     top_id       = pick(-1.);
@@ -421,7 +421,7 @@ namespace Cantilever
     const double E_plane = E / (1. - nu * nu), G = E / (2. * (1. + nu));
     const double EA = E_plane * H, EI = E_plane * H * H * H / 12.,
                  kGA = 5. / 6. * G * H;
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const bool root  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     if (root)
       std::filesystem::create_directories(parameters.directory);
     std::ofstream csv;
@@ -440,10 +440,11 @@ namespace Cantilever
                          parameters.small_load_cells,
                          parameters.small_load,
                          1);
-    const Run    s_run = small.run();
-    const double w     = parameters.small_load * H, s = s_run.s_tip;
-    const double timoshenko =
-      w / (24. * EI) * (s * s * s * s - 4. * L * s * s * s + 6. * L * L * s * s) +
+    const Run      s_run = small.run();
+    const double   w = parameters.small_load * H, s = s_run.s_tip;
+    const double   timoshenko =
+      w / (24. * EI) *
+        (s * s * s * s - 4. * L * s * s * s + 6. * L * L * s * s) +
       w / kGA * (L * s - s * s / 2.);
     const double small_error =
       std::abs(s_run.records.back().deflection / timoshenko - 1.);
@@ -462,12 +463,8 @@ namespace Cantilever
     for (const auto &shape_functions : parameters.shape_functions)
       for (const unsigned int cells : parameters.cells)
         {
-          CantileverBeam beam_run(parameters,
-                                  prm,
-                                  shape_functions,
-                                  cells,
-                                  parameters.large_load,
-                                  0);
+          CantileverBeam beam_run(
+            parameters, prm, shape_functions, cells, parameters.large_load, 0);
           runs.push_back(beam_run.run());
           const Run &r = runs.back();
           for (const auto &record : r.records)
@@ -482,8 +479,9 @@ namespace Cantilever
                     << -z[1] + 0. << ',' << -z[2] * 180. / numbers::PI << ','
                     << record.imbalance << '\n';
             }
-          const auto   z         = beam.at(r.s_tip);
-          const double deflection = -z[1], rotation = -z[2] * 180. / numbers::PI;
+          const auto   z          = beam.at(r.s_tip);
+          const double deflection = -z[1],
+                       rotation   = -z[2] * 180. / numbers::PI;
           pcout << std::setw(7) << shape_functions << "  cells over H "
                 << std::setw(2) << cells << "  q " << r.records.back().q
                 << "  tip deflection " << std::setprecision(5)
@@ -496,8 +494,8 @@ namespace Cantilever
                 << 100. * (r.records.back().rotation / rotation - 1.)
                 << " %)  steps " << r.records.size() << "  newton "
                 << r.newton_min << "-" << r.newton_max << "  gmres/newton "
-                << (r.newton > 0 ? r.gmres / r.newton : 0) << "  "
-                << std::fixed << std::setprecision(1) << r.wall_time << " s"
+                << (r.newton > 0 ? r.gmres / r.newton : 0) << "  " << std::fixed
+                << std::setprecision(1) << r.wall_time << " s"
                 << std::defaultfloat << std::endl;
         }
 
@@ -515,9 +513,8 @@ namespace Cantilever
           const auto   z = beam.at(r.s_tip);
           const double d_error =
             std::abs(r.records.back().deflection / -z[1] - 1.);
-          const double r_error =
-            std::abs(r.records.back().rotation / (-z[2] * 180. / numbers::PI) -
-                     1.);
+          const double r_error = std::abs(
+            r.records.back().rotation / (-z[2] * 180. / numbers::PI) - 1.);
           per_kind << "tip_deflection_error_" << r.shape_functions << ' '
                    << d_error << '\n'
                    << "tip_rotation_error_" << r.shape_functions << ' '
@@ -542,24 +539,23 @@ namespace Cantilever
     if (root)
       {
         std::ofstream summary(parameters.directory + "/summary.txt");
-        summary << std::setprecision(6)
-                << "max_tip_rotation_deg " << max_rotation << '\n'
+        summary << std::setprecision(6) << "max_tip_rotation_deg "
+                << max_rotation << '\n'
                 << "tip_deflection_error " << deflection_error << '\n'
                 << "tip_rotation_error " << rotation_error << '\n'
                 << "small_load_error " << small_error << '\n'
                 << "largest_load_imbalance " << largest_imbalance << '\n'
-                << per_kind.str() << "pass " << (pass ? "yes" : "no")
-                << '\n';
+                << per_kind.str() << "pass " << (pass ? "yes" : "no") << '\n';
         summary.close();
         std::filesystem::copy_file(
           parameters.directory + "/summary.txt",
           "summary.txt",
           std::filesystem::copy_options::overwrite_existing);
       }
-    pcout << "finest grid (" << finest << " cells over H), q = "
-          << parameters.large_load << ", " << parameters.verified[0]
-          << ": tip rotation " << std::setprecision(4) << max_rotation
-          << " deg, deflection error " << std::setprecision(3)
+    pcout << "finest grid (" << finest
+          << " cells over H), q = " << parameters.large_load << ", "
+          << parameters.verified[0] << ": tip rotation " << std::setprecision(4)
+          << max_rotation << " deg, deflection error " << std::setprecision(3)
           << 100. * deflection_error << " %, rotation error "
           << 100. * rotation_error << " % (tolerance "
           << 100. * parameters.tolerance << " %); largest lost load "

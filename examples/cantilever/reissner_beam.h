@@ -35,13 +35,18 @@ namespace Cantilever
   class ReissnerBeam
   {
   public:
-    ReissnerBeam(const double L,
-                 const double EA,
-                 const double kGA,
-                 const double EI,
-                 const double w,
+    ReissnerBeam(const double       L,
+                 const double       EA,
+                 const double       kGA,
+                 const double       EI,
+                 const double       w,
                  const unsigned int n_intervals = 4000)
-      : L(L), EA(EA), kGA(kGA), EI(EI), w(w), n(n_intervals)
+      : L(L)
+      , EA(EA)
+      , kGA(kGA)
+      , EI(EI)
+      , w(w)
+      , n(n_intervals)
     {
       // The moment at the clamp of the linear theory starts the secant
       // iteration; with large rotations the lever arm shrinks.
@@ -51,10 +56,10 @@ namespace Cantilever
            ++k)
         {
           const double m2 = m1 - r1 * (m1 - m0) / (r1 - r0);
-          m0 = m1;
-          r0 = r1;
-          m1 = m2;
-          r1 = integrate(m1).back()[3];
+          m0              = m1;
+          r0              = r1;
+          m1              = m2;
+          r1              = integrate(m1).back()[3];
         }
       if (!(std::abs(r1) <= 1e-10 * std::abs(0.5 * w * L * L) + 1e-300))
         throw std::runtime_error("ReissnerBeam: the shooting did not converge");
@@ -65,10 +70,10 @@ namespace Cantilever
     std::array<double, 4>
     at(const double s) const
     {
-      const double h = L / n;
+      const double       h = L / n;
       const unsigned int i =
         std::min<unsigned int>(n - 1, static_cast<unsigned int>(s / h));
-      const double t = (s - i * h) / h;
+      const double          t = (s - i * h) / h;
       std::array<double, 4> z;
       for (unsigned int c = 0; c < 4; ++c)
         z[c] = (1. - t) * states[i][c] + t * states[i + 1][c];
@@ -95,8 +100,8 @@ namespace Cantilever
       const double h = L / n;
       for (unsigned int i = 0; i < n; ++i)
         {
-          const double s  = i * h;
-          const auto   k1 = derivative(s, z[i]);
+          const double          s  = i * h;
+          const auto            k1 = derivative(s, z[i]);
           std::array<double, 4> y;
           for (unsigned int c = 0; c < 4; ++c)
             y[c] = z[i][c] + 0.5 * h * k1[c];

@@ -1,9 +1,9 @@
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <cmath>
 #include <qsmpm/assembly/ghost_penalty.h>
 
 namespace qsmpm
@@ -16,7 +16,7 @@ namespace qsmpm
                             const double               gamma,
                             const double               stiffness_scale)
   {
-    const auto &dof_handler   = grid.get_dof_handler();
+    const auto &dof_handler = grid.get_dof_handler();
 
     // The cells that take part: those all of whose nodes carry material
     // (the cells with points, and with GIMP the cells that their domains
@@ -27,7 +27,7 @@ namespace qsmpm
     // a cell's volume of material in their support (an interior node has a
     // whole cell's, a node on a straight surface half of it). A cell with
     // such a node is cut.
-    const double h_dim = std::pow(grid.min_cell_size(), dim);
+    const double   h_dim = std::pow(grid.min_cell_size(), dim);
     const IndexSet weak =
       cache.dofs_without_points(grid, volume_offset, 0.25 * h_dim);
     std::vector<types::global_dof_index> dofs(grid.get_fe().n_dofs_per_cell()),
@@ -43,8 +43,8 @@ namespace qsmpm
     // The faces: between two such cells of which one is cut,
     // each once (from the cell with the smaller id; a ghost neighbour's
     // rank takes the faces where its cell is the smaller).
-    std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
-                          unsigned int>>
+    std::vector<
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
       penalized;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -111,7 +111,8 @@ namespace qsmpm
         cell->get_dof_indices(dofs);
         neighbor->get_dof_indices(neighbor_dofs);
         std::copy(dofs.begin(), dofs.end(), local_dofs.begin());
-        std::copy(neighbor_dofs.begin(), neighbor_dofs.end(),
+        std::copy(neighbor_dofs.begin(),
+                  neighbor_dofs.end(),
                   local_dofs.begin() + n);
         const double h = cell->measure() / cell->face(f)->measure();
         local          = 0.;
@@ -120,11 +121,10 @@ namespace qsmpm
             const Tensor<1, dim> &normal = here.normal_vector(q);
             for (unsigned int i = 0; i < n; ++i)
               {
-                jump[i] = here.shape_grad(i, q) * normal;
+                jump[i]     = here.shape_grad(i, q) * normal;
                 jump[n + i] = -(there.shape_grad(i, q) * normal);
               }
-            const double weight =
-              gamma * stiffness_scale * h * here.JxW(q);
+            const double weight = gamma * stiffness_scale * h * here.JxW(q);
             for (unsigned int i = 0; i < 2 * n; ++i)
               for (unsigned int j = 0; j < 2 * n; ++j)
                 if (component[i] == component[j])
@@ -135,9 +135,9 @@ namespace qsmpm
         face_matrices.push_back(local);
       }
     G.compress(VectorOperation::add);
-    faces = dealii::Utilities::MPI::sum(static_cast<unsigned int>(
-                                          penalized.size()),
-                                        grid.get_communicator());
+    faces =
+      dealii::Utilities::MPI::sum(static_cast<unsigned int>(penalized.size()),
+                                  grid.get_communicator());
   }
 
 
@@ -208,9 +208,7 @@ namespace qsmpm
                             TrilinosWrappers::SparseMatrix  &K) const
   {
     for (unsigned int f = 0; f < face_dofs.size(); ++f)
-      constraints.distribute_local_to_global(face_matrices[f],
-                                             face_dofs[f],
-                                             K);
+      constraints.distribute_local_to_global(face_matrices[f], face_dofs[f], K);
   }
 
 

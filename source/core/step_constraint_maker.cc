@@ -74,8 +74,8 @@ namespace qsmpm
     // mean over the dofs that have any: relative, so that the threshold
     // does not depend on the units or the material.
     TrilinosWrappers::MPI::Vector diagonal;
-    const double                  threshold =
-      parameters.min_nodal_stiffness_fraction * mean_stiffness(points, diagonal);
+    const double threshold = parameters.min_nodal_stiffness_fraction *
+                             mean_stiffness(points, diagonal);
     // The ghost penalty gives the nodes of cut cells stiffness: such a node
     // need not be held (held, it would carry the penalty's forces as a
     // support).

@@ -41,8 +41,8 @@ namespace qsmpm
           std::numeric_limits<double>::max(), 0};
         for (const auto &particle : points.get_particle_handler())
           {
-            const auto  data = particle.get_properties();
-            Point<dim>  X    = particle.get_location();
+            const auto data = particle.get_properties();
+            Point<dim> X    = particle.get_location();
             for (unsigned int d = 0; d < dim; ++d)
               X[d] -= data[u + d];
             const std::pair<double, types::particle_index> candidate{
@@ -94,16 +94,17 @@ namespace qsmpm
   {
     // Each probe's values on the rank that owns its point, zeros
     // elsewhere: one sum over the ranks gathers them.
-    constexpr unsigned int n_values = 2 * dim + Utils::n_symmetric_components<dim>;
-    std::vector<double>    values(ids.size() * n_values, 0.);
-    const auto            &offsets = points.get_offsets();
+    constexpr unsigned int n_values =
+      2 * dim + Utils::n_symmetric_components<dim>;
+    std::vector<double> values(ids.size() * n_values, 0.);
+    const auto         &offsets = points.get_offsets();
     for (const auto &particle : points.get_particle_handler())
       for (unsigned int k = 0; k < ids.size(); ++k)
         if (particle.get_id() == ids[k])
           {
-            const auto   data = particle.get_properties();
-            double      *out  = values.data() + k * n_values;
-            const auto   x    = particle.get_location();
+            const auto data = particle.get_properties();
+            double    *out  = values.data() + k * n_values;
+            const auto x    = particle.get_location();
             for (unsigned int d = 0; d < dim; ++d)
               {
                 out[d]       = x[d];

@@ -66,18 +66,23 @@ namespace qsmpm
 
   template <int dim>
   std::string
-  EquilibriumAudit<dim>::Result::lost_load(
-    const double t_new,
-    const double tolerance,
-    const double residual_tolerance) const
+  EquilibriumAudit<dim>::Result::lost_load(const double t_new,
+                                           const double tolerance,
+                                           const double newton_tolerance) const
   {
+    const double residual_tolerance =
+      std::max(tolerance, 10. * newton_tolerance);
+    if (!(structural_loss() > tolerance ||
+          solver_residual() > residual_tolerance))
+      return "";
     std::ostringstream message;
     message << "the converged step to t = " << t_new << " lost "
             << std::setprecision(3) << 100. * imbalance()
             << " % of the load (the applied load is not carried by the "
                "displacement conditions; Equilibrium check/Lost load "
                "tolerance = "
-            << tolerance << "): " << causes(tolerance, residual_tolerance) << '.';
+            << tolerance << "): " << causes(tolerance, residual_tolerance)
+            << '.';
     return message.str();
   }
 

@@ -86,13 +86,13 @@ namespace qsmpm
     n_faces() const;
 
   private:
-    TrilinosWrappers::SparseMatrix        G;
+    TrilinosWrappers::SparseMatrix G;
     /// The degrees of freedom of the two cells of each penalized face on
     /// this rank, and the face's matrix.
     std::vector<std::vector<types::global_dof_index>> face_dofs;
     std::vector<FullMatrix<double>>                   face_matrices;
-    mutable TrilinosWrappers::MPI::Vector scratch;
-    unsigned int                          faces = 0;
+    mutable TrilinosWrappers::MPI::Vector             scratch;
+    unsigned int                                      faces = 0;
   };
 } // namespace qsmpm
 

@@ -337,11 +337,18 @@ namespace qsmpm
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
     GhostPenalty<dim>                         ghost_penalty;
-    Preconditioner<dim>                       preconditioner;
-    PreconditionerReuse                       preconditioner_reuse;
-    PathFollowingSetup<dim>                   path_following;
-    StepConstraints                           step_constraints;
-    VectorType                                du;
+    /// The ghost penalty if Material points/Ghost penalty > 0, else null.
+    const GhostPenalty<dim> *
+    stabilization() const
+    {
+      return prm_values.material_points.ghost_penalty > 0. ? &ghost_penalty :
+                                                             nullptr;
+    }
+    Preconditioner<dim>     preconditioner;
+    PreconditionerReuse     preconditioner_reuse;
+    PathFollowingSetup<dim> path_following;
+    StepConstraints         step_constraints;
+    VectorType              du;
     /// With Initial guess = extrapolation: the increments of the last
     /// converged load step and its load-factor increment (0: none, the
     /// next step starts from the linear predictor).

@@ -48,11 +48,11 @@ namespace qsmpm
           const double                 load_factor);
 
   private:
-    const std::vector<Point<dim>>        positions;
-    const std::string                    directory;
-    const MPI_Comm                       communicator;
-    std::vector<types::particle_index>   ids;
-    std::unique_ptr<std::ofstream>       file;
+    const std::vector<Point<dim>>      positions;
+    const std::string                  directory;
+    const MPI_Comm                     communicator;
+    std::vector<types::particle_index> ids;
+    std::unique_ptr<std::ofstream>     file;
   };
 } // namespace qsmpm
 

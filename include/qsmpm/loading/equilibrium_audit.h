@@ -118,13 +118,24 @@ namespace qsmpm
       causes(const double tolerance, const double residual_tolerance) const;
 
       /**
-       * The sentence that reports the loss of a converged step to load
-       * factor @p t_new that lost load (see causes()), with its causes.
+       * Empty if the step to load factor @p t_new lost no load: the part
+       * E - H within @p tolerance, and the residual F within
+       * max(@p tolerance, 10 @p newton_tolerance). Otherwise the sentence
+       * that reports the loss with its causes.
+       *
+       * The residual Newton leaves is the accuracy the user asked for:
+       * with the paper's gamma = 1e-3 of the step's first residual it is
+       * 0.1 % of the early, small reactions of the compact-tension
+       * specimen. The stopping test bounds the free residual's norm by
+       * gamma ||R(du_0)||, and the first residual is of the size of the
+       * step's loads (a sum over many dofs may exceed a norm, hence ten
+       * times); an absolute floor too large for the units leaves residuals
+       * of the size of the load.
        */
       std::string
       lost_load(const double t_new,
                 const double tolerance,
-                const double residual_tolerance) const;
+                const double newton_tolerance) const;
     };
 
     /**
