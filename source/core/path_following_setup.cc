@@ -8,7 +8,7 @@ namespace qsmpm
   void
   PathFollowingSetup<dim>::make_gauge(const LoadStepper &stepper)
   {
-    if (stepper.control() == LoadStepper::Control::opening && !gauge)
+    if (stepper.control() == LoadStepper::Control::opening)
       gauge = std::make_unique<OpeningGauge<dim>>(
         stepper.get_parameters().opening_gauge);
   }
@@ -90,7 +90,8 @@ namespace qsmpm
     constraint.value = stepper.constraint_target();
     if (stepper.control() == LoadStepper::Control::opening)
       {
-        make_gauge(stepper);
+        if (!gauge)
+          make_gauge(stepper);
         w.reinit(layout);
         gauge->make_vector(cache, displacement, cell_size, communicator, w);
         constraint.gauge        = &w;

@@ -36,7 +36,8 @@ namespace qsmpm
 
     /**
      * With Control = opening: make the gauge of @p stepper's parameters
-     * (once), so that a malformed gauge stops the run before any output.
+     * (anew, at the start of every run, so that a malformed gauge stops the
+     * run before any output; constraint() makes it if it was not made).
      */
     void
     make_gauge(const LoadStepper &stepper);

@@ -218,7 +218,7 @@ namespace qsmpm
       bool       at_limit = false;
       /// What the last residual evaluation found (whose dissipation psi
       /// reads), and the evaluation of du.
-      Evaluation last, accepted;
+      Evaluation last{}, accepted{};
     };
 
     /// The Newton step of one iteration (in Iterate::step) and its
