@@ -89,14 +89,14 @@ namespace Cantilever
       const double Na = Ny * sn, Ns = Ny * c;
       const double dx = (1. + Na / EA) * c - (Ns / kGA) * sn;
       const double dy = (1. + Na / EA) * sn + (Ns / kGA) * c;
-      return {dx, dy, z[3] / EI, w * (L - s) * dx};
+      return {{dx, dy, z[3] / EI, w * (L - s) * dx}};
     }
 
     std::vector<std::array<double, 4>>
     integrate(const double M0) const
     {
       std::vector<std::array<double, 4>> z(n + 1);
-      z[0]           = {0., 0., 0., M0};
+      z[0]           = {{0., 0., 0., M0}};
       const double h = L / n;
       for (unsigned int i = 0; i < n; ++i)
         {
