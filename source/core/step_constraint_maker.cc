@@ -44,9 +44,11 @@ namespace qsmpm
   template <int dim>
   double
   StepConstraintMaker<dim>::mean_stiffness(
-    const MaterialPointSet<dim>   &points,
-    TrilinosWrappers::MPI::Vector &diagonal) const
+    const MaterialPointSet<dim> &points) const
   {
+    if (diagonal_of_cache == cache.generation())
+      return mean;
+    diagonal_of_cache = cache.generation();
     diagonal.reinit(grid.locally_owned_dofs(), communicator);
     TangentAssembler<dim>::assemble_diagonal(points, cache, diagonal);
     double sum = 0., count = 0.;
@@ -58,7 +60,8 @@ namespace qsmpm
         }
     sum   = dealii::Utilities::MPI::sum(sum, communicator);
     count = dealii::Utilities::MPI::sum(count, communicator);
-    return count > 0. ? sum / count : 0.;
+    mean  = count > 0. ? sum / count : 0.;
+    return mean;
   }
 
 
@@ -73,15 +76,16 @@ namespace qsmpm
     // The stiffness of each dof against its own motion, compared with the
     // mean over the dofs that have any: relative, so that the threshold
     // does not depend on the units or the material.
-    TrilinosWrappers::MPI::Vector diagonal;
-    const double threshold = parameters.min_nodal_stiffness_fraction *
-                             mean_stiffness(points, diagonal);
+    const double threshold =
+      parameters.min_nodal_stiffness_fraction * mean_stiffness(points);
+    if (ghost_penalty == nullptr)
+      return grid.dofs_at_most(diagonal, threshold);
     // The ghost penalty gives the nodes of cut cells stiffness: such a node
     // need not be held (held, it would carry the penalty's forces as a
     // support).
-    if (ghost_penalty != nullptr)
-      ghost_penalty->add_diagonal_to(diagonal);
-    return grid.dofs_at_most(diagonal, threshold);
+    TrilinosWrappers::MPI::Vector stabilized(diagonal);
+    ghost_penalty->add_diagonal_to(stabilized);
+    return grid.dofs_at_most(stabilized, threshold);
   }
 
 

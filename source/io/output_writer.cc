@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
-#include <qsmpm/io/checkpoint.h>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/io/checkpoint.h>
 #include <qsmpm/io/output_writer.h>
 
 namespace qsmpm
@@ -66,7 +66,8 @@ namespace qsmpm
     for (const auto &text :
          dealii::Utilities::split_string_list(probe_points, ';'))
       if (!text.empty())
-        positions.push_back(Utils::parse_point<dim>(text, "Output/Probe points"));
+        positions.push_back(
+          Utils::parse_point<dim>(text, "Output/Probe points"));
     return positions;
   }
 
@@ -222,12 +223,11 @@ namespace qsmpm
 
   template <int dim>
   void
-  OutputWriter<dim>::write_reactions(
-    const unsigned int                 step,
-    const double                       load_factor,
-    const std::vector<std::string>    &names,
-    const std::vector<Tensor<1, dim>> &forces,
-    const double                       imbalance)
+  OutputWriter<dim>::write_reactions(const unsigned int step,
+                                     const double       load_factor,
+                                     const std::vector<std::string>    &names,
+                                     const std::vector<Tensor<1, dim>> &forces,
+                                     const double imbalance)
   {
     if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
       return;

@@ -90,7 +90,7 @@ namespace qsmpm
     points_beyond_grid    = 0;
     largest_weight_beyond = 0.;
     point_set             = &points;
-    stencil   = gimp ? max_stencil_size : n_vertices;
+    stencil               = gimp ? max_stencil_size : n_vertices;
     cells.clear();
     affine_cells.clear();
     cell_is_affine.clear();

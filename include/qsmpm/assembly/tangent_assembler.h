@@ -3,8 +3,8 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <qsmpm/assembly/ghost_penalty.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>

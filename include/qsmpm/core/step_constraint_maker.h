@@ -51,12 +51,15 @@ namespace qsmpm
          IndexSet                                         &held,
          const GhostPenalty<dim> *ghost_penalty = nullptr);
 
-    /// The diagonal of the tangent at the points (into @p diagonal) and its
-    /// mean over the dofs that have stiffness: the stiffness scale of the
-    /// ghost penalty and of the held-stiffness threshold.
+    /**
+     * The mean over the dofs that have stiffness of the diagonal of the
+     * tangent at the points (TangentAssembler::assemble_diagonal()): the
+     * stiffness scale of the ghost penalty and of the held-stiffness
+     * threshold. Computed once per state of the shape cache (a pass over
+     * all points), however often a step asks.
+     */
     double
-    mean_stiffness(const MaterialPointSet<dim>   &points,
-                   TrilinosWrappers::MPI::Vector &diagonal) const;
+    mean_stiffness(const MaterialPointSet<dim> &points) const;
 
   private:
     /// The degrees of freedom without enough material (no equation).
@@ -83,6 +86,11 @@ namespace qsmpm
     DisplacementConstraints<dim> &displacement_constraints;
     const ShapeCache<dim>        &cache;
     const MPI_Comm                communicator;
+    /// The diagonal of the last mean_stiffness(), its mean, and the
+    /// generation of the shape cache it belongs to.
+    mutable TrilinosWrappers::MPI::Vector diagonal;
+    mutable double                        mean = 0.;
+    mutable unsigned long diagonal_of_cache    = static_cast<unsigned long>(-1);
   };
 } // namespace qsmpm
 
