@@ -52,6 +52,7 @@ namespace qsmpm
     , background_grid(communicator)
     , displacement_constraints(bcs)
     , external_force(bcs)
+    , surface_tractions(bcs)
     , constraint_maker(background_grid,
                        bcs,
                        displacement_constraints,
@@ -92,12 +93,14 @@ namespace qsmpm
   {
     prm_values.parse_parameters(prm);
     background_grid.make_box(prm_values.geometry);
+    // The conditions first: the points carry the area of each surface
+    // traction.
+    ParsedBoundaryConditions<dim> parsed_conditions;
+    parsed_conditions.parse_parameters(prm, bcs);
     set_model(ConstitutiveModelFactory<dim>::create(prm));
     material_points->fill(prm_values.material_points);
     AssertThrow(material_points->n_global_points() > 0,
                 ExcMessage("Material points: the region holds no points."));
-    ParsedBoundaryConditions<dim> parsed_conditions;
-    parsed_conditions.parse_parameters(prm, bcs);
 
     // A load or a prescribed displacement that is NaN or infinite somewhere
     // (sqrt(-1), 1/x at x = 0) would only show as a residual that is not a
@@ -121,7 +124,10 @@ namespace qsmpm
     material_points.reset();
     model           = std::move(new_model);
     material_points = std::make_unique<MaterialPointSet<dim>>(
-      background_grid, *model, prm_values.material_points.formulation);
+      background_grid,
+      *model,
+      prm_values.material_points.formulation,
+      bcs.surface_tractions().size());
   }
 
 
@@ -226,6 +232,16 @@ namespace qsmpm
                                 offsets.volume,
                               t_new,
                               f_ext);
+      if (!surface_tractions.empty())
+        {
+          surface_tractions.reinit_step(background_grid,
+                                        cache,
+                                        points(),
+                                        residual->ghosted_layout(),
+                                        t_new);
+          surface_tractions.add_dead_loads(f_ext);
+          f_ext.compress(VectorOperation::add);
+        }
       residual->set_external_force(f_ext);
     }
     // The stiffness and its preconditioner, unless the one of an earlier
@@ -288,7 +304,8 @@ namespace qsmpm
       const StepOperator<dim> op(*residual,
                                  step_constraints,
                                  preconditioner,
-                                 stabilization());
+                                 stabilization(),
+                                 pressure_loads());
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
@@ -348,7 +365,8 @@ namespace qsmpm
       const StepOperator<dim> op(*residual,
                                  step_constraints,
                                  preconditioner,
-                                 stabilization());
+                                 stabilization(),
+                                 pressure_loads());
       const typename PathFollowingSetup<dim>::Solver newton(
         prm_values.nonlinear_solver, &progress);
       const auto constraint =
@@ -399,6 +417,8 @@ namespace qsmpm
     du_ghosted     = du;
     last_increment = du;
     residual->commit(du_ghosted);
+    if (!surface_tractions.empty())
+      surface_tractions.commit(points(), du_ghosted);
     const double moved = points().advect(cache, du_ghosted);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
@@ -424,11 +444,18 @@ namespace qsmpm
   void
   QuasiStaticProblem<dim>::audit_equilibrium(const double t_new)
   {
+    // The applied load includes the pressures at the solution.
+    VectorType applied;
+    if (pressure_loads() != nullptr)
+      {
+        applied = f_ext;
+        surface_tractions.add_pressure_forces(du, applied);
+      }
     last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
                                 R,
-                                f_ext,
+                                pressure_loads() != nullptr ? applied : f_ext,
                                 run_state.load_scale);
     run_state.reactions  = last_audit.reactions;
     run_state.load_scale = last_audit.scale;
@@ -549,6 +576,17 @@ namespace qsmpm
 
     // A malformed gauge stops the run before any output.
     path_following.make_gauge(stepper);
+
+    // The surface points of each surface traction, from the points where
+    // fill() put them (a checkpoint holds their areas).
+    if (!from_checkpoint && !surface_tractions.empty())
+      {
+        const std::vector<double> areas =
+          surface_tractions.mark(background_grid, points());
+        for (unsigned int k = 0; k < areas.size(); ++k)
+          progress << "surface traction <" << bcs.surface_tractions()[k].name
+                   << ">: loaded area " << areas[k] << std::endl;
+      }
 
     if (!from_checkpoint && writer.fields_due(0))
       {

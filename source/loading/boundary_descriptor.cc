@@ -62,6 +62,34 @@ namespace qsmpm
 
   template <int dim>
   void
+  BoundaryDescriptor<dim>::add_surface_traction(
+    const std::string                             &name,
+    const std::function<bool(const Point<dim> &)> &selector,
+    const std::shared_ptr<Function<dim>>          &traction,
+    const SurfaceLoadType                          type)
+  {
+    AssertThrow(traction && traction->n_components == dim,
+                ExcMessage("A surface traction function needs dim "
+                           "components (a pressure: the first one)."));
+    AssertThrow(selector,
+                ExcMessage("A surface traction needs a selector of the "
+                           "loaded faces."));
+    surface_traction_list.push_back({name, selector, traction, type});
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename BoundaryDescriptor<dim>::SurfaceTraction> &
+  BoundaryDescriptor<dim>::surface_tractions() const
+  {
+    return surface_traction_list;
+  }
+
+
+
+  template <int dim>
+  void
   BoundaryDescriptor<dim>::set_body_force(
     const std::shared_ptr<Function<dim>> &force)
   {
@@ -164,7 +192,7 @@ namespace qsmpm
   BoundaryDescriptor<dim>::has_loads() const
   {
     return body_force_function || !traction_functions.empty() ||
-           !nodal_loads.empty();
+           !surface_traction_list.empty() || !nodal_loads.empty();
   }
 
 

@@ -1,4 +1,6 @@
 #include <cmath>
+#include <cstdlib>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/lac/vector.h>
 #include <iostream>
 #include <qsmpm/base/utilities.h>
@@ -9,10 +11,10 @@ namespace qsmpm
 {
   namespace
   {
-    // The subsections of the three functions of "Boundary conditions", in
+    // The subsections of the four functions of "Boundary conditions", in
     // the order of ParsedBoundaryConditions::functions.
-    const std::array<std::string, 3> function_subsections = {
-      {"Displacement", "Traction", "Body force"}};
+    const std::array<std::string, 4> function_subsections = {
+      {"Displacement", "Traction", "Surface traction", "Body force"}};
 
     // The default of each function: zero in every component.
     template <int dim>
@@ -180,7 +182,31 @@ namespace qsmpm
                         "",
                         Patterns::List(Patterns::Integer(0)),
                         "Boundary ids loaded by the function of subsection "
-                        "<Traction> (force per area, t = load factor).");
+                        "<Traction> (force per area, t = load factor). The "
+                        "load acts on the grid's faces: for a body that "
+                        "stays on them. A body that moves away from the "
+                        "face would lose the load (the equilibrium check "
+                        "stops the run); use <Surface traction region>.");
+      prm.declare_entry(
+        "Surface traction region",
+        "",
+        Patterns::Anything(),
+        "Where the body's own surface carries the function of subsection "
+        "<Surface traction>: an expression in x, y (and z), non-zero on the "
+        "loaded part of the initial surface, e.g. \"x > 9.99\" or \"1\" "
+        "for all of it. The faces of the body's surface are found from the "
+        "material points; the points next to a loaded face carry its area "
+        "and the load moves with them, at small and finite strain, with "
+        "linear and GIMP shape functions. Empty: none.");
+      prm.declare_entry(
+        "Surface traction type",
+        "dead",
+        Patterns::Selection("dead|pressure"),
+        "dead: the function is a force per unit initial area of fixed "
+        "direction (dim components), at the point's initial position. "
+        "pressure: its first component is a pressure p (the others must be "
+        "0) on the current surface, along the current inward normal "
+        "(force -p n da, a follower load).");
       prm.declare_entry(
         "Macroscopic displacement gradient",
         "",
@@ -212,6 +238,8 @@ namespace qsmpm
     dirichlet            = prm.get("Dirichlet boundaries");
     traction             = prm.get("Traction boundaries");
     macroscopic_gradient = prm.get("Macroscopic displacement gradient");
+    surface_region       = prm.get("Surface traction region");
+    surface_type         = prm.get("Surface traction type");
     prm.leave_subsection();
   }
 
@@ -226,7 +254,8 @@ namespace qsmpm
     Parameters parameters;
     parameters.parse_parameters(prm);
     parse_functions(prm);
-    const auto &[displacement, traction, body_force] = functions;
+    const auto &[displacement, traction, surface_traction, body_force] =
+      functions;
 
     for (const auto &entry : Utils::split(parameters.dirichlet, ','))
       {
@@ -245,8 +274,71 @@ namespace qsmpm
       }
     for (const auto &entry : Utils::split(parameters.traction, ','))
       boundary.add_traction(parse_traction_id<dim>(entry), traction);
-    if (expressions[2] != zero_expression<dim>())
+    if (!parameters.surface_region.empty())
+      add_surface_traction(parameters, surface_traction, boundary);
+    if (expressions[3] != zero_expression<dim>())
       boundary.set_body_force(body_force);
+  }
+
+
+
+  template <int dim>
+  void
+  ParsedBoundaryConditions<dim>::add_surface_traction(
+    const Parameters                                      &parameters,
+    const std::shared_ptr<Functions::ParsedFunction<dim>> &traction,
+    BoundaryDescriptor<dim>                               &boundary)
+  {
+    using Type = typename BoundaryDescriptor<dim>::SurfaceLoadType;
+    const Type type =
+      parameters.surface_type == "pressure" ? Type::pressure : Type::dead;
+    // A pressure is one number: components that are not zero would be
+    // ignored.
+    if (type == Type::pressure)
+      {
+        const auto components = Utils::split(expressions[2], ';');
+        const auto is_zero    = [](const std::string &text) {
+          char  *end   = nullptr;
+          double value = std::strtod(text.c_str(), &end);
+          return end != text.c_str() && *end == '\0' && value == 0.;
+        };
+        for (unsigned int c = 1; c < components.size(); ++c)
+          AssertThrow(is_zero(components[c]),
+                      ExcMessage("Boundary conditions: with <Surface "
+                                 "traction type = pressure> the pressure is "
+                                 "the first expression of Surface traction/"
+                                 "<Function expression> = <" +
+                                 expressions[2] +
+                                 ">, and the others must be 0."));
+      }
+
+    // The region: true where the expression is non-zero.
+    auto region = std::make_shared<FunctionParser<dim>>(1);
+    try
+      {
+        region->initialize(dim == 2 ? "x,y" : "x,y,z",
+                           parameters.surface_region,
+                           {});
+        Vector<double> value(1);
+        evaluate_quietly<dim>(*region, Point<dim>(), value);
+      }
+    catch (const std::exception &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage("Boundary conditions: <Surface traction "
+                               "region> = <" +
+                               parameters.surface_region +
+                               ">: " + Utils::error_message(exc) +
+                               " (an expression in " +
+                               (dim == 2 ? "x, y" : "x, y, z") +
+                               ", non-zero on the loaded surface)."));
+      }
+    boundary.add_surface_traction(
+      "Boundary conditions/Surface traction region = " +
+        parameters.surface_region,
+      [region](const Point<dim> &x) { return region->value(x) != 0.; },
+      traction,
+      type);
   }
 
 
@@ -257,12 +349,12 @@ namespace qsmpm
   {
     // deal.II's own messages for a wrong number of expressions ("The number
     // of components (2) is not equal to the number of expressions (3).") or
-    // a malformed constant ("Invalid format") do not say which of the three
+    // a malformed constant ("Invalid format") do not say which of the four
     // functions is meant, so we add the subsection and the entries. A first
     // evaluation (at the origin, t = 0) finds syntax errors and unknown
     // variables now rather than in the middle of the first load step.
     prm.enter_subsection("Boundary conditions");
-    for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int i = 0; i < functions.size(); ++i)
       {
         functions[i] = std::make_shared<Functions::ParsedFunction<dim>>(dim);
         prm.enter_subsection(function_subsections[i]);
@@ -302,7 +394,7 @@ namespace qsmpm
     const std::vector<double>     &load_factors) const
   {
     Vector<double> values(dim);
-    for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int i = 0; i < functions.size(); ++i)
       if (functions[i] != nullptr)
         {
           Functions::ParsedFunction<dim> &function = *functions[i];

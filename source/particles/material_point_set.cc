@@ -189,7 +189,8 @@ namespace qsmpm
   template <int dim>
   MaterialPointSet<dim>::MaterialPointSet(const BackgroundGrid<dim>    &grid,
                                           const ConstitutiveModel<dim> &model,
-                                          const Formulation &formulation)
+                                          const Formulation &formulation,
+                                          const unsigned int n_surface_loads)
     : grid(grid)
     , model(model)
     , formulation(formulation)
@@ -215,6 +216,10 @@ namespace qsmpm
     if (formulation.gimp())
       offsets.initial_half_length =
         layout.add("initial_half_length", dim, Kind::vector);
+    if (n_surface_loads > 0)
+      offsets.surface_load = layout.add("surface_load",
+                                        n_surface_loads * (2 * dim + 1),
+                                        Kind::scalar);
     offsets.state = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);
@@ -302,6 +307,8 @@ namespace qsmpm
                   1.) < 1e-12,
                 ExcMessage("The volume fractions of the points of a cell "
                            "(the weights of the rule) must sum to one."));
+
+    last_rule = rule;
 
     // First collect the new points, so that globally unique ids can be
     // handed out with one prefix sum over the ranks.
@@ -621,6 +628,26 @@ namespace qsmpm
                 ExcMessage(std::to_string(lost) +
                            " material points left the background grid. "
                            "Enlarge the grid around the body."));
+  }
+
+
+
+  template <int dim>
+  const Quadrature<dim> &
+  MaterialPointSet<dim>::placement_rule() const
+  {
+    return last_rule;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MaterialPointSet<dim>::n_surface_loads() const
+  {
+    return offsets.surface_load == numbers::invalid_unsigned_int ?
+             0 :
+             layout.n_components("surface_load") / (2 * dim + 1);
   }
 
 

@@ -239,6 +239,12 @@ driver_case boundary_id_missing "Dirichlet boundaries" 1 \
   $'subsection Boundary conditions\n set Dirichlet boundaries = 7:xy\nend'
 driver_case traction_id_missing "Traction boundaries" 1 \
   $'subsection Boundary conditions\n set Traction boundaries = 9\nend'
+driver_case surface_region_syntax "Surface traction region" 1 \
+  $'subsection Boundary conditions\n set Surface traction region = x >\nend'
+driver_case surface_region_empty "selects no face" 2 \
+  $'subsection Boundary conditions\n set Surface traction region = x < -5\nend'
+driver_case surface_pressure_components "Surface traction type" 1 \
+  $'subsection Boundary conditions\n set Surface traction region = y > 0.99\n set Surface traction type = pressure\n subsection Surface traction\n  set Function expression = 1; 2\n end\nend'
 driver_case component_unknown "Dirichlet boundaries" 1 \
   $'subsection Boundary conditions\n set Dirichlet boundaries = 2:xw\nend'
 driver_case no_support "rigid-body motion" 1 \

@@ -25,6 +25,7 @@
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
 #include <qsmpm/loading/step_constraints.h>
+#include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -123,7 +124,8 @@ namespace qsmpm
     BackgroundGrid<dim> &
     grid();
 
-    /// Choose the constitutive model; creates the (empty) point set.
+    /// Choose the constitutive model; creates the (empty) point set, whose
+    /// points carry an area for each surface traction given so far.
     void
     set_model(std::unique_ptr<ConstitutiveModel<dim>> model);
 
@@ -317,6 +319,7 @@ namespace qsmpm
     BoundaryDescriptor<dim>                 bcs;
     DisplacementConstraints<dim>            displacement_constraints;
     ExternalForceAssembler<dim>             external_force;
+    SurfaceTractions<dim>                   surface_tractions;
     EquilibriumAudit<dim>                   audit;
     typename EquilibriumAudit<dim>::Result  last_audit;
     bool                                    lost_load_warned = false;
@@ -343,6 +346,12 @@ namespace qsmpm
     {
       return prm_values.material_points.ghost_penalty > 0. ? &ghost_penalty :
                                                              nullptr;
+    }
+    /// The surface tractions if a pressure acts in this step, else null.
+    const SurfaceTractions<dim> *
+    pressure_loads() const
+    {
+      return surface_tractions.has_pressure() ? &surface_tractions : nullptr;
     }
     Preconditioner<dim>     preconditioner;
     PreconditionerReuse     preconditioner_reuse;

@@ -7,6 +7,7 @@
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/step_constraints.h>
+#include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
 #include <sstream>
@@ -28,27 +29,33 @@ namespace qsmpm
     using Evaluation = typename QuasiStaticResidual<dim>::Evaluation;
 
     /// The step's operator; @p ghost_penalty, if given, stabilizes the
-    /// nodes of cut cells.
+    /// nodes of cut cells; @p pressures, if given, add the pressures on
+    /// the body's surface, which follow the increment.
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
                  const Preconditioner<dim>      &preconditioner,
-                 const GhostPenalty<dim>        *ghost_penalty = nullptr)
+                 const GhostPenalty<dim>        *ghost_penalty = nullptr,
+                 const SurfaceTractions<dim>    *pressures     = nullptr)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
       , ghost_penalty(ghost_penalty)
+      , pressures(pressures)
     {
     }
 
     /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
-    /// penalty, if any), with coupled rows added to their masters; returns
-    /// what the evaluation found on this rank's points.
+    /// penalty, if any) + f_p(du) (the pressures, if any), with coupled
+    /// rows added to their masters; returns what the evaluation found on
+    /// this rank's points.
     Evaluation
     residual(const VectorType &du, VectorType &R) const
     {
       const Evaluation evaluation = residual_evaluator.evaluate(du, R);
       if (ghost_penalty != nullptr)
         ghost_penalty->subtract_forces(du, R);
+      if (pressures != nullptr)
+        pressures->add_pressure_forces(du, R);
       constraints.condense(R);
       return evaluation;
     }
@@ -128,6 +135,7 @@ namespace qsmpm
     const StepConstraints          &constraints;
     const Preconditioner<dim>      &preconditioner;
     const GhostPenalty<dim>        *ghost_penalty;
+    const SurfaceTractions<dim>    *pressures;
   };
 } // namespace qsmpm
 

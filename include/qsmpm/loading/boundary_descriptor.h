@@ -27,7 +27,9 @@ namespace qsmpm
    *   sets selected by position, per component, or only the normal component
    *   ("sliding");
    * - load control (paper eqs. 2.10-2.12): a body force per unit volume at
-   *   the points, tractions on grid boundary faces, and nodal point loads.
+   *   the points, tractions on grid boundary faces, tractions on the body's
+   *   own surface (carried by its surface points, so that they move with
+   *   it: SurfaceTractions), and nodal point loads.
    *
    * The descriptor only describes; nothing in it knows the grid or the
    * points. The classes that turn it into the data of a load step read it:
@@ -81,6 +83,47 @@ namespace qsmpm
     add_traction(const types::boundary_id              id,
                  const std::shared_ptr<Function<dim>> &traction);
 
+    /// How a traction on the body's surface acts as the body deforms.
+    enum class SurfaceLoadType
+    {
+      /// A force per unit initial area, of fixed direction: the traction
+      /// function (dim components) at the point's initial position.
+      dead,
+      /// A pressure p (the first component of the function; the others
+      /// must be zero) on the current surface, along its current inward
+      /// normal: force -p n da with n da = J F^{-T} N dA (Nanson). At
+      /// small strain the same as a dead traction -p N.
+      pressure
+    };
+
+    /// A traction on the body's own surface (SurfaceTractions).
+    struct SurfaceTraction
+    {
+      /// Names the condition in messages and reactions.csv.
+      std::string name;
+      /// Which faces of the body's initial surface are loaded: true at the
+      /// face's centre (initial configuration).
+      std::function<bool(const Point<dim> &)> selector;
+      std::shared_ptr<Function<dim>>          traction;
+      SurfaceLoadType                         type;
+    };
+
+    /**
+     * A traction on the faces of the body's initial surface where
+     * @p selector is true, carried by the material points next to those
+     * faces with their share of the area, so that it follows the body
+     * (SurfaceTractions). Unlike add_traction(), the loaded surface need
+     * not lie on a grid face and may leave it. Add every surface traction
+     * before the material points are made: each point carries the area of
+     * each condition.
+     */
+    void
+    add_surface_traction(
+      const std::string                             &name,
+      const std::function<bool(const Point<dim> &)> &selector,
+      const std::shared_ptr<Function<dim>>          &traction,
+      const SurfaceLoadType type = SurfaceLoadType::dead);
+
     /// A body force per unit volume (dim components) at the points.
     void
     set_body_force(const std::shared_ptr<Function<dim>> &body_force);
@@ -113,6 +156,10 @@ namespace qsmpm
       std::pair<types::boundary_id, std::shared_ptr<Function<dim>>>> &
     tractions() const;
 
+    /// The tractions on the body's surface, in the order they were added.
+    const std::vector<SurfaceTraction> &
+    surface_tractions() const;
+
     /// The body force, or nullptr.
     const std::shared_ptr<Function<dim>> &
     body_force() const;
@@ -141,6 +188,7 @@ namespace qsmpm
     std::vector<DirichletCondition> dirichlet;
     std::vector<std::pair<types::boundary_id, std::shared_ptr<Function<dim>>>>
                                                        traction_functions;
+    std::vector<SurfaceTraction>                       surface_traction_list;
     std::shared_ptr<Function<dim>>                     body_force_function;
     std::vector<std::pair<Point<dim>, Tensor<1, dim>>> nodal_loads;
     std::function<Tensor<2, dim>(const double)>        gradient;

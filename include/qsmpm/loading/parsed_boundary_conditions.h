@@ -17,13 +17,16 @@ namespace qsmpm
    *
    *   Dirichlet boundaries = 0:xy, 1:x, 2:n
    *   Traction boundaries  = 3
+   *   Surface traction region = x > 9.99
+   *   Surface traction type   = dead
    *   Macroscopic displacement gradient = 1e-3, 0, 0, 0
    *
    * (the small language "id:components" of the first one: boundary ids of
    * the box, components from x, y, z, or n for the normal component only)
-   * and the three functions of the subsections Displacement, Traction and
-   * Body force, which every displacement condition, every traction boundary
-   * and the body force share.
+   * and the four functions of the subsections Displacement, Traction,
+   * Surface traction and Body force, which every displacement condition,
+   * every traction boundary, the surface traction (SurfaceTractions) and
+   * the body force share.
    *
    * Every mistake in the subsection stops the run with a message that names
    * the entry; deal.II's own messages (of ParsedFunction, of
@@ -46,6 +49,11 @@ namespace qsmpm
       std::string traction;
       /// H (dim x dim numbers, row by row) of a periodic grid, or empty.
       std::string macroscopic_gradient;
+      /// Where the body's surface carries the function of "Surface
+      /// traction": an expression in x, y (z), non-zero there; or empty.
+      std::string surface_region;
+      /// "dead" or "pressure" (BoundaryDescriptor::SurfaceLoadType).
+      std::string surface_type;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -63,8 +71,9 @@ namespace qsmpm
     parse_parameters(ParameterHandler &prm, BoundaryDescriptor<dim> &boundary);
 
     /**
-     * Evaluate the three functions (subsections Displacement, Traction and
-     * Body force) at each of @p points for each load factor in
+     * Evaluate the four functions (subsections Displacement, Traction,
+     * Surface traction and Body force) at each of @p points for each load
+     * factor in
      * @p load_factors, and throw an exception that names the subsection, the
      * expression, the point and t if one of them gives a value that is not
      * a finite number (e.g. sqrt(-1), 1/0). Without this check a NaN in a
@@ -79,14 +88,22 @@ namespace qsmpm
                     const std::vector<double>     &load_factors) const;
 
   private:
-    /// Read and try out the three functions.
+    /// Add the surface traction of <Surface traction region> to
+    /// @p boundary.
+    void
+    add_surface_traction(
+      const Parameters                                      &parameters,
+      const std::shared_ptr<Functions::ParsedFunction<dim>> &traction,
+      BoundaryDescriptor<dim>                               &boundary);
+
+    /// Read and try out the four functions.
     void
     parse_functions(ParameterHandler &prm);
 
-    /// Displacement, Traction and Body force.
-    std::array<std::shared_ptr<Functions::ParsedFunction<dim>>, 3> functions;
+    /// Displacement, Traction, Surface traction and Body force.
+    std::array<std::shared_ptr<Functions::ParsedFunction<dim>>, 4> functions;
     /// Their expressions, for messages.
-    std::array<std::string, 3> expressions;
+    std::array<std::string, 4> expressions;
   };
 } // namespace qsmpm
 

@@ -101,6 +101,11 @@ namespace qsmpm
       unsigned int deformation_gradient = numbers::invalid_unsigned_int;
       /// GIMP only: the half-lengths l_d^0 of the point's initial domain.
       unsigned int initial_half_length = numbers::invalid_unsigned_int;
+      /// With surface tractions only: per condition, the point's share A_0
+      /// of the loaded initial area, its current area vector n da and the
+      /// area-weighted sum of its faces' offsets from the point (2 dim + 1
+      /// doubles each; SurfaceTractions).
+      unsigned int surface_load = numbers::invalid_unsigned_int;
       /// First of the constitutive model's own fields.
       unsigned int state;
     };
@@ -108,11 +113,13 @@ namespace qsmpm
     /**
      * Points for @p model on @p grid. The @p formulation decides which
      * fields the points carry besides the common ones: F at finite strain,
-     * the initial domain half-lengths with GIMP.
+     * the initial domain half-lengths with GIMP; @p n_surface_loads the
+     * number of surface tractions whose area each point carries.
      */
     MaterialPointSet(const BackgroundGrid<dim>    &grid,
                      const ConstitutiveModel<dim> &model,
-                     const Formulation            &formulation = {});
+                     const Formulation            &formulation     = {},
+                     const unsigned int            n_surface_loads = 0);
 
     /**
      * Fill every locally owned cell with points at the positions given by
@@ -275,6 +282,18 @@ namespace qsmpm
     compute_output_fields(const Particles::ParticleAccessor<dim> &particle,
                           ArrayView<double>                       values) const;
 
+    /**
+     * The rule of the last fill(): the points' positions in every cell
+     * they filled, on the reference cell (SurfaceTractions finds the
+     * neighbours of a point with it).
+     */
+    const Quadrature<dim> &
+    placement_rule() const;
+
+    /// The number of surface tractions each point carries an area of.
+    unsigned int
+    n_surface_loads() const;
+
     /// Number of points on all ranks.
     types::particle_index
     n_global_points() const;
@@ -289,6 +308,7 @@ namespace qsmpm
     const Formulation               formulation;
     PropertyLayout                  layout;
     Offsets                         offsets;
+    Quadrature<dim>                 last_rule;
     Particles::ParticleHandler<dim> particle_handler;
   };
 } // namespace qsmpm
