@@ -1,0 +1,228 @@
+#ifndef qsmpm_materials_smeared_cracks_h
+#define qsmpm_materials_smeared_cracks_h
+
+#include <array>
+#include <deal.II/base/tensor.h>
+#include <functional>
+#include <qsmpm/materials/constitutive_model.h>
+#include <qsmpm/materials/linear_elastic.h>
+
+namespace qsmpm
+{
+  /**
+   * Several smeared cracks per point, at any angle, mixed mode: the
+   * elastic-decohesive idea of the paper (Section 3.2; Decohesion) without
+   * its restrictions of Section 3.3 (one crack per point, its normal fixed
+   * along x, cracking only where the crack is expected). Small strain.
+   *
+   * <h3>Kinematics</h3>
+   * A point carries up to `Maximum cracks per point` (at most dim) cracks
+   * k, each with a normal n_k fixed when it starts and a displacement jump
+   * [[u]]_k (dim components: the opening w_k = [[u]]_k . n_k and the slip
+   * s_k, the rest) smeared over the length L_k:
+   *
+   *   sigma = C : (eps - sum_k sym([[u]]_k (x) n_k) / L_k).
+   *
+   * Each crack's traction t_k = sigma n_k balances its cohesive law, for
+   * all cracks at once: a local Newton method on the dim x (number of
+   * cracks) jumps, with the exact Jacobian.
+   *
+   * <h3>The cohesive law</h3>
+   * An effective separation delta = sqrt(<w>^2 + beta^2 |s|^2) (<w> the
+   * positive part: a crack in contact does not soften) with the history
+   * delta* = max(delta, largest delta so far), and the traction
+   *
+   *   t = (T(delta*) / delta*) (<w> n + beta^2 s) + K_c min(w, 0) n,
+   *
+   * T(delta) = K_0 delta up to delta_e = tau_nf / K_0, then linear
+   * softening to zero at delta_0 = 2 G_f / tau_nf. The area under T is G_f
+   * (the triangle with base delta_0 and height tau_nf), in pure opening and
+   * in pure slip alike (where the shear strength is beta tau_nf). Unloading
+   * goes back to zero jump along the secant T(delta*) / delta* (damage),
+   * so that a crack closes and opens again along the same line; beyond
+   * closure the penalty K_c carries compression. K_0 = 100 M / L and
+   * K_c = 1000 M / L (M = lambda + 2 mu) are stiff against the band; the
+   * initial branch only regularizes the start of the crack (its energy is
+   * part of the triangle).
+   *
+   * <h3>Starting a crack</h3>
+   * Where cracking is allowed, a crack starts when the largest principal
+   * stress of the point (with its existing cracks) reaches tau_nf, with its
+   * normal along the principal direction, if the point has fewer than the
+   * maximum number of cracks and that direction makes more than
+   * `Threshold angle` with each existing normal; otherwise the existing
+   * cracks take the load in mixed mode.
+   *
+   * <h3>The smearing length</h3>
+   * The crack band is the band of cells that cracks (with n x n points per
+   * cell and bilinear shape functions all points of a cell see the same
+   * normal strain across the band; see Decohesion): L = h max_i |n_i|,
+   * the cell volume over the area of the cell's mid-plane normal to n
+   * (Oliver 1989: the projection of the cell onto the normal), which is h
+   * for a crack along a cell edge and h / sqrt 2 at 45 degrees in 2D.
+   *
+   * <h3>Dissipation</h3>
+   * For the damage law the energy dissipated by a crack whose history
+   * grows to delta* is D(delta*) = int_0^delta* T - T(delta*) delta* / 2
+   * (the work minus what unloading along the secant gives back): 0 on the
+   * initial branch, G_f at complete failure; per unit volume D / L_k.
+   *
+   * Selected with `set Model = smeared cracks` (subsection
+   * "Material/smeared cracks").
+   */
+  template <int dim>
+  class SmearedCracks : public ConstitutiveModel<dim>
+  {
+  public:
+    std::string
+    name() const override
+    {
+      return "smeared cracks";
+    }
+
+    /// The subsection "smeared cracks".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      typename LinearElastic<dim>::Parameters elastic;
+      double                                  tensile_strength = 1.;
+      double                                  fracture_energy  = 1.;
+      double                                  crack_band_width = 0.;
+      unsigned int                            max_cracks       = dim;
+      double                                  threshold_angle  = 60.;
+      double                                  shear_factor     = 1.;
+      /// An expression in x, y (, z): cracking where it is > 0.5.
+      std::string cracking_region = "1";
+
+      void
+      add_parameters(ParameterHandler &prm);
+
+      /// Check the values (stops with a message naming the entry).
+      void
+      check() const;
+    };
+
+    explicit SmearedCracks(const Parameters &parameters);
+
+    /// Construct from the subsection "smeared cracks".
+    explicit SmearedCracks(ParameterHandler &prm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Cracking only at points created where @p region is true.
+    void
+    set_crack_region(const std::function<bool(const Point<dim> &)> &region);
+
+    std::vector<StateField>
+    state_fields() const override;
+
+    void
+    initialize_state(const Point<dim> &x,
+                     ArrayView<double> state) const override;
+
+    /**
+     * For pictures: the number of cracks, the largest delta* / delta_0
+     * (1: a crack has failed completely) and the angle of the first
+     * crack's normal to the x axis in degrees (0 without a crack).
+     */
+    std::vector<StateField>
+    output_fields() const override;
+
+    void
+    compute_output_fields(const PointState<dim> &point,
+                          ArrayView<double>      values) const override;
+
+    void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const override;
+
+    /**
+     * For preconditioning: the secant stiffness at the committed state,
+     * every crack's cohesive law replaced by its secant T(delta*)/delta*
+     * (K_0 for a crack that has not opened), condensed onto the strain.
+     * Symmetric and positive semi-definite.
+     */
+    SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const override;
+
+    double
+    dissipation(const PointState<dim>  &old,
+                ArrayView<const double> new_state) const override;
+
+    bool
+    computes_dissipation() const override
+    {
+      return true;
+    }
+
+    /// delta_0 = 2 G_f / tau_nf.
+    double
+    critical_separation() const;
+
+    /// L for the crack normal @p n.
+    double
+    smearing_length(const Tensor<1, dim> &n) const;
+
+    /// The cohesive traction magnitude T(delta).
+    double
+    cohesive_traction(const double delta, const double L) const;
+
+    /// D(delta*) of the class documentation, per unit crack area.
+    double
+    dissipated_energy(const double delta_star, const double L) const;
+
+    /// Names of the state fields.
+    static constexpr const char *allowed_name    = "crack_allowed";
+    static constexpr const char *count_name      = "crack_count";
+    static constexpr const char *normals_name    = "crack_normals";
+    static constexpr const char *jumps_name      = "crack_jumps";
+    static constexpr const char *separation_name = "crack_separation";
+
+  private:
+    /// The cracks of a point during a stress update.
+    struct Cracks
+    {
+      unsigned int                    count = 0;
+      std::array<Tensor<1, dim>, dim> normal;
+      std::array<Tensor<1, dim>, dim> jump;
+      std::array<double, dim>         history{};
+      std::array<double, dim>         length{};
+    };
+
+    /// Read the cracks from a point's state.
+    Cracks
+    read(ArrayView<const double> state) const;
+
+    /// The stress for the strain @p eps with the cracks' jumps.
+    SymmetricTensor<2, dim>
+    stress_of(const SymmetricTensor<2, dim> &eps, const Cracks &cracks) const;
+
+    /// The cohesive traction of crack @p k at @p jump, and its derivative.
+    Tensor<1, dim>
+    traction(const Cracks         &cracks,
+             const unsigned int    k,
+             const Tensor<1, dim> &jump,
+             Tensor<2, dim>       *derivative) const;
+
+    /// Solve for the jumps of all cracks at the strain @p eps (local
+    /// Newton); returns false if it did not converge.
+    bool
+    solve_jumps(const SymmetricTensor<2, dim> &eps, Cracks &cracks) const;
+
+    const SymmetricTensor<4, dim> C;
+    const double                  tau_nf;
+    const double                  G_f;
+    const double                  delta_0;
+    const double                  band_width;
+    const unsigned int            max_cracks;
+    const double                  cos_threshold;
+    const double                  beta;
+    /// M = lambda + 2 mu.
+    const double                            M;
+    std::function<bool(const Point<dim> &)> crack_region;
+  };
+} // namespace qsmpm
+
+#endif

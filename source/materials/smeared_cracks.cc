@@ -1,0 +1,665 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/function_parser.h>
+#include <limits>
+#include <memory>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/materials/smeared_cracks.h>
+#include <sstream>
+
+namespace qsmpm
+{
+  namespace
+  {
+    /// The largest local system: dim jumps of dim cracks.
+    constexpr unsigned int max_unknowns = 9;
+
+    /// Solve A x = b (n x n, row-major in @p A) in place by Gaussian
+    /// elimination with partial pivoting; false if A is singular.
+    bool
+    solve_dense(std::array<double, max_unknowns * max_unknowns> &A,
+                std::array<double, max_unknowns>                &b,
+                const unsigned int                               n)
+    {
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          unsigned int pivot = c;
+          for (unsigned int r = c + 1; r < n; ++r)
+            if (std::abs(A[r * n + c]) > std::abs(A[pivot * n + c]))
+              pivot = r;
+          if (!(std::abs(A[pivot * n + c]) > 0.))
+            return false;
+          if (pivot != c)
+            {
+              for (unsigned int k = 0; k < n; ++k)
+                std::swap(A[c * n + k], A[pivot * n + k]);
+              std::swap(b[c], b[pivot]);
+            }
+          for (unsigned int r = c + 1; r < n; ++r)
+            {
+              const double f = A[r * n + c] / A[c * n + c];
+              for (unsigned int k = c; k < n; ++k)
+                A[r * n + k] -= f * A[c * n + k];
+              b[r] -= f * b[c];
+            }
+        }
+      for (int r = n - 1; r >= 0; --r)
+        {
+          double sum = b[r];
+          for (unsigned int k = r + 1; k < n; ++k)
+            sum -= A[r * n + k] * b[k];
+          b[r] = sum / A[r * n + r];
+        }
+      return true;
+    }
+
+    /// G_ab = C_acbd n_c m_d: the traction on the plane n of the stress
+    /// C : (e_b (x) m).
+    template <int dim>
+    Tensor<2, dim>
+    coupling(const SymmetricTensor<4, dim> &C,
+             const Tensor<1, dim>          &n,
+             const Tensor<1, dim>          &m)
+    {
+      Tensor<2, dim> G;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = 0; d < dim; ++d)
+              G[a][b] += C[a][c][b][d] * n[c] * m[d];
+      return G;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  SmearedCracks<dim>::SmearedCracks(const Parameters &parameters)
+    : C(LinearElastic<dim>::isotropic_stiffness(
+        parameters.elastic.elasticity.young_modulus,
+        parameters.elastic.elasticity.poisson_ratio,
+        parameters.elastic.plane_stress))
+    , tau_nf(parameters.tensile_strength)
+    , G_f(parameters.fracture_energy)
+    , delta_0(2. * parameters.fracture_energy / parameters.tensile_strength)
+    , band_width(parameters.crack_band_width)
+    , max_cracks(parameters.max_cracks)
+    , cos_threshold(std::cos(parameters.threshold_angle * M_PI / 180.))
+    , beta(parameters.shear_factor)
+    , M(C[0][0][0][0])
+  {
+    parameters.check();
+    const std::string expression = parameters.cracking_region;
+    auto              parser     = std::make_shared<FunctionParser<dim>>(1);
+    try
+      {
+        parser->initialize(dim == 2 ? "x,y" : "x,y,z",
+                           expression,
+                           std::map<std::string, double>());
+        parser->value(Point<dim>());
+      }
+    catch (const std::exception &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage("smeared cracks: <Cracking region> = <" +
+                               expression + ">: " + Utils::error_message(exc)));
+      }
+    crack_region = [parser](const Point<dim> &x) {
+      return parser->value(x) > 0.5;
+    };
+    // Local stability of the band: the softening slope of T must stay
+    // below the band's stiffness M / L for the largest L (= h).
+    const double L_max = band_width;
+    const double slope =
+      tau_nf / (delta_0 - tau_nf / (100. * M / L_max)); // -dT/d delta
+    if (!(slope < M / L_max))
+      {
+        std::ostringstream message;
+        message << "smeared cracks: the softening branch is locally unstable: "
+                   "the crack band width h = "
+                << band_width
+                << " must be smaller than about M delta_0 / tau_nf = "
+                << M * delta_0 / tau_nf << " (M = lambda + 2 mu = " << M
+                << ", delta_0 = 2 G_f / tau_nf = " << delta_0
+                << "). Refine the grid or check E, tau_nf, G_f.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+  }
+
+
+
+  template <int dim>
+  SmearedCracks<dim>::SmearedCracks(ParameterHandler &prm)
+    : SmearedCracks(Parameters::from(prm))
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    elastic.add_parameters(prm);
+    prm.add_parameter("Tensile strength",
+                      tensile_strength,
+                      "tau_nf: the largest principal stress at which a crack "
+                      "starts, and its normal traction then.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Fracture energy",
+                      fracture_energy,
+                      "G_f: the energy a crack dissipates per unit area, in "
+                      "opening and in slip alike (the area under the "
+                      "softening law; delta_0 = 2 G_f / tau_nf).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Crack band width",
+                      crack_band_width,
+                      "h: the cell size of the background grid (the width "
+                      "of the band of cells that cracks); the smearing "
+                      "length of a crack with normal n is L = h max_i |n_i|.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum cracks per point",
+                      max_cracks,
+                      "At most this many cracks per point (1 to dim).",
+                      Patterns::Integer(1, 3));
+    prm.add_parameter("Threshold angle",
+                      threshold_angle,
+                      "A new crack starts only if the principal direction "
+                      "makes more than this angle (degrees, 0 to 90) with "
+                      "every existing crack normal of the point; otherwise "
+                      "the existing cracks carry the load in mixed mode.",
+                      Patterns::Double(0., 90.));
+    prm.add_parameter("Shear factor",
+                      shear_factor,
+                      "beta: the weight of the slip in the effective "
+                      "separation sqrt(<w>^2 + beta^2 |s|^2); the shear "
+                      "strength is beta tau_nf, the energy in pure slip G_f.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Cracking region",
+                      cracking_region,
+                      "An expression in x, y (and z): points created where "
+                      "it is > 0.5 may crack. Default: everywhere.",
+                      Patterns::Anything());
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::Parameters::check() const
+  {
+    AssertThrow(max_cracks >= 1 && max_cracks <= dim,
+                ExcMessage("smeared cracks: <Maximum cracks per point> = " +
+                           std::to_string(max_cracks) + " must be 1 to " +
+                           std::to_string(dim) + " in " + std::to_string(dim) +
+                           "D."));
+    AssertThrow(threshold_angle > 0. && threshold_angle <= 90.,
+                ExcMessage("smeared cracks: <Threshold angle> must be above "
+                           "0 and at most 90 degrees."));
+    AssertThrow(tensile_strength > 0. && fracture_energy > 0.,
+                ExcMessage("smeared cracks: <Tensile strength> and <Fracture "
+                           "energy> must be positive."));
+    AssertThrow(crack_band_width > 0.,
+                ExcMessage("smeared cracks: set <Crack band width> to the "
+                           "cell size of the background grid."));
+    AssertThrow(shear_factor > 0.,
+                ExcMessage("smeared cracks: <Shear factor> must be "
+                           "positive."));
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    Parameters::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::set_crack_region(
+    const std::function<bool(const Point<dim> &)> &region)
+  {
+    crack_region = region;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  SmearedCracks<dim>::state_fields() const
+  {
+    return {{allowed_name, 1},
+            {count_name, 1},
+            {normals_name, dim * dim},
+            {jumps_name, dim * dim},
+            {separation_name, dim}};
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::initialize_state(const Point<dim> &x,
+                                       ArrayView<double> state) const
+  {
+    std::fill(state.begin(), state.end(), 0.);
+    state[0] = crack_region(x) ? 1. : 0.;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  SmearedCracks<dim>::output_fields() const
+  {
+    return {{"crack_count", 1},
+            {"separation_over_delta_0", 1},
+            {"crack_angle_deg", 1}};
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::compute_output_fields(const PointState<dim> &point,
+                                            ArrayView<double>      values) const
+  {
+    const Cracks cracks  = read(point.state);
+    double       largest = 0.;
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      largest = std::max(largest, cracks.history[k] / delta_0);
+    values[0] = cracks.count;
+    values[1] = largest;
+    values[2] =
+      cracks.count > 0 ?
+        std::atan2(cracks.normal[0][1], cracks.normal[0][0]) * 180. / M_PI :
+        0.;
+  }
+
+
+
+  template <int dim>
+  typename SmearedCracks<dim>::Cracks
+  SmearedCracks<dim>::read(ArrayView<const double> state) const
+  {
+    Cracks cracks;
+    cracks.count = static_cast<unsigned int>(state[1]);
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            cracks.normal[k][d] = state[2 + k * dim + d];
+            cracks.jump[k][d]   = state[2 + dim * dim + k * dim + d];
+          }
+        cracks.history[k] = state[2 + 2 * dim * dim + k];
+        cracks.length[k]  = smearing_length(cracks.normal[k]);
+      }
+    return cracks;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  SmearedCracks<dim>::stress_of(const SymmetricTensor<2, dim> &eps,
+                                const Cracks                  &cracks) const
+  {
+    SymmetricTensor<2, dim> elastic = eps;
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      elastic -= symmetrize(outer_product(cracks.jump[k], cracks.normal[k])) /
+                 cracks.length[k];
+    return C * elastic;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::cohesive_traction(const double delta,
+                                        const double L) const
+  {
+    const double K0      = 100. * M / L;
+    const double delta_e = tau_nf / K0;
+    if (delta <= delta_e)
+      return K0 * delta;
+    if (delta >= delta_0)
+      return 0.;
+    return tau_nf * (delta_0 - delta) / (delta_0 - delta_e);
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::dissipated_energy(const double delta,
+                                        const double L) const
+  {
+    const double delta_e = tau_nf / (100. * M / L);
+    if (delta <= delta_e)
+      return 0.;
+    if (delta >= delta_0)
+      return G_f;
+    const double work =
+      0.5 * tau_nf * delta_e + tau_nf / (delta_0 - delta_e) *
+                                 (delta_0 * (delta - delta_e) -
+                                  0.5 * (delta * delta - delta_e * delta_e));
+    return work - 0.5 * cohesive_traction(delta, L) * delta;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  SmearedCracks<dim>::traction(const Cracks         &cracks,
+                               const unsigned int    k,
+                               const Tensor<1, dim> &jump,
+                               Tensor<2, dim>       *derivative) const
+  {
+    const Tensor<1, dim> &n     = cracks.normal[k];
+    const double          L     = cracks.length[k];
+    const double          w     = jump * n;
+    const double          w_pos = std::max(w, 0.);
+    const Tensor<1, dim>  s     = jump - w * n;
+    const double          delta =
+      std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
+    const bool   loading    = delta > cracks.history[k];
+    const double delta_star = loading ? delta : cracks.history[k];
+    const double K0         = 100. * M / L;
+    const double Kc         = 1000. * M / L;
+    // The secant q = T(delta*) / delta* (K0 on the initial branch).
+    const double         q = delta_star <= tau_nf / K0 ?
+                               K0 :
+                               cohesive_traction(delta_star, L) / delta_star;
+    const Tensor<1, dim> g = w_pos * n + beta * beta * s;
+    Tensor<1, dim>       t = q * g + Kc * std::min(w, 0.) * n;
+    if (derivative != nullptr)
+      {
+        const Tensor<2, dim> nn = outer_product(n, n);
+        Tensor<2, dim>       D =
+          q * ((w > 0. ? 1. : 0.) * nn +
+               beta * beta * (unit_symmetric_tensor<dim>() - nn)) +
+          (w < 0. ? Kc : 0.) * nn;
+        // On the softening branch while loading, q falls with delta:
+        // dq/d delta = -tau_nf delta_0 / ((delta_0 - delta_e) delta^2).
+        const double delta_e = tau_nf / K0;
+        if (loading && delta > delta_e && delta < delta_0)
+          {
+            const double dq =
+              -tau_nf * delta_0 / ((delta_0 - delta_e) * delta * delta);
+            D += dq * outer_product(g, g / delta);
+          }
+        *derivative = D;
+      }
+    return t;
+  }
+
+
+
+  template <int dim>
+  bool
+  SmearedCracks<dim>::solve_jumps(const SymmetricTensor<2, dim> &eps,
+                                  Cracks                        &cracks) const
+  {
+    const unsigned int m = cracks.count, n_unknowns = m * dim;
+    if (m == 0)
+      return true;
+    // The couplings -G(n_k, n_j) / L_j do not depend on the jumps.
+    std::array<Tensor<2, dim>, dim * dim> G;
+    for (unsigned int k = 0; k < m; ++k)
+      for (unsigned int j = 0; j < m; ++j)
+        G[k * dim + j] =
+          coupling(C, cracks.normal[k], cracks.normal[j]) / cracks.length[j];
+
+    const auto residual = [&](const Cracks                     &state,
+                              std::array<double, max_unknowns> &r) {
+      const SymmetricTensor<2, dim> sigma = stress_of(eps, state);
+      double                        norm  = 0.;
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          const Tensor<1, dim> rk = sigma * state.normal[k] -
+                                    traction(state, k, state.jump[k], nullptr);
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              r[k * dim + a] = rk[a];
+              norm += rk[a] * rk[a];
+            }
+        }
+      return std::sqrt(norm);
+    };
+
+    std::array<double, max_unknowns> r{};
+    double                           norm      = residual(cracks, r);
+    const double                     tolerance = 1e-10 * tau_nf;
+    for (unsigned int iteration = 0; iteration < 60; ++iteration)
+      {
+        if (norm <= tolerance)
+          return true;
+        // J = d r / d u: -G_kj - delta_kj dt_k/du_k.
+        std::array<double, max_unknowns * max_unknowns> J{};
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            Tensor<2, dim> Dt;
+            traction(cracks, k, cracks.jump[k], &Dt);
+            for (unsigned int j = 0; j < m; ++j)
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  J[(k * dim + a) * n_unknowns + j * dim + b] =
+                    -G[k * dim + j][a][b] - (k == j ? Dt[a][b] : 0.);
+          }
+        std::array<double, max_unknowns> step = r;
+        if (!solve_dense(J, step, n_unknowns))
+          return false;
+        // Backtracking on |r|: the cohesive law has kinks (loading and
+        // unloading, contact).
+        double lambda     = 1.;
+        Cracks trial      = cracks;
+        double trial_norm = norm;
+        for (unsigned int halving = 0; halving < 12; ++halving, lambda *= 0.5)
+          {
+            trial = cracks;
+            for (unsigned int k = 0; k < m; ++k)
+              for (unsigned int a = 0; a < dim; ++a)
+                trial.jump[k][a] -= lambda * step[k * dim + a];
+            std::array<double, max_unknowns> trial_r{};
+            trial_norm = residual(trial, trial_r);
+            if (trial_norm < norm)
+              {
+                r = trial_r;
+                break;
+              }
+          }
+        if (!(trial_norm < norm))
+          return norm <= 1e-6 * tau_nf;
+        cracks = trial;
+        norm   = trial_norm;
+      }
+    return norm <= tolerance;
+  }
+
+
+
+  template <int dim>
+  void
+  SmearedCracks<dim>::update_stress(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    ArrayView<double>              new_state) const
+  {
+    std::copy(old.state.begin(), old.state.end(), new_state.begin());
+    const SymmetricTensor<2, dim> eps    = old.strain + strain_increment;
+    Cracks                        cracks = read(old.state);
+    bool                          solved = solve_jumps(eps, cracks);
+    stress                               = stress_of(eps, cracks);
+
+    // New cracks: where the largest principal stress reaches tau_nf along a
+    // direction far enough from the existing normals.
+    const bool allowed = old.state[0] > 0.;
+    while (solved && allowed && cracks.count < max_cracks)
+      {
+        const auto principal = eigenvectors(stress);
+        if (principal[0].first < tau_nf)
+          break;
+        const Tensor<1, dim> v          = principal[0].second;
+        bool                 far_enough = true;
+        for (unsigned int k = 0; k < cracks.count; ++k)
+          if (std::abs(v * cracks.normal[k]) >= cos_threshold)
+            far_enough = false;
+        if (!far_enough)
+          break;
+        const unsigned int k = cracks.count++;
+        cracks.normal[k]     = v;
+        cracks.jump[k]       = Tensor<1, dim>();
+        cracks.history[k]    = 0.;
+        cracks.length[k]     = smearing_length(v);
+        solved               = solve_jumps(eps, cracks);
+        stress               = stress_of(eps, cracks);
+      }
+    if (!solved)
+      {
+        // No equilibrium of the cracks found: a residual that is not a
+        // number makes Newton back off (or cut the step).
+        stress = std::numeric_limits<double>::quiet_NaN() *
+                 unit_symmetric_tensor<dim>();
+        return;
+      }
+
+    new_state[1] = cracks.count;
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      {
+        const Tensor<1, dim> &n = cracks.normal[k];
+        const double          w = std::max(cracks.jump[k] * n, 0.);
+        const Tensor<1, dim>  s = cracks.jump[k] - (cracks.jump[k] * n) * n;
+        const double delta = std::sqrt(w * w + beta * beta * s.norm_square());
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            new_state[2 + k * dim + d]             = n[d];
+            new_state[2 + dim * dim + k * dim + d] = cracks.jump[k][d];
+          }
+        new_state[2 + 2 * dim * dim + k] = std::max(cracks.history[k], delta);
+      }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  SmearedCracks<dim>::tangent(const PointState<dim> &old) const
+  {
+    const Cracks cracks = read(old.state);
+    if (cracks.count == 0)
+      return C;
+    const unsigned int m = cracks.count, n_unknowns = m * dim;
+    // The secant S_k of each crack at its committed jump.
+    std::array<Tensor<2, dim>, dim> S;
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        const Tensor<1, dim> &n  = cracks.normal[k];
+        const double          L  = cracks.length[k];
+        const double          K0 = 100. * M / L;
+        const double          h  = cracks.history[k];
+        const double q    = h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
+        const bool   open = cracks.jump[k] * n >= 0.;
+        const Tensor<2, dim> nn = outer_product(n, n);
+        S[k] = q * (beta * beta * (unit_symmetric_tensor<dim>() - nn)) +
+               (open ? q : 1000. * M / L) * nn;
+      }
+    SymmetricTensor<4, dim> result;
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        {
+          SymmetricTensor<2, dim> E;
+          E[a][b]                                            = 1.;
+          const SymmetricTensor<2, dim>                   CE = C * E;
+          std::array<double, max_unknowns * max_unknowns> A{};
+          std::array<double, max_unknowns>                rhs{};
+          for (unsigned int k = 0; k < m; ++k)
+            {
+              const Tensor<1, dim> t = CE * cracks.normal[k];
+              for (unsigned int i = 0; i < dim; ++i)
+                rhs[k * dim + i] = t[i];
+              for (unsigned int j = 0; j < m; ++j)
+                {
+                  const Tensor<2, dim> G =
+                    coupling(C, cracks.normal[k], cracks.normal[j]) /
+                    cracks.length[j];
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int l = 0; l < dim; ++l)
+                      A[(k * dim + i) * n_unknowns + j * dim + l] =
+                        G[i][l] + (k == j ? S[k][i][l] : 0.);
+                }
+            }
+          Cracks response = cracks;
+          if (solve_dense(A, rhs, n_unknowns))
+            for (unsigned int k = 0; k < m; ++k)
+              for (unsigned int i = 0; i < dim; ++i)
+                response.jump[k][i] = rhs[k * dim + i];
+          const SymmetricTensor<2, dim> d_sigma = stress_of(E, response);
+          const double                  factor  = (a == b) ? 1. : 0.5;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              result[i][j][a][b] = factor * d_sigma[i][j];
+        }
+    return result;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::dissipation(const PointState<dim>  &old,
+                                  ArrayView<const double> new_state) const
+  {
+    const Cracks before = read(old.state);
+    const Cracks after  = read(new_state);
+    double       result = 0.;
+    for (unsigned int k = 0; k < after.count; ++k)
+      {
+        const double L        = after.length[k];
+        const double previous = k < before.count ? before.history[k] : 0.;
+        result += (dissipated_energy(after.history[k], L) -
+                   dissipated_energy(previous, L)) /
+                  L;
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::critical_separation() const
+  {
+    return delta_0;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::smearing_length(const Tensor<1, dim> &n) const
+  {
+    double largest = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      largest = std::max(largest, std::abs(n[d]));
+    return band_width * largest;
+  }
+
+
+
+  template class SmearedCracks<2>;
+  template class SmearedCracks<3>;
+
+  QSMPM_REGISTER_CONSTITUTIVE_MODEL(
+    SmearedCracks,
+    "smeared cracks",
+    "Up to dim smeared cracks per point at any angle (normal from the "
+    "principal stress at initiation, a threshold angle between cracks), "
+    "mixed-mode damage-type cohesive law with linear softening, closing and "
+    "re-opening, one fracture energy: E, nu, tau_nf, G_f, crack band width, "
+    "cracking region (default everywhere).")
+} // namespace qsmpm

@@ -1,0 +1,291 @@
+// Single-point paths of the multi-crack smeared model (SmearedCracks), 2D
+// plane stress, E = 1000, nu = 0.2, tau_nf = 1, G_f = 0.005 (delta_0 = 0.01),
+// crack band width h = 0.1, against what the model must do whatever its
+// implementation:
+//
+// 1. Uniaxial strain along a direction n at angle theta to x (eps = e n(x)n,
+//    e growing in 1000 increments to 1.5 tau_nf / E', then 3000 to beyond
+//    complete failure), theta = 0, 15, 30, 45 degrees:
+//    - the crack starts when sigma_nn reaches tau_nf, with its normal along
+//      n (within 1e-6 rad);
+////    - the work of the stress, int sigma : d eps (trapezoidal rule), up to
+//      complete failure (where sigma = 0: all elastic energy is released)
+//      equals G_f / L with
+//      L = h max(|cos theta|, |sin theta|) (the crack band of the cells),
+//      to 1e-3 (the quadrature error of the rule at the kink of the
+//      softening law is about 1e-4; a wrong L is off by 3 % or more);
+//    - the model's own dissipation summed over the path equals the same
+//      G_f / L to 1e-6 (closed form per increment).
+// 2. Unloading from the middle of the softening branch to zero strain: the
+//    stress returns to zero (secant, damage) to 1e-9 tau_nf, and reloading
+//    meets the softening line again at the strain it left it at: the stress
+//    there is that of the first loading to 1e-6.
+// 3. Closing: after the crack has opened and unloaded, compression across
+//    it is carried as by the intact material, sigma_nn = E' eps_nn
+//    (uniaxial strain in plane stress, E' = E / (1 - nu^2)) to 1 %
+//    (the contact penalty is 1000 M / L).
+// 4. A second crack: pulling a cracked point (threshold 60 degrees) along
+//    the direction normal to the first crack's plane (90 degrees) starts a
+//    second crack (count 2) normal to it; pulling along 30 degrees to the
+//    first normal does not (count 1: the first crack takes it in mixed
+//    mode).
+// 5. Slip on a crack that has just started (its opening held): the work of
+//    the stresses up to complete failure is G_f / L (the energy of the
+//    mixed-mode path, almost all of it in slip, is G_f), to 2e-3.
+// 6. Bad entries: Maximum cracks per point = 3 in 2D and Threshold angle =
+//    0 stop with a message naming the entry.
+#include "tests.h"
+
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/materials/smeared_cracks.h>
+
+using namespace qsmpm;
+
+namespace
+{
+  const double E = 1000., nu = 0.2, tau = 1., G_f = 0.005, h = 0.1;
+
+  struct MaterialPoint
+  {
+    SymmetricTensor<2, 2> strain, stress;
+    std::vector<double>   state;
+    double                dissipated = 0., work = 0.;
+  };
+
+  SmearedCracks<2>::Parameters
+  parameters(const double threshold = 60.)
+  {
+    SmearedCracks<2>::Parameters p;
+    p.elastic.elasticity.young_modulus = E;
+    p.elastic.elasticity.poisson_ratio = nu;
+    p.elastic.plane_stress             = true;
+    p.tensile_strength                 = tau;
+    p.fracture_energy                  = G_f;
+    p.crack_band_width                 = h;
+    p.max_cracks                       = 2;
+    p.threshold_angle                  = threshold;
+    return p;
+  }
+
+  void
+  step(const SmearedCracks<2>      &model,
+       MaterialPoint               &p,
+       const SymmetricTensor<2, 2> &d_eps)
+  {
+    std::vector<double>   new_state(p.state.size());
+    SymmetricTensor<2, 2> stress;
+    const PointState<2>   old{p.strain,
+                            p.stress,
+                            ArrayView<const double>(p.state),
+                            1.};
+    model.update_stress(old, d_eps, stress, ArrayView<double>(new_state));
+    p.dissipated += model.dissipation(old, ArrayView<const double>(new_state));
+    p.work += 0.5 * (p.stress + stress) * d_eps;
+    p.strain += d_eps;
+    p.stress = stress;
+    p.state  = new_state;
+  }
+
+  MaterialPoint
+  make_point(const SmearedCracks<2> &model)
+  {
+    MaterialPoint p;
+    p.state.resize(model.n_state_components());
+    model.initialize_state(Point<2>(), ArrayView<double>(p.state));
+    return p;
+  }
+
+  /// n (x) n and t (x) t of the direction at @p degrees.
+  std::pair<SymmetricTensor<2, 2>, SymmetricTensor<2, 2>>
+  directions(const double degrees)
+  {
+    const double a = degrees * M_PI / 180.;
+    Tensor<1, 2> n({std::cos(a), std::sin(a)}), t({-std::sin(a), std::cos(a)});
+    return {symmetrize(outer_product(n, n)), symmetrize(outer_product(t, t))};
+  }
+
+  /// A uniaxial strain increment d e along the direction at @p degrees.
+  SymmetricTensor<2, 2>
+  pull(const MaterialPoint &, const double degrees, const double de)
+  {
+    return de * directions(degrees).first;
+  }
+
+  unsigned int
+  count(const MaterialPoint &p)
+  {
+    return static_cast<unsigned int>(p.state[1]);
+  }
+
+  Tensor<1, 2>
+  first_normal(const MaterialPoint &p)
+  {
+    return Tensor<1, 2>({p.state[2], p.state[3]});
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  const SmearedCracks<2> model(parameters());
+
+  deallog << "1. Uniaxial pull at an angle to the grid" << std::endl;
+  for (const double theta : {0., 15., 30., 45.})
+    {
+      MaterialPoint p        = make_point(model);
+      const auto [nn, tt]    = directions(theta);
+      double       sigma_max = 0.;
+      bool         started   = false;
+      double       angle_err = 1.;
+      const double L = h * std::max(std::abs(std::cos(theta * M_PI / 180.)),
+                                    std::abs(std::sin(theta * M_PI / 180.)));
+      const double E_plane = E / (1. - nu * nu);
+      const double e_peak  = 1.5 * tau / E_plane;
+      const double e_end   = 1.2 * (2. * G_f / tau) / L;
+      for (unsigned int i = 0; i < 4000; ++i)
+        {
+          step(model,
+               p,
+               pull(p,
+                    theta,
+                    i < 1000 ? e_peak / 1000. : (e_end - e_peak) / 3000.));
+          sigma_max = std::max(sigma_max, p.stress * nn);
+          if (!started && count(p) > 0)
+            {
+              started              = true;
+              const Tensor<1, 2> c = first_normal(p);
+              angle_err            = std::acos(
+                std::min(1.,
+                         std::abs(c[0] * std::cos(theta * M_PI / 180.) +
+                                  c[1] * std::sin(theta * M_PI / 180.))));
+            }
+        }
+      const std::string at = "  theta = " + std::to_string(int(theta)) + ": ";
+      // The peak is that of the last elastic increment or of the first on
+      // the softening line, within one increment (1.5e-3 tau_nf).
+      check(at + "|peak sigma_nn - tau_nf|", sigma_max - tau, 2e-3);
+      check(at + "angle between crack normal and load axis (rad)",
+            angle_err,
+            1e-6);
+      check(at + "|work / (G_f / L) - 1|", p.work / (G_f / L) - 1., 1e-3);
+      check(at + "|dissipation / (G_f / L) - 1|",
+            p.dissipated / (G_f / L) - 1.,
+            1e-6);
+      check(at + "|sigma| after failure / tau_nf", p.stress.norm(), 1e-9);
+    }
+
+  deallog << "2. Unloading and reloading" << std::endl;
+  {
+    MaterialPoint       p = make_point(model);
+    std::vector<double> e, s;
+    const double        de = (tau / E) / 10.;
+    for (unsigned int i = 0; i < 300; ++i)
+      {
+        step(model, p, pull(p, 0., de));
+        e.push_back(p.strain[0][0]);
+        s.push_back(p.stress[0][0]);
+      }
+    const double strain_left = p.strain[0][0], stress_left = p.stress[0][0];
+    check_at_least("  softening: stress left the peak (1 - sigma/tau)",
+                   1. - stress_left / tau,
+                   0.05);
+    // Unload to zero strain in x (transverse kept stress free).
+    const double steps = 100;
+    const double back  = strain_left / steps;
+    for (unsigned int i = 0; i < steps; ++i)
+      step(model, p, pull(p, 0., -back));
+    check("  |sigma_xx| at zero strain / tau_nf", p.stress[0][0] / tau, 1e-9);
+    for (unsigned int i = 0; i < steps; ++i)
+      step(model, p, pull(p, 0., back));
+    check("  |sigma_xx on reloading - sigma_xx on loading| / tau_nf",
+          (p.stress[0][0] - stress_left) / tau,
+          1e-6);
+
+    deallog << "3. Closing" << std::endl;
+    for (unsigned int i = 0; i < steps; ++i)
+      step(model, p, pull(p, 0., -back));
+    const double sigma0 = p.stress[0][0], eps0 = p.strain[0][0];
+    step(model, p, pull(p, 0., -1e-3));
+    check("  |compression across the closed crack / (E' d eps) - 1|",
+          (p.stress[0][0] - sigma0) /
+              (E / (1. - nu * nu) * (p.strain[0][0] - eps0)) -
+            1.,
+          1e-2);
+  }
+
+  deallog << "4. A second crack" << std::endl;
+  for (const double second : {90., 30.})
+    {
+      MaterialPoint p = make_point(model);
+      // The first crack, normal to x: pull until it softens a little, then
+      // unload to zero strain.
+      for (unsigned int i = 0; i < 150; ++i)
+        step(model, p, pull(p, 0., (tau / E) / 100.));
+      const double back = p.strain[0][0] / 50.;
+      for (unsigned int i = 0; i < 50; ++i)
+        step(model, p, pull(p, 0., -back));
+      // Then pull along the second direction.
+      for (unsigned int i = 0; i < 300; ++i)
+        step(model, p, pull(p, second, (tau / E) / 100.));
+      const unsigned int expected = second > 60. ? 2 : 1;
+      check_that("  pull at " + std::to_string(int(second)) +
+                   " degrees to the first normal: " + std::to_string(expected) +
+                   " crack(s)",
+                 count(p) == expected);
+      if (expected == 2)
+        check("  |second normal . first normal|",
+              std::abs(p.state[2] * p.state[4] + p.state[3] * p.state[5]),
+              1e-6);
+    }
+
+  deallog << "5. Pure slip" << std::endl;
+  {
+    MaterialPoint p = make_point(model);
+    // Start the crack normal to x, with the smallest opening.
+    while (count(p) == 0)
+      step(model, p, pull(p, 0., (tau / E) / 1000.));
+    const double work_before = p.work;
+    // Then shear: eps_xy grows, eps_xx held.
+    SymmetricTensor<2, 2> d;
+    d[0][1]           = (tau / E) / 50.;
+    double shear_work = 0.;
+    for (unsigned int i = 0; i < 40000; ++i)
+      {
+        const double s_old = p.stress[0][1];
+        step(model, p, d);
+        shear_work += (s_old + p.stress[0][1]) * d[0][1];
+        if (i > 100 && std::abs(p.stress[0][1]) < 1e-12)
+          break;
+      }
+    (void)work_before;
+    (void)shear_work;
+    check_that("  the shear stress has vanished",
+               std::abs(p.stress[0][1]) < 1e-12);
+    check("  |total work / (G_f / h) - 1|", p.work / (G_f / h) - 1., 2e-3);
+  }
+
+  deallog << "6. Bad entries" << std::endl;
+  for (const auto &[entry, change] : std::vector<
+         std::pair<std::string,
+                   std::function<void(SmearedCracks<2>::Parameters &)>>>{
+         {"Maximum cracks per point",
+          [](SmearedCracks<2>::Parameters &p) { p.max_cracks = 3; }},
+         {"Threshold angle",
+          [](SmearedCracks<2>::Parameters &p) { p.threshold_angle = 0.; }}})
+    {
+      auto        p = parameters();
+      std::string message;
+      change(p);
+      try
+        {
+          SmearedCracks<2> bad(p);
+        }
+      catch (const std::exception &exc)
+        {
+          message = Utils::error_message(exc);
+        }
+      check_that("  " + entry + ": stops naming the entry",
+                 message.find(entry) != std::string::npos);
+    }
+}
