@@ -81,9 +81,12 @@ namespace CompactTension
   // of the ligament fail only at several millimetres, and it holds some
   // 3 % of the energy. To measure the whole work of fracture, `set Run to
   // complete failure = true` runs on until the band has failed (every
-  // point but the hinge, see below), with load steps that grow in the tail
-  // (`Load stepping/Increment growth factor`); `b15-complete.prm` does
-  // this.
+  // point but the hinge, see below). Displacement control cannot follow the
+  // snap-back near the back face (load steps that grow in the tail,
+  // `Load stepping/Increment growth factor`, jump over it, and the tail
+  // then depends on the number of MPI ranks); `b15-opening.prm` runs to
+  // complete failure by path following on the crack-mouth opening
+  // (`Load stepping/Control = opening`) instead.
   //
   // @sect3{Parameters}
   //

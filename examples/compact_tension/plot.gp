@@ -7,8 +7,9 @@
 # Fig. 3) and fields_b15.png (the normalized crack opening [[u_n]]/u0 and
 # stresses sigma_xx/tau_nf, sigma_yy/tau_nf at initiation, partial and
 # complete failure of b = 15 cm, like the paper's Fig. 4).
-# With output-b15-2x2 and output-b15-complete(-k1) present, it also writes
-# b15_points_per_cell.png and b15_complete_failure.png.
+# With output-b15-2x2 present, it also writes b15_points_per_cell.png, and
+# with output-b15-complete(-k1) (from an earlier file, see below)
+# b15_complete_failure.png.
 set datafile separator ','
 
 set terminal pngcairo size 800,560 font ',11'
@@ -69,11 +70,15 @@ if (strlen(system('ls output-b15-2x2/steps.csv 2>/dev/null')) > 0) {
        'output-b15-2x2/steps.csv' skip 1 using ($2*1e3):($3*1e-3) with lines lw 2 title '2x2 points per cell'
 }
 
-# The run to complete failure (b15-complete.prm, 1 x 8 points in the
-# back-face band cell) and, if present, the same run with one point in that
-# cell (Back-face point refinement = 1, output in output-b15-complete-k1):
-# the load on a logarithmic displacement axis, and the running work of the
-# load over G_f b d.
+# The run to complete failure under displacement control (an earlier file,
+# no longer shipped: b15.prm with Run to complete failure, Grid margin = 3,
+# steps growing by 5 % from 1 mm on and 1 x 8 points in the back-face band
+# cell, output in output-b15-complete; its tail depends on the number of
+# MPI ranks, see doc/example_compact_tension.md, "Complete failure") and,
+# if present, the same run with one point in that cell (Back-face point
+# refinement = 1, output in output-b15-complete-k1): the load on a
+# logarithmic displacement axis, and the running work of the load over
+# G_f b d.
 if (strlen(system('ls output-b15-complete/load_displacement.csv 2>/dev/null')) > 0) {
   set terminal pngcairo size 1100,460 font ',11'
   set output 'b15_complete_failure.png'
