@@ -29,9 +29,14 @@
 //    second crack (count 2) normal to it; pulling along 30 degrees to the
 //    first normal does not (count 1: the first crack takes it in mixed
 //    mode).
-// 5. Slip on a crack that has just started (its opening held): the work of
-//    the stresses up to complete failure is G_f / L (the energy of the
-//    mixed-mode path, almost all of it in slip, is G_f), to 2e-3.
+// 5. Mixed mode = effective separation: slip on a crack that has just
+//    started (its opening held): the work of the stresses up to complete
+//    failure is G_f / L (the energy of the mixed-mode path, almost all of
+//    it in slip, is G_f), to 2e-3.
+// 5b. Mixed mode = opening (the default): slip alone does not damage the
+//    crack (its history stays exactly), and the crack carries the shear
+//    stress: sigma_xy above tau_nf after a shear strain eps_xy = 4 tau_nf / E
+//    (elastic: 3.3 tau_nf).
 // 6. Bad entries: Maximum cracks per point = 3 in 2D and Threshold angle =
 //    0 stop with a message naming the entry.
 #include "tests.h"
@@ -239,9 +244,13 @@ main()
               1e-6);
     }
 
-  deallog << "5. Pure slip" << std::endl;
+  deallog << "5. Slip, effective separation" << std::endl;
   {
-    MaterialPoint p = make_point(model);
+    auto slip_parameters = parameters();
+    slip_parameters.mixed_mode =
+      SmearedCracks<2>::MixedMode::effective_separation;
+    const SmearedCracks<2> model(slip_parameters);
+    MaterialPoint          p = make_point(model);
     // Start the crack normal to x, with the smallest opening.
     while (count(p) == 0)
       step(model, p, pull(p, 0., (tau / E) / 1000.));
@@ -263,6 +272,24 @@ main()
     check_that("  the shear stress has vanished",
                std::abs(p.stress[0][1]) < 1e-12);
     check("  |total work / (G_f / h) - 1|", p.work / (G_f / h) - 1., 2e-3);
+  }
+
+  deallog << "5b. Slip, opening as the damage driver" << std::endl;
+  {
+    MaterialPoint p = make_point(model);
+    while (count(p) == 0)
+      step(model, p, pull(p, 0., (tau / E) / 1000.));
+    const double          history = p.state[2 + 2 * 4];
+    SymmetricTensor<2, 2> d;
+    d[0][1] = (tau / E) / 50.;
+    for (unsigned int i = 0; i < 200; ++i)
+      step(model, p, d);
+    check("  |growth of the damage history| by slip alone / delta_0",
+          (p.state[2 + 2 * 4] - history) / (2. * G_f / tau),
+          1e-12);
+    check_at_least("  shear stress carried (sigma_xy / tau_nf)",
+                   p.stress[0][1] / tau,
+                   1.);
   }
 
   deallog << "6. Bad entries" << std::endl;

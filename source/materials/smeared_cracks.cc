@@ -86,6 +86,8 @@ namespace qsmpm
     , max_cracks(parameters.max_cracks)
     , cos_threshold(std::cos(parameters.threshold_angle * M_PI / 180.))
     , beta(parameters.shear_factor)
+    , initiation(parameters.initiation)
+    , mixed_mode(parameters.mixed_mode)
     , M(C[0][0][0][0])
   {
     parameters.check();
@@ -175,6 +177,31 @@ namespace qsmpm
                       "separation sqrt(<w>^2 + beta^2 |s|^2); the shear "
                       "strength is beta tau_nf, the energy in pure slip G_f.",
                       Patterns::Double(0.));
+    Utils::add_selection<MixedMode>(
+      prm,
+      "Mixed mode",
+      mixed_mode,
+      {{"opening", MixedMode::opening},
+       {"effective separation", MixedMode::effective_separation}},
+      "What drives a crack's damage. opening: the normal opening w; the "
+      "shear traction is carried by the same secant stiffness, which falls "
+      "with the opening (a shear retention that vanishes at complete "
+      "failure); slip alone does not damage. effective separation: "
+      "delta = sqrt(<w>^2 + beta^2 |s|^2), so that slip damages too (shear "
+      "strength beta tau_nf, energy G_f in pure slip); in the notched "
+      "plate Newton's method stalled at the peak with it.");
+    Utils::add_selection<Initiation>(
+      prm,
+      "Crack initiation",
+      initiation,
+      {{"step start", Initiation::step_start},
+       {"trial state", Initiation::trial_state}},
+      "step start: a crack starts in the step after the one whose converged "
+      "stress reached tau_nf (its normal from that stress): the cracks of a "
+      "point are fixed within a step, and Newton's method converges where "
+      "many points are about to crack; the peak stress overshoots tau_nf "
+      "by at most one step's increment. trial state: the trial stress of "
+      "each Newton iterate decides (as the decohesion model).");
     prm.add_parameter("Cracking region",
                       cracking_region,
                       "An expression in x, y (and z): points created where "
@@ -364,33 +391,41 @@ namespace qsmpm
     const double          w     = jump * n;
     const double          w_pos = std::max(w, 0.);
     const Tensor<1, dim>  s     = jump - w * n;
-    const double          delta =
-      std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
+    // The damage driver: the opening, or the effective separation.
+    const bool   by_opening = mixed_mode == MixedMode::opening;
+    const double delta =
+      by_opening ? w_pos :
+                   std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
     const bool   loading    = delta > cracks.history[k];
     const double delta_star = loading ? delta : cracks.history[k];
     const double K0         = 100. * M / L;
     const double Kc         = 1000. * M / L;
     // The secant q = T(delta*) / delta* (K0 on the initial branch).
-    const double         q = delta_star <= tau_nf / K0 ?
-                               K0 :
-                               cohesive_traction(delta_star, L) / delta_star;
-    const Tensor<1, dim> g = w_pos * n + beta * beta * s;
-    Tensor<1, dim>       t = q * g + Kc * std::min(w, 0.) * n;
+    const double q = delta_star <= tau_nf / K0 ?
+                       K0 :
+                       cohesive_traction(delta_star, L) / delta_star;
+    // The shear weight: beta^2 with the effective separation (so that the
+    // traction is the gradient of a potential in delta), 1 when the
+    // opening drives the damage (the shear traction q s: the secant shear
+    // stiffness falls with the normal damage).
+    const double         b2 = by_opening ? 1. : beta * beta;
+    const Tensor<1, dim> g  = w_pos * n + b2 * s;
+    Tensor<1, dim>       t  = q * g + Kc * std::min(w, 0.) * n;
     if (derivative != nullptr)
       {
         const Tensor<2, dim> nn = outer_product(n, n);
-        Tensor<2, dim>       D =
-          q * ((w > 0. ? 1. : 0.) * nn +
-               beta * beta * (unit_symmetric_tensor<dim>() - nn)) +
-          (w < 0. ? Kc : 0.) * nn;
+        Tensor<2, dim>       D  = q * ((w > 0. ? 1. : 0.) * nn +
+                                b2 * (unit_symmetric_tensor<dim>() - nn)) +
+                           (w < 0. ? Kc : 0.) * nn;
         // On the softening branch while loading, q falls with delta:
-        // dq/d delta = -tau_nf delta_0 / ((delta_0 - delta_e) delta^2).
+        // dq/d delta = -tau_nf delta_0 / ((delta_0 - delta_e) delta^2),
+        // d delta / du = g / delta (effective separation) or n (opening).
         const double delta_e = tau_nf / K0;
         if (loading && delta > delta_e && delta < delta_0)
           {
             const double dq =
               -tau_nf * delta_0 / ((delta_0 - delta_e) * delta * delta);
-            D += dq * outer_product(g, g / delta);
+            D += dq * outer_product(g, by_opening ? n : g / delta);
           }
         *derivative = D;
       }
@@ -433,7 +468,7 @@ namespace qsmpm
 
     std::array<double, max_unknowns> r{};
     double                           norm      = residual(cracks, r);
-    const double                     tolerance = 1e-10 * tau_nf;
+    const double                     tolerance = 1e-14 * tau_nf;
     for (unsigned int iteration = 0; iteration < 60; ++iteration)
       {
         if (norm <= tolerance)
@@ -473,7 +508,7 @@ namespace qsmpm
               }
           }
         if (!(trial_norm < norm))
-          return norm <= 1e-6 * tau_nf;
+          return norm <= 1e-9 * tau_nf;
         cracks = trial;
         norm   = trial_norm;
       }
@@ -493,32 +528,41 @@ namespace qsmpm
     std::copy(old.state.begin(), old.state.end(), new_state.begin());
     const SymmetricTensor<2, dim> eps    = old.strain + strain_increment;
     Cracks                        cracks = read(old.state);
-    bool                          solved = solve_jumps(eps, cracks);
-    stress                               = stress_of(eps, cracks);
 
     // New cracks: where the largest principal stress reaches tau_nf along a
-    // direction far enough from the existing normals.
-    const bool allowed = old.state[0] > 0.;
-    while (solved && allowed && cracks.count < max_cracks)
-      {
-        const auto principal = eigenvectors(stress);
-        if (principal[0].first < tau_nf)
-          break;
-        const Tensor<1, dim> v          = principal[0].second;
-        bool                 far_enough = true;
-        for (unsigned int k = 0; k < cracks.count; ++k)
-          if (std::abs(v * cracks.normal[k]) >= cos_threshold)
-            far_enough = false;
-        if (!far_enough)
-          break;
-        const unsigned int k = cracks.count++;
-        cracks.normal[k]     = v;
-        cracks.jump[k]       = Tensor<1, dim>();
-        cracks.history[k]    = 0.;
-        cracks.length[k]     = smearing_length(v);
-        solved               = solve_jumps(eps, cracks);
-        stress               = stress_of(eps, cracks);
-      }
+    // direction far enough from the existing normals. By default the
+    // committed stress of the start of the step decides (the set of cracks
+    // is then fixed within a step and the residual is a smooth function of
+    // the increment, which Newton's method needs where many points are
+    // about to crack); with trial-state initiation the trial stress does.
+    const bool allowed          = old.state[0] > 0.;
+    const auto add_crack_if_due = [&](const SymmetricTensor<2, dim> &sigma) {
+      if (!allowed || cracks.count >= max_cracks)
+        return false;
+      // Eigenvalues are cheap; eigenvectors only where a crack may start.
+      if (eigenvalues(sigma)[0] < tau_nf)
+        return false;
+      const Tensor<1, dim> v = eigenvectors(sigma)[0].second;
+      for (unsigned int k = 0; k < cracks.count; ++k)
+        if (std::abs(v * cracks.normal[k]) >= cos_threshold)
+          return false;
+      const unsigned int k = cracks.count++;
+      cracks.normal[k]     = v;
+      cracks.jump[k]       = Tensor<1, dim>();
+      cracks.history[k]    = 0.;
+      cracks.length[k]     = smearing_length(v);
+      return true;
+    };
+    if (initiation == Initiation::step_start)
+      add_crack_if_due(old.stress);
+    bool solved = solve_jumps(eps, cracks);
+    stress      = stress_of(eps, cracks);
+    if (initiation == Initiation::trial_state)
+      while (solved && add_crack_if_due(stress))
+        {
+          solved = solve_jumps(eps, cracks);
+          stress = stress_of(eps, cracks);
+        }
     if (!solved)
       {
         // No equilibrium of the cracks found: a residual that is not a
@@ -531,10 +575,12 @@ namespace qsmpm
     new_state[1] = cracks.count;
     for (unsigned int k = 0; k < cracks.count; ++k)
       {
-        const Tensor<1, dim> &n = cracks.normal[k];
-        const double          w = std::max(cracks.jump[k] * n, 0.);
-        const Tensor<1, dim>  s = cracks.jump[k] - (cracks.jump[k] * n) * n;
-        const double delta = std::sqrt(w * w + beta * beta * s.norm_square());
+        const Tensor<1, dim> &n     = cracks.normal[k];
+        const double          w     = std::max(cracks.jump[k] * n, 0.);
+        const Tensor<1, dim>  s     = cracks.jump[k] - (cracks.jump[k] * n) * n;
+        const double          delta = mixed_mode == MixedMode::opening ?
+                                        w :
+                                        std::sqrt(w * w + beta * beta * s.norm_square());
         for (unsigned int d = 0; d < dim; ++d)
           {
             new_state[2 + k * dim + d]             = n[d];
@@ -565,7 +611,8 @@ namespace qsmpm
         const double q    = h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
         const bool   open = cracks.jump[k] * n >= 0.;
         const Tensor<2, dim> nn = outer_product(n, n);
-        S[k] = q * (beta * beta * (unit_symmetric_tensor<dim>() - nn)) +
+        const double b2 = mixed_mode == MixedMode::opening ? 1. : beta * beta;
+        S[k]            = q * (b2 * (unit_symmetric_tensor<dim>() - nn)) +
                (open ? q : 1000. * M / L) * nn;
       }
     SymmetricTensor<4, dim> result;
@@ -624,6 +671,19 @@ namespace qsmpm
         result += (dissipated_energy(after.history[k], L) -
                    dissipated_energy(previous, L)) /
                   L;
+        // With the opening as the damage driver the shear secant falls
+        // with the normal damage and releases (q_old - q_new) |s|^2 / 2.
+        if (mixed_mode == MixedMode::opening && after.history[k] > previous)
+          {
+            const Tensor<1, dim> &n = after.normal[k];
+            const Tensor<1, dim>  s = after.jump[k] - (after.jump[k] * n) * n;
+            const auto            q = [&](const double h) {
+              const double K0 = 100. * M / L;
+              return h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
+            };
+            result +=
+              0.5 * (q(previous) - q(after.history[k])) * s.norm_square() / L;
+          }
       }
     return result;
   }

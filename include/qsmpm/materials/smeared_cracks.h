@@ -28,26 +28,37 @@ namespace qsmpm
    * cracks) jumps, with the exact Jacobian.
    *
    * <h3>The cohesive law</h3>
-   * An effective separation delta = sqrt(<w>^2 + beta^2 |s|^2) (<w> the
-   * positive part: a crack in contact does not soften) with the history
-   * delta* = max(delta, largest delta so far), and the traction
+   * A damage variable per crack, the history delta* = max(delta, largest
+   * delta so far) of a separation delta, and the traction
    *
-   *   t = (T(delta*) / delta*) (<w> n + beta^2 s) + K_c min(w, 0) n,
+   *   t = (T(delta*) / delta*) (<w> n + b s) + K_c min(w, 0) n,
    *
    * T(delta) = K_0 delta up to delta_e = tau_nf / K_0, then linear
-   * softening to zero at delta_0 = 2 G_f / tau_nf. The area under T is G_f
-   * (the triangle with base delta_0 and height tau_nf), in pure opening and
-   * in pure slip alike (where the shear strength is beta tau_nf). Unloading
-   * goes back to zero jump along the secant T(delta*) / delta* (damage),
-   * so that a crack closes and opens again along the same line; beyond
-   * closure the penalty K_c carries compression. K_0 = 100 M / L and
+   * softening to zero at delta_0 = 2 G_f / tau_nf: the area under T is G_f
+   * (the triangle with base delta_0 and height tau_nf). `Mixed mode`
+   * chooses delta:
+   *  - opening (default): delta = <w> (the positive part of the opening:
+   *    a crack in contact does not soften) and b = 1: the shear traction
+   *    is carried by the same secant stiffness, which falls with the
+   *    opening to zero at complete failure (Rots' shear retention); slip
+   *    alone does not damage the crack.
+   *  - effective separation: delta = sqrt(<w>^2 + beta^2 |s|^2) and
+   *    b = beta^2: slip damages as well (shear strength beta tau_nf,
+   *    energy G_f in pure slip too). Measured in the notched plate in
+   *    tension, Newton's method stalled at the peak with it, not with the
+   *    default.
+   * Unloading goes back to zero jump along the secant T(delta*) / delta*
+   * (damage), so that a crack closes and opens again along the same line;
+   * beyond closure the penalty K_c carries compression. K_0 = 100 M / L and
    * K_c = 1000 M / L (M = lambda + 2 mu) are stiff against the band; the
    * initial branch only regularizes the start of the crack (its energy is
    * part of the triangle).
    *
    * <h3>Starting a crack</h3>
    * Where cracking is allowed, a crack starts when the largest principal
-   * stress of the point (with its existing cracks) reaches tau_nf, with its
+   * stress of the point (with its existing cracks; by default the
+   * committed stress at the start of the step, `Crack initiation`)
+   * reaches tau_nf, with its
    * normal along the principal direction, if the point has fewer than the
    * maximum number of cracks and that direction makes more than
    * `Threshold angle` with each existing normal; otherwise the existing
@@ -80,6 +91,24 @@ namespace qsmpm
       return "smeared cracks";
     }
 
+    /// Which stress decides that a crack starts.
+    enum class Initiation
+    {
+      /// The committed stress at the start of the step.
+      step_start,
+      /// The trial stress of each evaluation.
+      trial_state
+    };
+
+    /// What drives the damage of a crack.
+    enum class MixedMode
+    {
+      /// The normal opening <w>; shear traction q s.
+      opening,
+      /// The effective separation sqrt(<w>^2 + beta^2 |s|^2).
+      effective_separation
+    };
+
     /// The subsection "smeared cracks".
     struct Parameters : ParameterStruct<Parameters>
     {
@@ -90,6 +119,8 @@ namespace qsmpm
       unsigned int                            max_cracks       = dim;
       double                                  threshold_angle  = 60.;
       double                                  shear_factor     = 1.;
+      Initiation initiation = Initiation::step_start;
+      MixedMode  mixed_mode = MixedMode::opening;
       /// An expression in x, y (, z): cracking where it is > 0.5.
       std::string cracking_region = "1";
 
@@ -219,6 +250,8 @@ namespace qsmpm
     const unsigned int            max_cracks;
     const double                  cos_threshold;
     const double                  beta;
+    const Initiation              initiation;
+    const MixedMode               mixed_mode;
     /// M = lambda + 2 mu.
     const double                            M;
     std::function<bool(const Point<dim> &)> crack_region;
