@@ -281,6 +281,12 @@ namespace Footing
     write_plastic_strain(const std::string &file) const;
 
   private:
+    /// Whether the points have GIMP shape functions.
+    bool
+    gimp()
+    {
+      return problem.parameters().material_points.formulation.gimp();
+    }
     void
     make_grid();
     void
@@ -366,9 +372,14 @@ namespace Footing
       (footing.space_above > 0. ?
          n_cells(footing.space_above, "Space above the surface") :
          0);
-    problem.grid().make_box(Point<dim>(),
+    // With GIMP the domains of the points at the fixed base may stretch
+    // across it (cpGIMP) and would reach beyond a grid that ended there: a
+    // row of cells below the soil, whose nodes are held with the base,
+    // keeps their weights a partition of unity.
+    const unsigned int below = gimp() ? 1 : 0;
+    problem.grid().make_box(Point<dim>(0., -(below * h)),
                             Point<dim>(footing.width, ny * h),
-                            {{nx, ny}});
+                            {{nx, ny + below}});
   }
 
 
@@ -381,10 +392,10 @@ namespace Footing
   {
     const auto  &mp      = problem.parameters().material_points;
     const double surface = footing.depth;
-    problem.points().fill([surface](
-                            const Point<dim> &x) { return x[1] < surface; },
-                          mp.points_per_direction,
-                          mp.placement);
+    problem.points().fill(
+      [surface](const Point<dim> &x) { return x[1] > 0. && x[1] < surface; },
+      mp.points_per_direction,
+      mp.placement);
   }
 
 
@@ -404,7 +415,14 @@ namespace Footing
     const auto zero = std::make_shared<Functions::ZeroFunction<dim>>(dim);
     bcs.add_dirichlet_boundary(0, {}, zero, /*normal_only=*/true);
     bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
-    bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
+    if (gimp())
+      bcs.add_dirichlet_nodes(
+        "base",
+        [this](const Point<dim> &x) { return x[1] <= 1e-10 * h; },
+        {{true, true}},
+        zero);
+    else
+      bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
     footing_condition = bcs.dirichlet_conditions().size();
 
     const double a = footing.half_width, surface = footing.depth;
