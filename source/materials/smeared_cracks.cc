@@ -88,6 +88,7 @@ namespace qsmpm
     , beta(parameters.shear_factor)
     , initiation(parameters.initiation)
     , mixed_mode(parameters.mixed_mode)
+    , integration(parameters.integration)
     , M(C[0][0][0][0])
   {
     parameters.check();
@@ -190,6 +191,20 @@ namespace qsmpm
       "delta = sqrt(<w>^2 + beta^2 |s|^2), so that slip damages too (shear "
       "strength beta tau_nf, energy G_f in pure slip); in the notched "
       "plate Newton's method stalled at the peak with it.");
+    Utils::add_selection<DamageIntegration>(
+      prm,
+      "Damage integration",
+      integration,
+      {{"implicit", DamageIntegration::implicit},
+       {"IMPL-EX", DamageIntegration::impl_ex}},
+      "implicit: the damage history of a step follows the trial jumps (the "
+      "cohesive law exactly; Newton's method may cycle where many points "
+      "sit on the kink between loading and unloading). IMPL-EX (Oliver, "
+      "Huespe and Cante 2008): within a step the history is the committed "
+      "one plus the increment of the last step, fixed, so that the step is "
+      "linear in the jumps; the history is then updated from the converged "
+      "jumps. First-order accurate in the step size: the traction may "
+      "leave the softening line by one step's change.");
     Utils::add_selection<Initiation>(
       prm,
       "Crack initiation",
@@ -263,7 +278,8 @@ namespace qsmpm
             {count_name, 1},
             {normals_name, dim * dim},
             {jumps_name, dim * dim},
-            {separation_name, dim}};
+            {separation_name, dim},
+            {separation_increment_name, dim}};
   }
 
 
@@ -322,8 +338,9 @@ namespace qsmpm
             cracks.normal[k][d] = state[2 + k * dim + d];
             cracks.jump[k][d]   = state[2 + dim * dim + k * dim + d];
           }
-        cracks.history[k] = state[2 + 2 * dim * dim + k];
-        cracks.length[k]  = smearing_length(cracks.normal[k]);
+        cracks.history[k]   = state[2 + 2 * dim * dim + k];
+        cracks.increment[k] = state[2 + 2 * dim * dim + dim + k];
+        cracks.length[k]    = smearing_length(cracks.normal[k]);
       }
     return cracks;
   }
@@ -396,8 +413,13 @@ namespace qsmpm
     const double delta =
       by_opening ? w_pos :
                    std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
-    const bool   loading    = delta > cracks.history[k];
-    const double delta_star = loading ? delta : cracks.history[k];
+    // IMPL-EX: the history of the step is extrapolated from the last one
+    // and fixed, so that the traction is linear in the jump within a step.
+    const bool   impl_ex    = integration == DamageIntegration::impl_ex;
+    const bool   loading    = !impl_ex && delta > cracks.history[k];
+    const double delta_star = impl_ex ?
+                                cracks.history[k] + cracks.increment[k] :
+                                (loading ? delta : cracks.history[k]);
     const double K0         = 100. * M / L;
     const double Kc         = 1000. * M / L;
     // The secant q = T(delta*) / delta* (K0 on the initial branch).
@@ -586,7 +608,9 @@ namespace qsmpm
             new_state[2 + k * dim + d]             = n[d];
             new_state[2 + dim * dim + k * dim + d] = cracks.jump[k][d];
           }
-        new_state[2 + 2 * dim * dim + k] = std::max(cracks.history[k], delta);
+        const double history             = std::max(cracks.history[k], delta);
+        new_state[2 + 2 * dim * dim + k] = history;
+        new_state[2 + 2 * dim * dim + dim + k] = history - cracks.history[k];
       }
   }
 
@@ -607,7 +631,10 @@ namespace qsmpm
         const Tensor<1, dim> &n  = cracks.normal[k];
         const double          L  = cracks.length[k];
         const double          K0 = 100. * M / L;
-        const double          h  = cracks.history[k];
+        const double          h =
+          cracks.history[k] + (integration == DamageIntegration::impl_ex ?
+                                 cracks.increment[k] :
+                                 0.);
         const double q    = h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
         const bool   open = cracks.jump[k] * n >= 0.;
         const Tensor<2, dim> nn = outer_product(n, n);
