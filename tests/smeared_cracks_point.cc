@@ -11,7 +11,8 @@
 ////    - the work of the stress, int sigma : d eps (trapezoidal rule), up to
 //      complete failure (where sigma = 0: all elastic energy is released)
 //      equals G_f / L with
-//      L = h max(|cos theta|, |sin theta|) (the crack band of the cells),
+//      L = h (|cos theta| + |sin theta|) (the projection of the cell onto
+//      the normal, the default `Smearing length`),
 //      to 1e-3 (the quadrature error of the rule at the kink of the
 //      softening law is about 1e-4; a wrong L is off by 3 % or more);
 //    - the model's own dissipation summed over the path equals the same
@@ -150,11 +151,11 @@ main()
       double       sigma_max = 0.;
       bool         started   = false;
       double       angle_err = 1.;
-      const double L = h * std::max(std::abs(std::cos(theta * M_PI / 180.)),
-                                    std::abs(std::sin(theta * M_PI / 180.)));
-      const double E_plane = E / (1. - nu * nu);
-      const double e_peak  = 1.5 * tau / E_plane;
-      const double e_end   = 1.2 * (2. * G_f / tau) / L;
+      const double L         = h * (std::abs(std::cos(theta * M_PI / 180.)) +
+                            std::abs(std::sin(theta * M_PI / 180.)));
+      const double E_plane   = E / (1. - nu * nu);
+      const double e_peak    = 1.5 * tau / E_plane;
+      const double e_end     = 1.2 * (2. * G_f / tau) / L;
       for (unsigned int i = 0; i < 4000; ++i)
         {
           step(model,
@@ -305,12 +306,13 @@ main()
     impl_ex_parameters.integration =
       SmearedCracks<2>::DamageIntegration::impl_ex;
     const SmearedCracks<2> model(impl_ex_parameters);
-    MaterialPoint          p         = make_point(model);
-    const double           theta     = 30.;
-    const double           L         = h * std::cos(theta * M_PI / 180.);
-    const double           e_peak    = 1.5 * tau / (E / (1. - nu * nu));
-    const double           e_end     = 1.2 * (2. * G_f / tau) / L;
-    double                 sigma_max = 0.;
+    MaterialPoint          p     = make_point(model);
+    const double           theta = 30.;
+    const double           L =
+      h * (std::cos(theta * M_PI / 180.) + std::sin(theta * M_PI / 180.));
+    const double e_peak    = 1.5 * tau / (E / (1. - nu * nu));
+    const double e_end     = 1.2 * (2. * G_f / tau) / L;
+    double       sigma_max = 0.;
     for (unsigned int i = 0; i < 4000; ++i)
       {
         step(model,

@@ -89,6 +89,7 @@ namespace qsmpm
     , initiation(parameters.initiation)
     , mixed_mode(parameters.mixed_mode)
     , integration(parameters.integration)
+    , smearing(parameters.smearing)
     , M(C[0][0][0][0])
   {
     parameters.check();
@@ -112,7 +113,9 @@ namespace qsmpm
     };
     // Local stability of the band: the softening slope of T must stay
     // below the band's stiffness M / L for the largest L (= h).
-    const double L_max = band_width;
+    const double L_max =
+      band_width *
+      (smearing == SmearingLength::projection ? std::sqrt(double(dim)) : 1.);
     const double slope =
       tau_nf / (delta_0 - tau_nf / (100. * M / L_max)); // -dT/d delta
     if (!(slope < M / L_max))
@@ -159,7 +162,8 @@ namespace qsmpm
                       crack_band_width,
                       "h: the cell size of the background grid (the width "
                       "of the band of cells that cracks); the smearing "
-                      "length of a crack with normal n is L = h max_i |n_i|.",
+                      "length of a crack with normal n follows from it "
+                      "(<Smearing length>).",
                       Patterns::Double(0.));
     prm.add_parameter("Maximum cracks per point",
                       max_cracks,
@@ -191,6 +195,19 @@ namespace qsmpm
       "delta = sqrt(<w>^2 + beta^2 |s|^2), so that slip damages too (shear "
       "strength beta tau_nf, energy G_f in pure slip); in the notched "
       "plate Newton's method stalled at the peak with it.");
+    Utils::add_selection<SmearingLength>(
+      prm,
+      "Smearing length",
+      smearing,
+      {{"mid-plane", SmearingLength::mid_plane},
+       {"projection", SmearingLength::projection}},
+      "The smearing length L of a crack with normal n in cells of size h. "
+      "mid-plane: L = h max_i |n_i|, the cell volume over the area of its "
+      "mid-plane normal to n (a band one cell wide along a cell edge, or a "
+      "diagonal chain of cells). projection: L = h sum_i |n_i|, the "
+      "projection of the cell onto n (Oliver 1989): the width of a band "
+      "of cells that share faces, as a crack across the cells of a grid "
+      "at an angle opens.");
     Utils::add_selection<DamageIntegration>(
       prm,
       "Damage integration",
@@ -730,10 +747,14 @@ namespace qsmpm
   double
   SmearedCracks<dim>::smearing_length(const Tensor<1, dim> &n) const
   {
-    double largest = 0.;
+    double largest = 0., sum = 0.;
     for (unsigned int d = 0; d < dim; ++d)
-      largest = std::max(largest, std::abs(n[d]));
-    return band_width * largest;
+      {
+        largest = std::max(largest, std::abs(n[d]));
+        sum += std::abs(n[d]);
+      }
+    return band_width *
+           (smearing == SmearingLength::projection ? sum : largest);
   }
 
 

@@ -64,7 +64,8 @@ namespace qsmpm
           {
             const auto ij =
               SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
-            table[k] = {{ij[0], ij[1]}};
+            table[k] = {{static_cast<unsigned int>(ij[0]),
+                         static_cast<unsigned int>(ij[1])}};
           }
         return table;
       }();
