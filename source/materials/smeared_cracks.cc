@@ -547,11 +547,69 @@ namespace qsmpm
               }
           }
         if (!(trial_norm < norm))
-          return norm <= 1e-9 * tau_nf;
+          break;
         cracks = trial;
         norm   = trial_norm;
       }
-    return norm <= tolerance;
+    if (norm <= 1e-9 * tau_nf)
+      return true;
+
+    // With IMPL-EX the law is piecewise linear: per crack, open (secant q
+    // across) or in contact (the penalty K_c across). Where Newton's
+    // method cycles between the two (a crack that has almost failed, with
+    // q near zero, closing), try every combination and keep the one whose
+    // openings have the signs it assumed.
+    if (integration != DamageIntegration::impl_ex)
+      return false;
+    const SymmetricTensor<2, dim> C_eps = C * eps;
+    for (unsigned int mask = 0; mask < (1u << m); ++mask)
+      {
+        std::array<double, max_unknowns * max_unknowns> A{};
+        std::array<double, max_unknowns>                u{};
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const Tensor<1, dim> &n          = cracks.normal[k];
+            const bool            in_contact = (mask >> k) & 1u;
+            // The secant of traction(): its derivative with the opening
+            // assumed positive (open) or negative (contact).
+            Tensor<1, dim> probe = n;
+            if (in_contact)
+              probe = -n;
+            Tensor<2, dim> S;
+            Cracks         at = cracks;
+            at.jump[k]        = 1e-30 * probe;
+            traction(at, k, at.jump[k], &S);
+            const Tensor<1, dim> t = C_eps * n;
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                u[k * dim + a] = t[a];
+                for (unsigned int j = 0; j < m; ++j)
+                  for (unsigned int b = 0; b < dim; ++b)
+                    A[(k * dim + a) * n_unknowns + j * dim + b] =
+                      G[k * dim + j][a][b] + (k == j ? S[a][b] : 0.);
+              }
+          }
+        if (!solve_dense(A, u, n_unknowns))
+          continue;
+        Cracks candidate  = cracks;
+        bool   consistent = true;
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            for (unsigned int a = 0; a < dim; ++a)
+              candidate.jump[k][a] = u[k * dim + a];
+            const double w          = candidate.jump[k] * cracks.normal[k];
+            const bool   in_contact = (mask >> k) & 1u;
+            if ((in_contact && w > 0.) || (!in_contact && w < 0.))
+              consistent = false;
+          }
+        std::array<double, max_unknowns> check{};
+        if (consistent && residual(candidate, check) <= 1e-9 * tau_nf)
+          {
+            cracks = candidate;
+            return true;
+          }
+      }
+    return false;
   }
 
 
