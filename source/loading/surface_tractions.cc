@@ -415,12 +415,27 @@ namespace qsmpm
           conditions[load.condition].traction->set_time(time);
           conditions[load.condition].traction->vector_value(
             initial_position(load.point), traction);
-          const double area = data[offset + load.condition * (2 * dim + 1)];
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            values[i] = load_values[load.first + i] *
-                        traction[load_components[load.first + i]] * area;
-          f_ext.add(dofs_per_cell, &load_dofs[load.first], values.data());
+          const double   area = data[offset + load.condition * (2 * dim + 1)];
+          Tensor<1, dim> force;
+          for (unsigned int d = 0; d < dim; ++d)
+            force[d] = traction[d] * area;
+          spread(load, force, values, f_ext);
         }
+  }
+
+
+
+  template <int dim>
+  void
+  SurfaceTractions<dim>::spread(const Load           &load,
+                                const Tensor<1, dim> &force,
+                                std::vector<double>  &values,
+                                VectorType           &f) const
+  {
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      values[i] =
+        load_values[load.first + i] * force[load_components[load.first + i]];
+    f.add(dofs_per_cell, &load_dofs[load.first], values.data());
   }
 
 
@@ -491,10 +506,7 @@ namespace qsmpm
           const Tensor<1, dim> force =
             -value[0] *
             current_area(load.group, load.point, load.condition, du_local);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            values[i] = load_values[load.first + i] *
-                        force[load_components[load.first + i]];
-          forces.add(dofs_per_cell, &load_dofs[load.first], values.data());
+          spread(load, force, values, forces);
         }
     forces.compress(VectorOperation::add);
     R += forces;

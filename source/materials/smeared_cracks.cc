@@ -117,7 +117,7 @@ namespace qsmpm
       band_width *
       (smearing == SmearingLength::projection ? std::sqrt(double(dim)) : 1.);
     const double slope =
-      tau_nf / (delta_0 - tau_nf / (100. * M / L_max)); // -dT/d delta
+      tau_nf / (delta_0 - tau_nf / initial_stiffness(L_max)); // -dT/d delta
     if (!(slope < M / L_max))
       {
         std::ostringstream message;
@@ -383,7 +383,7 @@ namespace qsmpm
   SmearedCracks<dim>::cohesive_traction(const double delta,
                                         const double L) const
   {
-    const double K0      = 100. * M / L;
+    const double K0      = initial_stiffness(L);
     const double delta_e = tau_nf / K0;
     if (delta <= delta_e)
       return K0 * delta;
@@ -396,10 +396,49 @@ namespace qsmpm
 
   template <int dim>
   double
+  SmearedCracks<dim>::initial_stiffness(const double L) const
+  {
+    return 100. * M / L;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::contact_stiffness(const double L) const
+  {
+    return 1000. * M / L;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::secant(const double delta_star, const double L) const
+  {
+    const double K0 = initial_stiffness(L);
+    return delta_star <= tau_nf / K0 ?
+             K0 :
+             cohesive_traction(delta_star, L) / delta_star;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::shear_weight() const
+  {
+    return mixed_mode == MixedMode::opening ? 1. : beta * beta;
+  }
+
+
+
+  template <int dim>
+  double
   SmearedCracks<dim>::dissipated_energy(const double delta,
                                         const double L) const
   {
-    const double delta_e = tau_nf / (100. * M / L);
+    const double delta_e = tau_nf / initial_stiffness(L);
     if (delta <= delta_e)
       return 0.;
     if (delta >= delta_0)
@@ -437,17 +476,15 @@ namespace qsmpm
     const double delta_star = impl_ex ?
                                 cracks.history[k] + cracks.increment[k] :
                                 (loading ? delta : cracks.history[k]);
-    const double K0         = 100. * M / L;
-    const double Kc         = 1000. * M / L;
+    const double K0         = initial_stiffness(L);
+    const double Kc         = contact_stiffness(L);
     // The secant q = T(delta*) / delta* (K0 on the initial branch).
-    const double q = delta_star <= tau_nf / K0 ?
-                       K0 :
-                       cohesive_traction(delta_star, L) / delta_star;
+    const double q = secant(delta_star, L);
     // The shear weight: beta^2 with the effective separation (so that the
     // traction is the gradient of a potential in delta), 1 when the
     // opening drives the damage (the shear traction q s: the secant shear
     // stiffness falls with the normal damage).
-    const double         b2 = by_opening ? 1. : beta * beta;
+    const double         b2 = shear_weight();
     const Tensor<1, dim> g  = w_pos * n + b2 * s;
     Tensor<1, dim>       t  = q * g + Kc * std::min(w, 0.) * n;
     if (derivative != nullptr)
@@ -699,48 +736,48 @@ namespace qsmpm
     if (cracks.count == 0)
       return C;
     const unsigned int m = cracks.count, n_unknowns = m * dim;
-    // The secant S_k of each crack at its committed jump.
-    std::array<Tensor<2, dim>, dim> S;
+    // The condensed system (G + S) du = (C : E) n of the jumps for a strain
+    // variation E, with S_k the secant of crack k at its committed state;
+    // the matrix does not depend on E.
+    std::array<double, max_unknowns * max_unknowns> matrix{};
     for (unsigned int k = 0; k < m; ++k)
       {
-        const Tensor<1, dim> &n  = cracks.normal[k];
-        const double          L  = cracks.length[k];
-        const double          K0 = 100. * M / L;
+        const Tensor<1, dim> &n = cracks.normal[k];
+        const double          L = cracks.length[k];
         const double          h =
           cracks.history[k] + (integration == DamageIntegration::impl_ex ?
                                  cracks.increment[k] :
                                  0.);
-        const double q    = h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
-        const bool   open = cracks.jump[k] * n >= 0.;
-        const Tensor<2, dim> nn = outer_product(n, n);
-        const double b2 = mixed_mode == MixedMode::opening ? 1. : beta * beta;
-        S[k]            = q * (b2 * (unit_symmetric_tensor<dim>() - nn)) +
-               (open ? q : 1000. * M / L) * nn;
+        const double         q    = secant(h, L);
+        const bool           open = cracks.jump[k] * n >= 0.;
+        const Tensor<2, dim> nn   = outer_product(n, n);
+        const Tensor<2, dim> S =
+          q * (shear_weight() * (unit_symmetric_tensor<dim>() - nn)) +
+          (open ? q : contact_stiffness(L)) * nn;
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            const Tensor<2, dim> G =
+              coupling(C, n, cracks.normal[j]) / cracks.length[j];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int l = 0; l < dim; ++l)
+                matrix[(k * dim + i) * n_unknowns + j * dim + l] =
+                  G[i][l] + (k == j ? S[i][l] : 0.);
+          }
       }
     SymmetricTensor<4, dim> result;
     for (unsigned int a = 0; a < dim; ++a)
       for (unsigned int b = a; b < dim; ++b)
         {
           SymmetricTensor<2, dim> E;
-          E[a][b]                                            = 1.;
-          const SymmetricTensor<2, dim>                   CE = C * E;
-          std::array<double, max_unknowns * max_unknowns> A{};
-          std::array<double, max_unknowns>                rhs{};
+          E[a][b]                                           = 1.;
+          const SymmetricTensor<2, dim>                  CE = C * E;
+          std::array<double, max_unknowns *max_unknowns> A  = matrix;
+          std::array<double, max_unknowns>               rhs{};
           for (unsigned int k = 0; k < m; ++k)
             {
               const Tensor<1, dim> t = CE * cracks.normal[k];
               for (unsigned int i = 0; i < dim; ++i)
                 rhs[k * dim + i] = t[i];
-              for (unsigned int j = 0; j < m; ++j)
-                {
-                  const Tensor<2, dim> G =
-                    coupling(C, cracks.normal[k], cracks.normal[j]) /
-                    cracks.length[j];
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int l = 0; l < dim; ++l)
-                      A[(k * dim + i) * n_unknowns + j * dim + l] =
-                        G[i][l] + (k == j ? S[k][i][l] : 0.);
-                }
             }
           Cracks response = cracks;
           if (solve_dense(A, rhs, n_unknowns))
@@ -779,12 +816,9 @@ namespace qsmpm
           {
             const Tensor<1, dim> &n = after.normal[k];
             const Tensor<1, dim>  s = after.jump[k] - (after.jump[k] * n) * n;
-            const auto            q = [&](const double h) {
-              const double K0 = 100. * M / L;
-              return h <= tau_nf / K0 ? K0 : cohesive_traction(h, L) / h;
-            };
-            result +=
-              0.5 * (q(previous) - q(after.history[k])) * s.norm_square() / L;
+            result += 0.5 *
+                      (secant(previous, L) - secant(after.history[k], L)) *
+                      s.norm_square() / L;
           }
       }
     return result;

@@ -128,6 +128,16 @@ namespace qsmpm
     commit(MaterialPointSet<dim> &points, const VectorType &du_ghosted) const;
 
   private:
+    struct Load;
+
+    /// Add N_i(x_f) @p force of @p load to @p f (@p values: scratch of
+    /// dofs_per_cell entries).
+    void
+    spread(const Load           &load,
+           const Tensor<1, dim> &force,
+           std::vector<double>  &values,
+           VectorType           &f) const;
+
     /// The initial position X_p = x_p - u_p of cache point @p p.
     Point<dim>
     initial_position(const unsigned int p) const;

@@ -264,6 +264,22 @@ namespace qsmpm
       std::array<double, dim> length{};
     };
 
+    /// K_0 = 100 M / L, the stiffness of a crack's initial branch.
+    double
+    initial_stiffness(const double L) const;
+
+    /// K_c = 1000 M / L, the penalty of a crack in contact.
+    double
+    contact_stiffness(const double L) const;
+
+    /// The secant T(delta*) / delta* (K_0 on the initial branch).
+    double
+    secant(const double delta_star, const double L) const;
+
+    /// b of the traction: 1 (opening) or beta^2 (effective separation).
+    double
+    shear_weight() const;
+
     /// Read the cracks from a point's state.
     Cracks
     read(ArrayView<const double> state) const;
