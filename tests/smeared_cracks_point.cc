@@ -45,6 +45,21 @@
 //    peak overshoots tau_nf by 3.5 % (tolerance 5e-2): a new crack starts
 //    with no history increment to extrapolate, and the damage lags the
 //    opening until the increments have grown.
+// 8. Failed points: a point pulled along n at 30 degrees to complete
+//    failure while stretched along the crack plane t by eps_tt =
+//    0.5 tau_nf / E (a band that crosses the grid at an angle is stretched
+//    so):
+//    - at failure the crack carries nothing and the point carries the
+//      uniaxial stress sigma_tt = E eps_tt along the crack (its elastic
+//      strain is the one that leaves sigma n = 0), to 1e-9;
+//    - Failed points = no tension (default): from the next step on the
+//      point carries no stress under further stretch along t and in
+//      shear (|sigma| <= 1e-12 tau_nf), the switch dissipates the elastic
+//      energy sigma_tt^2 / (2 E) to 1e-9, and under a compression with
+//      tr eps < 0 it carries the pressure of the 2D bulk modulus,
+//      sigma = E / (2 (1 - nu)) tr(eps) I, to 1e-12;
+//    - Failed points = keep cracks: the stretch along t is carried,
+//      sigma_tt = E eps_tt (the stress that locks an inclined band).
 // 6. Bad entries: Maximum cracks per point = 3 in 2D and Threshold angle =
 //    0 stop with a message naming the entry.
 #include "tests.h"
@@ -329,6 +344,70 @@ main()
           1e-6);
     check("  |sigma| after failure / tau_nf", p.stress.norm(), 1e-9);
   }
+
+  deallog << "8. Failed points" << std::endl;
+  for (const auto failed : {SmearedCracks<2>::FailedPoints::no_tension,
+                            SmearedCracks<2>::FailedPoints::keep_cracks})
+    {
+      auto failed_parameters   = parameters();
+      failed_parameters.failed = failed;
+      const SmearedCracks<2> model(failed_parameters);
+      const bool             no_tension =
+        failed == SmearedCracks<2>::FailedPoints::no_tension;
+      deallog << (no_tension ? "  no tension" : "  keep cracks") << std::endl;
+      MaterialPoint p     = make_point(model);
+      const double  theta = 30.;
+      const auto [nn, tt] = directions(theta);
+      const double L =
+        h * (std::cos(theta * M_PI / 180.) + std::sin(theta * M_PI / 180.));
+      const double e_tt   = 0.5 * tau / E;
+      const double e_peak = 1.5 * tau / (E / (1. - nu * nu));
+      const double e_end  = 1.2 * (2. * G_f / tau) / L;
+      // Pull until the step in which the crack fails completely (the
+      // point's flag point_failed turns 1: the switch is due next step).
+      const unsigned int failed_flag = model.n_state_components() - 1;
+      for (unsigned int i = 0; i < 4000 && p.state[failed_flag] == 0.; ++i)
+        step(model,
+             p,
+             pull(p,
+                  theta,
+                  i < 1000 ? e_peak / 1000. : (e_end - e_peak) / 3000.) +
+               (i < 1000 ? e_tt / 1000. : 0.) * tt);
+      if (no_tension)
+        check_that("    the point is flagged failed",
+                   p.state[failed_flag] == 1.);
+      check("    |sigma - E eps_tt t (x) t| / tau_nf at failure",
+            (p.stress - E * e_tt * tt).norm() / tau,
+            1e-9);
+      const double dissipated = p.dissipated;
+      step(model, p, e_tt * tt);
+      if (no_tension)
+        {
+          check("    |energy dissipated by the switch / (sigma_tt^2 / 2E) - "
+                "1|",
+                (p.dissipated - dissipated) / (0.5 * E * e_tt * e_tt) - 1.,
+                1e-9);
+          SymmetricTensor<2, 2> shear;
+          shear[0][1] = 0.5 * tau / E;
+          step(model, p, shear);
+          check("    |sigma| / tau_nf after stretch along t and shear",
+                p.stress.norm() / tau,
+                1e-12);
+          const SymmetricTensor<2, 2> squeeze =
+            -(trace(p.strain) + 1e-3) / 2. * unit_symmetric_tensor<2>();
+          step(model, p, squeeze);
+          const double bulk = E / (2. * (1. - nu));
+          check("    |sigma - K tr(eps) I| / |K tr(eps)| in compression",
+                (p.stress - bulk * trace(p.strain) * unit_symmetric_tensor<2>())
+                    .norm() /
+                  (bulk * std::abs(trace(p.strain))),
+                1e-12);
+        }
+      else
+        check("    |sigma_tt / (E 2 eps_tt) - 1| after a stretch along t",
+              (p.stress * tt) / (2. * E * e_tt) - 1.,
+              1e-9);
+    }
 
   deallog << "6. Bad entries" << std::endl;
   for (const auto &[entry, change] : std::vector<

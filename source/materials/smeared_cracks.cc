@@ -90,7 +90,11 @@ namespace qsmpm
     , mixed_mode(parameters.mixed_mode)
     , integration(parameters.integration)
     , smearing(parameters.smearing)
+    , failed_points(parameters.failed)
     , M(C[0][0][0][0])
+    , lambda(C[0][0][1][1])
+    , mu(C[0][1][0][1])
+    , compliance(invert(C))
   {
     parameters.check();
     const std::string expression = parameters.cracking_region;
@@ -222,6 +226,21 @@ namespace qsmpm
       "linear in the jumps; the history is then updated from the converged "
       "jumps. First-order accurate in the step size: the traction may "
       "leave the softening line by one step's change.");
+    Utils::add_selection<FailedPoints>(
+      prm,
+      "Failed points",
+      failed,
+      {{"keep cracks", FailedPoints::keep_cracks},
+       {"no tension", FailedPoints::no_tension}},
+      "What a point whose crack has failed completely (delta* >= delta_0, "
+      "open) carries from the next step on. keep cracks: its cracks go on "
+      "(a fully open crack carries no traction on its own plane, but the "
+      "point carries stress along the crack, which locks a band of cells "
+      "that crosses the grid at an angle). no tension: the point has "
+      "broken apart and carries compression only (Miehe's spectral split "
+      "of the elastic response to its total strain, so that a closed "
+      "crack carries contact in any direction); the elastic energy it "
+      "held is dissipated.");
     Utils::add_selection<Initiation>(
       prm,
       "Crack initiation",
@@ -296,7 +315,8 @@ namespace qsmpm
             {normals_name, dim * dim},
             {jumps_name, dim * dim},
             {separation_name, dim},
-            {separation_increment_name, dim}};
+            {separation_increment_name, dim},
+            {failed_name, 1}};
   }
 
 
@@ -660,8 +680,14 @@ namespace qsmpm
     ArrayView<double>              new_state) const
   {
     std::copy(old.state.begin(), old.state.end(), new_state.begin());
-    const SymmetricTensor<2, dim> eps    = old.strain + strain_increment;
-    Cracks                        cracks = read(old.state);
+    const SymmetricTensor<2, dim> eps = old.strain + strain_increment;
+    if (old.state[failed_index] > 0.)
+      {
+        stress                  = no_tension_stress(eps);
+        new_state[failed_index] = 2.;
+        return;
+      }
+    Cracks cracks = read(old.state);
 
     // New cracks: where the largest principal stress reaches tau_nf along a
     // direction far enough from the existing normals. By default the
@@ -723,7 +749,41 @@ namespace qsmpm
         const double history             = std::max(cracks.history[k], delta);
         new_state[2 + 2 * dim * dim + k] = history;
         new_state[2 + 2 * dim * dim + dim + k] = history - cracks.history[k];
+        // A crack that failed completely while open breaks the point apart
+        // from the next step on (the switch is not part of this step's
+        // residual, whose Newton iteration would otherwise jump between
+        // the two laws).
+        if (failed_points == FailedPoints::no_tension && history >= delta_0 &&
+            cracks.jump[k] * n > 0.)
+          new_state[failed_index] = 1.;
       }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  SmearedCracks<dim>::no_tension_stress(const SymmetricTensor<2, dim> &eps,
+                                        SymmetricTensor<4, dim> *tangent) const
+  {
+    const double bulk  = lambda + 2. * mu / dim;
+    const double trace = std::min(dealii::trace(eps), 0.);
+    if (tangent != nullptr)
+      *tangent =
+        (trace < 0. ? bulk : 0.) * outer_product(unit_symmetric_tensor<dim>(),
+                                                 unit_symmetric_tensor<dim>());
+    return bulk * trace * unit_symmetric_tensor<dim>();
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::no_tension_energy(
+    const SymmetricTensor<2, dim> &eps) const
+  {
+    return 0.5 * (lambda + 2. * mu / dim) *
+           std::pow(std::min(trace(eps), 0.), 2);
   }
 
 
@@ -732,6 +792,15 @@ namespace qsmpm
   SymmetricTensor<4, dim>
   SmearedCracks<dim>::tangent(const PointState<dim> &old) const
   {
+    if (old.state[failed_index] > 0.)
+      {
+        // A failed point under tension has no stiffness; the preconditioner
+        // keeps 1e-6 of the elastic one so that it stays invertible where a
+        // node is held by failed points only.
+        SymmetricTensor<4, dim> result;
+        no_tension_stress(old.strain, &result);
+        return result + 1e-6 * C;
+      }
     const Cracks cracks = read(old.state);
     if (cracks.count == 0)
       return C;
@@ -800,6 +869,15 @@ namespace qsmpm
   SmearedCracks<dim>::dissipation(const PointState<dim>  &old,
                                   ArrayView<const double> new_state) const
   {
+    // The step in which a point breaks apart releases the elastic energy
+    // that its cracks' law held beyond what the compressive part keeps;
+    // a failed point is elastic (in compression) thereafter.
+    if (old.state[failed_index] > 1.5)
+      return 0.;
+    if (old.state[failed_index] > 0.)
+      return std::max(0.5 * old.stress * (compliance * old.stress) -
+                        no_tension_energy(old.strain),
+                      0.);
     const Cracks before = read(old.state);
     const Cracks after  = read(new_state);
     double       result = 0.;
@@ -831,6 +909,15 @@ namespace qsmpm
   SmearedCracks<dim>::critical_separation() const
   {
     return delta_0;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::fracture_energy() const
+  {
+    return G_f;
   }
 
 

@@ -96,6 +96,19 @@ namespace qsmpm
    * (the work minus what unloading along the secant gives back): 0 on the
    * initial branch, G_f at complete failure; per unit volume D / L_k.
    *
+   * <h3>Failed points</h3>
+   * A completely failed crack (delta* >= delta_0, open) is traction free on
+   * its plane, but its point would still carry the stress along the crack,
+   * which locks a band of cells that crosses the grid at an angle (the
+   * grid stretches the broken points along the band as the halves
+   * separate). With `Failed points = no tension` (default) such a point
+   * breaks apart from the next step on: sigma = K <tr eps>_- I (K the bulk
+   * modulus; a pressure only, so that closed cracks carry contact), and the
+   * elastic energy it held is dissipated in that step. Measured in the
+   * notched plate at 15 degrees to the grid: the work of fracture over G_f
+   * times the ligament 1.065 instead of 1.93 (and still rising) with
+   * `keep cracks`.
+   *
    * Selected with `set Model = smeared cracks` (subsection
    * "Material/smeared cracks").
    */
@@ -145,6 +158,14 @@ namespace qsmpm
       impl_ex
     };
 
+    enum class FailedPoints
+    {
+      /// A point goes on with its cracks.
+      keep_cracks,
+      /// A point with a completely failed, open crack carries no tension.
+      no_tension
+    };
+
     /// The subsection "smeared cracks".
     struct Parameters : ParameterStruct<Parameters>
     {
@@ -159,6 +180,7 @@ namespace qsmpm
       MixedMode         mixed_mode  = MixedMode::opening;
       DamageIntegration integration = DamageIntegration::implicit;
       SmearingLength    smearing    = SmearingLength::projection;
+      FailedPoints      failed      = FailedPoints::no_tension;
       /// An expression in x, y (, z): cracking where it is > 0.5.
       std::string cracking_region = "1";
 
@@ -230,6 +252,10 @@ namespace qsmpm
     double
     critical_separation() const;
 
+    /// G_f.
+    double
+    fracture_energy() const;
+
     /// L for the crack normal @p n.
     double
     smearing_length(const Tensor<1, dim> &n) const;
@@ -250,6 +276,7 @@ namespace qsmpm
     static constexpr const char *separation_name = "crack_separation";
     static constexpr const char *separation_increment_name =
       "crack_separation_increment";
+    static constexpr const char *failed_name = "point_failed";
 
   private:
     /// The cracks of a point during a stress update.
@@ -300,6 +327,24 @@ namespace qsmpm
     bool
     solve_jumps(const SymmetricTensor<2, dim> &eps, Cracks &cracks) const;
 
+    /// The index of the point_failed flag in a point's state: 0 intact or
+    /// cracking, 1 a crack failed completely in the last step (the point
+    /// carries no tension from the next step on), 2 failed.
+    static constexpr unsigned int failed_index = 2 + 2 * dim * dim + 2 * dim;
+
+    /// A failed point: the compressive part of the elastic response to the
+    /// total strain (Miehe's spectral split), sigma = lambda <tr eps>_-  I
+    /// + 2 mu eps_-, which never carries tension; with @p tangent, its
+    /// derivative.
+    SymmetricTensor<2, dim>
+    no_tension_stress(const SymmetricTensor<2, dim> &eps,
+                      SymmetricTensor<4, dim>       *tangent = nullptr) const;
+
+    /// The energy lambda/2 <tr eps>_-^2 + mu eps_- : eps_- of a failed
+    /// point.
+    double
+    no_tension_energy(const SymmetricTensor<2, dim> &eps) const;
+
     const SymmetricTensor<4, dim> C;
     const double                  tau_nf;
     const double                  G_f;
@@ -312,8 +357,13 @@ namespace qsmpm
     const MixedMode               mixed_mode;
     const DamageIntegration       integration;
     const SmearingLength          smearing;
+    const FailedPoints            failed_points;
     /// M = lambda + 2 mu.
-    const double                            M;
+    const double M;
+    /// The Lame constants of C (plane stress: the reduced lambda).
+    const double lambda, mu;
+    /// The compliance C^-1.
+    const SymmetricTensor<4, dim>           compliance;
     std::function<bool(const Point<dim> &)> crack_region;
   };
 } // namespace qsmpm
