@@ -278,7 +278,8 @@ main(int argc, char **argv)
     "  set Tolerance = 1e-10\n  set Linear tolerance = 1e-10\n"
     "  set Forcing term = eisenstat-walker\n"
     "  set Maximum linear iterations = 200\n";
-  const Result predictor = compacting(solver, "2*t*t");
+  const Result predictor =
+    compacting(solver + "  set Initial guess = linear predictor\n", "2*t*t");
   const Result extrapolation =
     compacting(solver + "  set Initial guess = extrapolation\n", "2*t*t");
   for (const Result *r : {&predictor, &extrapolation})

@@ -176,6 +176,8 @@ main(int argc, char **argv)
         "F-bar",
         10,
         "  set Tolerance = 1e-13\n  set Linear tolerance = 1e-12\n"
+        "  set Forcing term = constant\n"
+        "  set Initial guess = linear predictor\n"
         "  set Maximum linear iterations = 400\n"
         "  set Maximum Newton iterations = 30\n",
         /*hardening=*/1e5);

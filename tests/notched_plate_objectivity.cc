@@ -49,6 +49,7 @@ subsection Notched plate
 end
 subsection Material points
   set Points per cell per direction = 2
+  set Ghost penalty                 = 1e-4
 end
 subsection Material
   set Model = smeared cracks

@@ -60,11 +60,16 @@ namespace
     prm.nonlinear_solver.max_line_search_steps      = 4;
     prm.nonlinear_solver.preconditioner             = "direct";
     prm.nonlinear_solver.preconditioner_reuse_steps = reuse_steps;
-    prm.load_stepping.n_steps                       = 300;
-    prm.load_stepping.final_load_factor             = 3e-4;
-    prm.load_stepping.max_cut_backs                 = 6;
-    prm.output.directory                            = "results";
-    prm.output.interval                             = 0;
+    // Both runs from the linear predictor with a fixed GMRES tolerance:
+    // the comparison is of the preconditioners alone.
+    prm.nonlinear_solver.initial_guess =
+      NewtonParameters::InitialGuess::linear_predictor;
+    prm.nonlinear_solver.eisenstat_walker = false;
+    prm.load_stepping.n_steps             = 300;
+    prm.load_stepping.final_load_factor   = 3e-4;
+    prm.load_stepping.max_cut_backs       = 6;
+    prm.output.directory                  = "results";
+    prm.output.interval                   = 0;
 
     Result result;
     problem.set_step_callback(

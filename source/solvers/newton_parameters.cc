@@ -65,10 +65,11 @@ namespace qsmpm
         preconditioner_reuse_steps,
         "The preconditioner (AMG hierarchy or LU factors) may serve up to "
         "this many load steps before it is built anew from the stiffness of "
-        "the current step. 1: a new one every step (the default). Larger "
-        "values save the set-up where the stiffness changes slowly; a "
-        "preconditioner is always rebuilt after a failed step and when "
-        "GMRES slows down (Preconditioner reuse growth).",
+        "the current step. 1: a new one every step (the paper's runs). "
+        "Larger values save the set-up where the stiffness changes slowly; "
+        "a preconditioner is always rebuilt after a failed step and when "
+        "GMRES slows down (Preconditioner reuse growth), so that reuse "
+        "never changes a converged answer, only the GMRES iterations.",
         Patterns::Integer(1));
       prm.add_parameter(
         "Preconditioner reuse growth",
@@ -85,7 +86,9 @@ namespace qsmpm
         {{"constant", false}, {"eisenstat-walker", true}},
         "constant: GMRES always solves to <Linear tolerance> (the paper); "
         "eisenstat-walker: adapt it to the Newton convergence (Eisenstat "
-        "and Walker's choice 2), starting from <Linear tolerance>.");
+        "and Walker's choice 2), starting from <Linear tolerance>: loose "
+        "where Newton is far from the solution, tight near it. The "
+        "stopping test is on the nonlinear residual either way.");
       prm.add_parameter("Line search steps",
                         max_line_search_steps,
                         "Backtracking: halve the Newton correction at most "
@@ -114,7 +117,9 @@ namespace qsmpm
         "loading it is close to the solution; the linear "
         "predictor serves in the first step, after a step "
         "that failed and after a restart; path following "
-        "(Load stepping/Control) does not use it).");
+        "(Load stepping/Control) does not use it). Under "
+        "proportional loading extrapolation often meets the "
+        "stopping test without a Newton iteration.");
       prm.add_parameter("Verbose",
                         verbose,
                         "Print one line per Newton iteration: ||R||, GMRES "

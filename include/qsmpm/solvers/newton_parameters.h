@@ -35,13 +35,13 @@ namespace qsmpm
     /// With preconditioner = auto: the largest number of dofs for direct.
     unsigned int direct_threshold = 20000;
     /// Load steps a preconditioner may serve before it is rebuilt (1 = a
-    /// new one every step, the default).
-    unsigned int preconditioner_reuse_steps = 1;
+    /// new one every step, as in the paper's runs).
+    unsigned int preconditioner_reuse_steps = 10;
     /// Rebuild early once GMRES needs this many times more iterations per
     /// Newton iteration than in the first step after the last rebuild.
     double preconditioner_reuse_growth = 2.;
     /// Eisenstat-Walker forcing terms instead of the fixed linear tolerance.
-    bool eisenstat_walker = false;
+    bool eisenstat_walker = true;
     /// Backtracking line search on ||R|| (halving, at most this many times).
     unsigned int max_line_search_steps = 0;
     /// Where Newton's first iterate of a load step comes from.
@@ -59,7 +59,7 @@ namespace qsmpm
       /// no such step (see QuasiStaticProblem).
       extrapolation
     };
-    InitialGuess initial_guess = InitialGuess::linear_predictor;
+    InitialGuess initial_guess = InitialGuess::extrapolation;
     /// Print one line per Newton iteration (on the stream given to the
     /// solver).
     bool verbose = false;
