@@ -248,8 +248,12 @@ namespace qsmpm
     // step may serve again (PreconditionerReuse). K is not reassembled
     // either (with GIMP its pattern may change, and AMG and KLU refer to
     // it).
-    if (preconditioner_reuse.build_for_step(preconditioner.needs_matrix(),
-                                            prm_values.nonlinear_solver))
+    if (preconditioner_reuse.build_for_step(
+          preconditioner.needs_matrix(),
+          prm_values.nonlinear_solver,
+          step_constraints.get(),
+          background_grid.locally_owned_dofs(),
+          communicator))
       {
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");

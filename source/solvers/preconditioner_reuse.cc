@@ -6,7 +6,8 @@ namespace qsmpm
   void
   PreconditionerReuse::reset()
   {
-    age = 0;
+    age         = 0;
+    constrained = {{-1., -1.}};
   }
 
 
@@ -24,6 +25,38 @@ namespace qsmpm
         age = 0;
         ++builds;
       }
+    return build;
+  }
+
+
+
+  bool
+  PreconditionerReuse::build_for_step(
+    const bool                       needs_matrix,
+    const NewtonParameters          &parameters,
+    const AffineConstraints<double> &constraints,
+    const IndexSet                  &owned,
+    const MPI_Comm                   communicator)
+  {
+    if (!needs_matrix)
+      return build_for_step(needs_matrix, parameters);
+    // The constrained dofs this rank owns: their number and the sum of
+    // their indices (a checksum that changes when a dof is freed or held).
+    std::array<double, 2> now{{0., 0.}};
+    for (const auto &line : constraints.get_lines())
+      if (owned.is_element(line.index))
+        {
+          now[0] += 1.;
+          now[1] += static_cast<double>(line.index);
+        }
+    Utilities::MPI::sum(ArrayView<const double>(now.data(), now.size()),
+                        communicator,
+                        ArrayView<double>(now.data(), now.size()));
+    if (now != constrained)
+      age = 0;
+    const bool build = build_for_step(needs_matrix, parameters);
+    if (build)
+      constrained = now;
     return build;
   }
 
