@@ -288,7 +288,12 @@ namespace qsmpm
     // step's solution, which saves the predictor's linear solve.
     using InitialGuess                 = NewtonParameters::InitialGuess;
     NewtonParameters newton_parameters = prm_values.nonlinear_solver;
-    const bool       extrapolate =
+    if (newton_parameters.initial_guess == InitialGuess::automatic)
+      newton_parameters.initial_guess =
+        points().get_formulation().finite_strain() ?
+          InitialGuess::linear_predictor :
+          InitialGuess::extrapolation;
+    const bool extrapolate =
       newton_parameters.initial_guess == InitialGuess::extrapolation;
     if (extrapolate && last_load_increment > 0.)
       {

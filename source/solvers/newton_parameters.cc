@@ -101,7 +101,8 @@ namespace qsmpm
         initial_guess,
         {{"boundary values", InitialGuess::boundary_values},
          {"linear predictor", InitialGuess::linear_predictor},
-         {"extrapolation", InitialGuess::extrapolation}},
+         {"extrapolation", InitialGuess::extrapolation},
+         {"auto", InitialGuess::automatic}},
         "boundary values: the paper's du_0, the prescribed "
         "increments on constrained degrees of freedom and "
         "zero elsewhere; linear predictor: the solution of "
@@ -119,7 +120,12 @@ namespace qsmpm
         "that failed and after a restart; path following "
         "(Load stepping/Control) does not use it). Under "
         "proportional loading extrapolation often meets the "
-        "stopping test without a Newton iteration.");
+        "stopping test without a Newton iteration. auto (the "
+        "default): extrapolation with small-strain kinematics, the linear "
+        "predictor with finite strain (where a body rotates the last "
+        "increment points the wrong way: the cantilever example needed up "
+        "to 20 Newton iterations and cut-backs with extrapolation, 3-8 "
+        "with the predictor).");
       prm.add_parameter("Verbose",
                         verbose,
                         "Print one line per Newton iteration: ||R||, GMRES "

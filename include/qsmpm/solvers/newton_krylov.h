@@ -282,7 +282,10 @@ namespace qsmpm
         internal::stopping_target(parameters, reference, force_level);
 
       double forcing = parameters.linear_tolerance, previous_norm = reference;
-      if (parameters.initial_guess == InitialGuess::linear_predictor &&
+      // auto that no caller resolved (QuasiStaticProblem does, by the
+      // kinematics): the linear predictor.
+      if ((parameters.initial_guess == InitialGuess::linear_predictor ||
+           parameters.initial_guess == InitialGuess::automatic) &&
           norm > target && std::isfinite(norm))
         norm = predict(op, du, R, evaluation, report);
 

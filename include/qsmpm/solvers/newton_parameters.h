@@ -57,9 +57,13 @@ namespace qsmpm
       /// step's load increment, with the prescribed increments on the
       /// constrained degrees of freedom; the linear predictor where there is
       /// no such step (see QuasiStaticProblem).
-      extrapolation
+      extrapolation,
+      /// extrapolation at small strain, linear_predictor at finite strain
+      /// (resolved by QuasiStaticProblem): where a body rotates, the last
+      /// step's increment points the wrong way.
+      automatic
     };
-    InitialGuess initial_guess = InitialGuess::extrapolation;
+    InitialGuess initial_guess = InitialGuess::automatic;
     /// Print one line per Newton iteration (on the stream given to the
     /// solver).
     bool verbose = false;
