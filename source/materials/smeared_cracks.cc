@@ -237,10 +237,12 @@ namespace qsmpm
       "(a fully open crack carries no traction on its own plane, but the "
       "point carries stress along the crack, which locks a band of cells "
       "that crosses the grid at an angle). no tension: the point has "
-      "broken apart and carries compression only (Miehe's spectral split "
-      "of the elastic response to its total strain, so that a closed "
-      "crack carries contact in any direction); the elastic energy it "
-      "held is dissipated.");
+      "broken apart and carries only a pressure K <tr eps>_- I (K the bulk "
+      "modulus), so that a closed crack carries contact but no tension "
+      "and no shear crosses the band; the elastic energy it held is "
+      "dissipated in the step of the switch. (Keeping the compressive "
+      "part in every direction, Miehe's split, still passed shear across "
+      "a band at 15 degrees to the grid and locked it.)");
     Utils::add_selection<Initiation>(
       prm,
       "Crack initiation",

@@ -332,16 +332,15 @@ namespace qsmpm
     /// carries no tension from the next step on), 2 failed.
     static constexpr unsigned int failed_index = 2 + 2 * dim * dim + 2 * dim;
 
-    /// A failed point: the compressive part of the elastic response to the
-    /// total strain (Miehe's spectral split), sigma = lambda <tr eps>_-  I
-    /// + 2 mu eps_-, which never carries tension; with @p tangent, its
+    /// A failed point: only a pressure, sigma = K <tr eps>_- I with the bulk
+    /// modulus K = lambda + 2 mu / dim (plane stress: the reduced lambda),
+    /// from the total strain: no tension and no shear; with @p tangent, its
     /// derivative.
     SymmetricTensor<2, dim>
     no_tension_stress(const SymmetricTensor<2, dim> &eps,
                       SymmetricTensor<4, dim>       *tangent = nullptr) const;
 
-    /// The energy lambda/2 <tr eps>_-^2 + mu eps_- : eps_- of a failed
-    /// point.
+    /// The energy K/2 <tr eps>_-^2 of a failed point.
     double
     no_tension_energy(const SymmetricTensor<2, dim> &eps) const;
 

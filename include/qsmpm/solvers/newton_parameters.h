@@ -36,12 +36,12 @@ namespace qsmpm
     unsigned int direct_threshold = 20000;
     /// Load steps a preconditioner may serve before it is rebuilt (1 = a
     /// new one every step, as in the paper's runs).
-    unsigned int preconditioner_reuse_steps = 10;
+    unsigned int preconditioner_reuse_steps = 1;
     /// Rebuild early once GMRES needs this many times more iterations per
     /// Newton iteration than in the first step after the last rebuild.
     double preconditioner_reuse_growth = 2.;
     /// Eisenstat-Walker forcing terms instead of the fixed linear tolerance.
-    bool eisenstat_walker = true;
+    bool eisenstat_walker = false;
     /// Backtracking line search on ||R|| (halving, at most this many times).
     unsigned int max_line_search_steps = 0;
     /// Where Newton's first iterate of a load step comes from.
@@ -63,7 +63,7 @@ namespace qsmpm
       /// step's increment points the wrong way.
       automatic
     };
-    InitialGuess initial_guess = InitialGuess::automatic;
+    InitialGuess initial_guess = InitialGuess::linear_predictor;
     /// Print one line per Newton iteration (on the stream given to the
     /// solver).
     bool verbose = false;
