@@ -1,6 +1,6 @@
 // Grid-orientation objectivity of the multi-crack smeared model (issue 29),
-// the example examples/notched_plate with its shipped settings
-// (objectivity.prm: a plate 0.4 m x 0.2 m with a notch 0.06 m deep,
+// the example examples/notched_plate with its shipped objectivity.prm (read
+// from the source tree: a plate 0.4 m x 0.2 m with a notch 0.06 m deep,
 // E = 30 GPa, nu = 0.2, tau_nf = 3 MPa, G_f = 100 J/m^2, h = W/24, 2 x 2
 // points per cell, cracking anywhere, opening control) at two of its four
 // angles, the grid at 0 and at 15 degrees to the load axis, on all ranks of
@@ -34,54 +34,22 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
 
   ParameterHandler prm;
+  prm.declare_entry("Dimension", "2", Patterns::Integer(2, 2), "");
   QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
   Parameters plate;
   plate.add_parameters(prm);
-  prm.parse_input_from_string(R"(
-subsection Notched plate
-  set Length                      = 0.4
-  set Width                       = 0.2
-  set Notch depth                 = 0.06
-  set Cells across the width      = 24
-  set Grip length                 = 0.05
-  set Stop below fraction of peak = 0.02
-  set Output directory            = output-notched-plate
-end
-subsection Material points
-  set Points per cell per direction = 2
-  set Ghost penalty                 = 1e-4
-end
-subsection Material
-  set Model = smeared cracks
-  subsection smeared cracks
-    set Young's modulus          = 30e9
-    set Poisson's ratio          = 0.2
-    set Plane stress             = true
-    set Tensile strength         = 3e6
-    set Fracture energy          = 100
-    set Maximum cracks per point = 2
-    set Threshold angle          = 60
-    set Damage integration       = IMPL-EX
-    set Failed points            = no tension
-  end
-end
-subsection Load stepping
-  set Control             = opening
-  set Opening increment   = 2.5e-7
-  set Maximum increment   = 1e-6
-  set Number of steps     = 1000
-  set Final load factor   = 1e-3
-  set Maximum cut-backs   = 6
-end
-subsection Nonlinear solver
-  set Tolerance          = 1e-6
-  set Line search steps  = 4
-end
-subsection Output
-  set Interval = 0
-end
-)");
-  const double G_f_ligament = 100. * (plate.width - plate.notch_depth);
+  // The shipped parameter file, as a user runs it; only the output of
+  // fields is switched off.
+  prm.parse_input(QSMPM_EXAMPLES_DIR "/notched_plate/objectivity.prm");
+  prm.enter_subsection("Output");
+  prm.set("Interval", "0");
+  prm.leave_subsection();
+  prm.enter_subsection("Material");
+  prm.enter_subsection("smeared cracks");
+  const double G_f_ligament =
+    prm.get_double("Fracture energy") * (plate.width - plate.notch_depth);
+  prm.leave_subsection();
+  prm.leave_subsection();
 
   std::vector<double> peaks;
   for (const double angle : {0., 15.})

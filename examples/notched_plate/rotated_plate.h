@@ -367,22 +367,16 @@ namespace NotchedPlate
     const auto &model =
       dynamic_cast<const SmearedCracks<dim> &>(problem.points().get_model());
     const auto         &offsets = problem.points().get_offsets();
-    const unsigned int  s       = offsets.state;
     std::vector<double> local;
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     for (const auto &particle : problem.points().get_particle_handler())
       {
         const auto         data  = particle.get_properties();
-        const unsigned int count = static_cast<unsigned int>(data[s + 1]);
-        double             D     = 0.;
+        const unsigned int count = model.crack_summaries(
+          {data.data() + offsets.state, model.n_state_components()}, cracks);
+        double D = 0.;
         for (unsigned int k = 0; k < count; ++k)
-          {
-            Tensor<1, dim> n;
-            for (unsigned int d = 0; d < dim; ++d)
-              n[d] = data[s + 2 + k * dim + d];
-            D += model.dissipated_energy(data[s + 2 + 2 * dim * dim + k],
-                                         model.smearing_length(n)) /
-                 model.fracture_energy();
-          }
+          D += cracks[k].dissipated / model.fracture_energy();
         if (D > 0.)
           {
             Point<dim> x0 = particle.get_location();
@@ -417,25 +411,22 @@ namespace NotchedPlate
       dynamic_cast<const SmearedCracks<dim> *>(&problem.points().get_model());
     if (cracks_model == nullptr)
       return std::numeric_limits<double>::quiet_NaN();
-    const auto        &model   = *cracks_model;
-    const auto        &offsets = problem.points().get_offsets();
-    const unsigned int s       = offsets.state;
-    double             c = 0., sn = 0.;
+    const auto &model   = *cracks_model;
+    const auto &offsets = problem.points().get_offsets();
+    double      c = 0., sn = 0.;
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     for (const auto &particle : problem.points().get_particle_handler())
       {
         const auto         data  = particle.get_properties();
-        const unsigned int count = static_cast<unsigned int>(data[s + 1]);
+        const unsigned int count = model.crack_summaries(
+          {data.data() + offsets.state, model.n_state_components()}, cracks);
         for (unsigned int k = 0; k < count; ++k)
           {
-            Tensor<1, dim> n;
-            for (unsigned int d = 0; d < dim; ++d)
-              n[d] = data[s + 2 + k * dim + d];
-            const double L = model.smearing_length(n);
-            const double weight =
-              model.dissipated_energy(data[s + 2 + 2 * dim * dim + k], L) / L *
-              data[offsets.initial_volume];
-            const double phi = std::atan2(n[1], n[0]);
-
+            // The energy the crack dissipated in the point's volume.
+            const double weight = cracks[k].dissipated / cracks[k].length *
+                                  data[offsets.initial_volume];
+            const double phi =
+              std::atan2(cracks[k].normal[1], cracks[k].normal[0]);
             c += weight * std::cos(2. * phi);
             sn += weight * std::sin(2. * phi);
           }

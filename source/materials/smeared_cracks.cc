@@ -92,8 +92,7 @@ namespace qsmpm
     , smearing(parameters.smearing)
     , failed_points(parameters.failed)
     , M(C[0][0][0][0])
-    , lambda(C[0][0][1][1])
-    , mu(C[0][1][0][1])
+    , bulk(C[0][0][1][1] + 2. * C[0][1][0][1] / dim)
     , compliance(invert(C))
   {
     parameters.check();
@@ -768,7 +767,6 @@ namespace qsmpm
   SmearedCracks<dim>::no_tension_stress(const SymmetricTensor<2, dim> &eps,
                                         SymmetricTensor<4, dim> *tangent) const
   {
-    const double bulk  = lambda + 2. * mu / dim;
     const double trace = std::min(dealii::trace(eps), 0.);
     if (tangent != nullptr)
       *tangent =
@@ -784,8 +782,7 @@ namespace qsmpm
   SmearedCracks<dim>::no_tension_energy(
     const SymmetricTensor<2, dim> &eps) const
   {
-    return 0.5 * (lambda + 2. * mu / dim) *
-           std::pow(std::min(trace(eps), 0.), 2);
+    return 0.5 * bulk * std::pow(std::min(trace(eps), 0.), 2);
   }
 
 
@@ -911,6 +908,22 @@ namespace qsmpm
   SmearedCracks<dim>::critical_separation() const
   {
     return delta_0;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  SmearedCracks<dim>::crack_summaries(
+    ArrayView<const double>        state,
+    std::array<CrackSummary, dim> &summaries) const
+  {
+    const Cracks cracks = read(state);
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      summaries[k] = {cracks.normal[k],
+                      cracks.length[k],
+                      dissipated_energy(cracks.history[k], cracks.length[k])};
+    return cracks.count;
   }
 
 

@@ -268,6 +268,26 @@ namespace qsmpm
     double
     dissipated_energy(const double delta_star, const double L) const;
 
+    /// A crack of a point, for post-processing: its normal, its smearing
+    /// length and the energy it has dissipated per unit crack area (0 to
+    /// G_f).
+    struct CrackSummary
+    {
+      Tensor<1, dim> normal;
+      double         length     = 0.;
+      double         dissipated = 0.;
+    };
+
+    /**
+     * The cracks of a point whose model fields are @p state (the
+     * state_fields() in order): written to the first entries of @p cracks,
+     * their number returned. Programs read a point's cracks through this
+     * rather than through the layout of the fields.
+     */
+    unsigned int
+    crack_summaries(ArrayView<const double>        state,
+                    std::array<CrackSummary, dim> &cracks) const;
+
     /// Names of the state fields.
     static constexpr const char *allowed_name    = "crack_allowed";
     static constexpr const char *count_name      = "crack_count";
@@ -359,8 +379,9 @@ namespace qsmpm
     const FailedPoints            failed_points;
     /// M = lambda + 2 mu.
     const double M;
-    /// The Lame constants of C (plane stress: the reduced lambda).
-    const double lambda, mu;
+    /// K = lambda + 2 mu / dim, the bulk modulus of C (plane stress: with
+    /// the reduced lambda), which a failed point keeps in compression.
+    const double bulk;
     /// The compliance C^-1.
     const SymmetricTensor<4, dim>           compliance;
     std::function<bool(const Point<dim> &)> crack_region;
