@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -152,6 +153,57 @@ namespace CompactTension
 
 
 
+  // @sect3{The size effect}
+  //
+  // The paper's question of Section 3.3: Wittmann et al. measured a
+  // fracture energy that grows with the size of the specimen (122.7,
+  // 160.6 and 163.6 J/m^2 for b = 15, 30 and 60 cm), and the paper fits one
+  // to each size. With `Size effect/Ligament lengths` set, the program runs
+  // the specimen of the file once per ligament b, with the same material
+  // (one $G_f$) and everything else scaled with b as in the paper's three
+  // files: the cell size h (15 cells along the ligament for the paper's
+  // h/b; or not, `Scale cell size = false`), the final load factor and the
+  // number of load steps (the displacement increment per step stays the
+  // same). Each run writes its
+  // own output directory, `<Output/Directory>-b<b in cm>`, and the table
+  // of all sizes goes to `Output file`: the peak load and the apparent
+  // fracture energy an experimentalist would measure, the work of the load
+  // over the ligament area $W/(b\,d)$, beside the $G_f$ of the model.
+  struct SizeEffectParameters : ParameterStruct<SizeEffectParameters>
+  {
+    std::vector<double> ligaments;
+    bool                scale_cell_size = true;
+    std::string         output_file     = "size_effect.csv";
+
+    void
+    add_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Size effect");
+      prm.add_parameter("Ligament lengths",
+                        ligaments,
+                        "Ligament lengths b (m), one run each, with h, the "
+                        "final load factor and the number of steps scaled "
+                        "by b over <Compact tension/Ligament length>. Empty: "
+                        "one run of the specimen as given.",
+                        Patterns::List(Patterns::Double(0.)));
+      prm.add_parameter("Scale cell size",
+                        scale_cell_size,
+                        "true: h scales with b (the paper's three files, the "
+                        "same grid in units of b); false: every size keeps "
+                        "the cell size of the file (the crack band width a "
+                        "property of the material, as in Bazant's crack "
+                        "band model), and larger specimens have more cells.");
+      prm.add_parameter("Output file",
+                        output_file,
+                        "The table of the sizes (b_cm, peak_N, "
+                        "apparent_Gf_J_per_m2, Gf_J_per_m2), relative to the "
+                        "working directory.");
+      prm.leave_subsection();
+    }
+  };
+
+
+
   // @sect3{The CompactTensionTest class}
   //
   // One object per run: it reads the parameters, builds the specimen, follows
@@ -171,15 +223,37 @@ namespace CompactTension
   class CompactTensionTest
   {
   public:
-    CompactTensionTest(const std::string &parameter_file, const bool resume);
+    /// Reads @p parameter_file; with @p ligament > 0 the specimen is scaled
+    /// to that ligament (see SizeEffectParameters).
+    CompactTensionTest(const std::string &parameter_file,
+                       const bool         resume,
+                       const double       ligament = 0.);
+
+    /// All entries of the program's parameter files.
+    static void
+    declare_parameters(ParameterHandler &prm);
 
     void
     run();
 
+    /// After run(): the peak load (N), the work of the load (J), G_f and
+    /// the ligament area b d.
+    double
+    peak_force() const;
+    double
+    work() const;
+    double
+    fracture_energy() const;
+    double
+    ligament_area() const;
+    /// The output directory of the run.
+    const std::string &
+    output_directory() const;
+
   private:
     typename CompactTensionGeometry<dim>::Parameters
-    parse_parameters(const std::string &parameter_file);
-    std::unique_ptr<Decohesion<dim>>
+    parse_parameters(const std::string &parameter_file, const double ligament);
+    std::unique_ptr<ConstitutiveModel<dim>>
     make_model();
     void
     setup_specimen();
@@ -191,6 +265,8 @@ namespace CompactTension
     restore_state(const std::string &text);
     bool
     observe_step(const typename QuasiStaticProblem<dim>::StepReport &report);
+    bool
+    cracks_started() const;
     void
     write_point_csv(const std::string &filename) const;
     void
@@ -230,10 +306,11 @@ namespace CompactTension
   // handed to the library here; QuasiStaticProblem::run() calls them.
   template <int dim>
   CompactTensionTest<dim>::CompactTensionTest(const std::string &parameter_file,
-                                              const bool         resume)
+                                              const bool         resume,
+                                              const double       ligament)
     : communicator(MPI_COMM_WORLD)
     , resume(resume)
-    , geometry(parse_parameters(parameter_file))
+    , geometry(parse_parameters(parameter_file, ligament))
     , problem(communicator)
   {
     problem.return_large_blocks_to_system();
@@ -253,17 +330,57 @@ namespace CompactTension
   // @sect4{CompactTensionTest::parse_parameters}
   //
   // The library's subsections, the specimen's "Compact tension" and our
-  // "Run" are declared in one ParameterHandler, so that a misspelt entry in
-  // any of them is reported with its name. Returns the specimen's
-  // parameters, from which the constructor makes the geometry.
+  // "Run" (and "Size effect", which main() reads) are declared in one
+  // ParameterHandler, so that a misspelt entry in any of them is reported
+  // with its name. A run of a size study scales the specimen here, before
+  // anything is read from the entries. Returns the specimen's parameters,
+  // from which the constructor makes the geometry.
   template <int dim>
-  typename CompactTensionGeometry<dim>::Parameters
-  CompactTensionTest<dim>::parse_parameters(const std::string &parameter_file)
+  void
+  CompactTensionTest<dim>::declare_parameters(ParameterHandler &prm)
   {
     QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
     CompactTensionGeometry<dim>::Parameters::declare_parameters(prm);
     RunParameters::declare_parameters(prm);
+    SizeEffectParameters::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  typename CompactTensionGeometry<dim>::Parameters
+  CompactTensionTest<dim>::parse_parameters(const std::string &parameter_file,
+                                            const double       ligament)
+  {
+    declare_parameters(prm);
     prm.parse_input(parameter_file);
+    if (ligament > 0.)
+      {
+        prm.enter_subsection("Size effect");
+        const bool scale_h = prm.get_bool("Scale cell size");
+        prm.leave_subsection();
+        prm.enter_subsection("Compact tension");
+        const double factor = ligament / prm.get_double("Ligament length");
+        prm.set("Ligament length", ligament);
+        if (scale_h)
+          prm.set("Cell size", prm.get_double("Cell size") * factor);
+        prm.leave_subsection();
+        prm.enter_subsection("Load stepping");
+        prm.set("Final load factor",
+                prm.get_double("Final load factor") * factor);
+        prm.set("Number of steps",
+                static_cast<long int>(
+                  std::ceil(prm.get_integer("Number of steps") * factor)));
+        prm.leave_subsection();
+        std::ostringstream name;
+        name << std::round(1e4 * ligament) / 100.;
+        prm.enter_subsection("Output");
+        prm.set("Directory", prm.get("Directory") + "-b" + name.str());
+        prm.leave_subsection();
+        prm.enter_subsection("Run");
+        prm.set("Label", "b = " + name.str() + " cm");
+        prm.leave_subsection();
+      }
 
     typename CompactTensionGeometry<dim>::Parameters specimen;
     specimen.parse_parameters(prm);
@@ -275,29 +392,31 @@ namespace CompactTension
 
   // @sect4{CompactTensionTest::make_model}
   //
-  // The material. The smearing length must follow the grid (see the
+  // The material: the paper's `decohesion` model, or `smeared cracks`
+  // (several cracks per point at any angle, SmearedCracks), made by the
+  // library's factory. The smearing length must follow the grid (see the
   // documentation of Decohesion: the crack band is one cell wide whatever
   // the number of points per cell), so we set "Crack band width" to h
   // here instead of asking for it twice in the parameter file. The
-  // constructor checks the local stability limit L_c < M u0 / tau_nf and
-  // stops with a message if h is too large.
+  // decohesion model checks the local stability limit L_c < M u0 / tau_nf
+  // and stops with a message if h is too large.
   template <int dim>
-  std::unique_ptr<Decohesion<dim>>
+  std::unique_ptr<ConstitutiveModel<dim>>
   CompactTensionTest<dim>::make_model()
   {
     prm.enter_subsection("Material");
-    AssertThrow(prm.get("Model") == "decohesion",
+    const std::string name = prm.get("Model");
+    AssertThrow(name == "decohesion" || name == "smeared cracks",
                 ExcMessage("compact_tension: set Material/Model = "
-                           "decohesion."));
-    prm.enter_subsection("decohesion");
+                           "decohesion or smeared cracks."));
+    prm.enter_subsection(name);
     prm.set("Crack band width", geometry.cell_size());
-    auto model = std::make_unique<Decohesion<dim>>(prm);
-    G_f        = prm.get_double("Fracture energy");
-    tau_nf     = model->tensile_strength();
-    u0         = model->critical_opening();
+    G_f    = prm.get_double("Fracture energy");
+    tau_nf = prm.get_double("Tensile strength");
+    u0     = 2. * G_f / tau_nf;
     prm.leave_subsection();
     prm.leave_subsection();
-    return model;
+    return ConstitutiveModelFactory<dim>::create(prm);
   }
 
 
@@ -461,14 +580,7 @@ namespace CompactTension
 
     if (!initiated)
       {
-        const unsigned int opening_offset =
-          problem.points().get_layout().offset(
-            Decohesion<dim>::crack_opening_name);
-        double largest_opening = 0.;
-        for (const auto &particle : problem.points().get_particle_handler())
-          largest_opening = std::max(largest_opening,
-                                     particle.get_properties()[opening_offset]);
-        if (Utilities::MPI::max(largest_opening, communicator) > 0.)
+        if (cracks_started())
           {
             initiated = true;
             problem.pcout()
@@ -514,46 +626,91 @@ namespace CompactTension
 
 
 
+  // @sect4{CompactTensionTest::cracks_started}
+  //
+  // Whether any point has a crack: an opening with `decohesion`, a crack
+  // with `smeared cracks`.
+  template <int dim>
+  bool
+  CompactTensionTest<dim>::cracks_started() const
+  {
+    const auto &layout     = problem.points().get_layout();
+    const bool  decohesion = layout.has(Decohesion<dim>::crack_opening_name);
+    const unsigned int offset =
+      decohesion ? layout.offset(Decohesion<dim>::crack_opening_name) :
+                   layout.offset(SmearedCracks<dim>::count_name);
+    double largest = 0.;
+    for (const auto &particle : problem.points().get_particle_handler())
+      largest = std::max(largest, particle.get_properties()[offset]);
+    return Utilities::MPI::max(largest, communicator) > 0.;
+  }
+
+
+
   // @sect4{CompactTensionTest::write_point_csv}
   //
-  // The PVTU output holds every point field, including the normalized crack
-  // opening $[[u_n]]/u_0$ and stresses $\sigma_{xx}/\tau_{nf}$,
-  // $\sigma_{yy}/\tau_{nf}$ that the decohesion model computes as output
-  // fields (from the committed opening and stress; they are not stored on
-  // the points). For pictures without ParaView we also write these three
-  // fields of all points into a small CSV file at the three moments of the
-  // paper's Fig. 4. Each rank sends its points to rank 0, which writes the
-  // file.
+  // The PVTU output holds every point field, including those the model
+  // computes as output fields from the committed state (not stored on the
+  // points): with `decohesion` the normalized crack opening $[[u_n]]/u_0$
+  // and stresses $\sigma_{xx}/\tau_{nf}$, $\sigma_{yy}/\tau_{nf}$; with
+  // `smeared cracks` the number of cracks, the largest separation over
+  // $\delta_0$ and the first crack's angle. For pictures without ParaView
+  // we also write these fields of all points, after their position, into a
+  // small CSV file at the three moments of the paper's Fig. 4. Each rank
+  // sends its points to rank 0, which writes the file.
   template <int dim>
   void
   CompactTensionTest<dim>::write_point_csv(const std::string &filename) const
   {
-    const auto          &points        = problem.points();
-    const PropertyLayout output_layout = points.output_layout();
-    const unsigned int   w             = output_layout.offset(
-                         Decohesion<dim>::opening_ratio_name),
-                       sxx = output_layout.offset(
-                         Decohesion<dim>::sigma_xx_ratio_name),
-                       syy = output_layout.offset(
-                         Decohesion<dim>::sigma_yy_ratio_name);
+    const auto               &points        = problem.points();
+    const PropertyLayout      output_layout = points.output_layout();
+    std::vector<unsigned int> columns;
+    std::string               header = "x,y";
+    for (const auto &field : points.get_model().output_fields())
+      for (unsigned int c = 0; c < field.n_components; ++c)
+        {
+          columns.push_back(output_layout.offset(field.name) + c);
+          header += ',' + field.name;
+        }
+    // With smeared cracks also the energy the point's cracks dissipated
+    // per unit crack area, over G_f: the dissipation map.
+    const auto *cracks_model =
+      dynamic_cast<const SmearedCracks<dim> *>(&points.get_model());
+    if (cracks_model != nullptr)
+      header += ",dissipated_over_Gf";
+    const unsigned int n_columns =
+      2 + columns.size() + (cracks_model != nullptr ? 1 : 0);
+    const auto &offsets = points.get_offsets();
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     std::vector<double> local, values(output_layout.size());
     for (const auto &particle : points.get_particle_handler())
       {
         points.compute_output_fields(particle, ArrayView<double>(values));
         const auto x = particle.get_location();
-        local.insert(local.end(),
-                     {x[0], x[1], values[w], values[sxx], values[syy]});
+        local.insert(local.end(), {x[0], x[1]});
+        for (const unsigned int c : columns)
+          local.push_back(values[c]);
+        if (cracks_model != nullptr)
+          {
+            const auto         data  = particle.get_properties();
+            const unsigned int count = cracks_model->crack_summaries(
+              {data.data() + offsets.state, cracks_model->n_state_components()},
+              cracks);
+            double D = 0.;
+            for (unsigned int k = 0; k < count; ++k)
+              D += cracks[k].dissipated / G_f;
+            local.push_back(D);
+          }
       }
     const auto all = Utilities::MPI::gather(communicator, local, 0);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::ofstream file(filename);
-    file << "x,y,opening_over_u0,sigma_xx_over_tau_nf,sigma_yy_over_tau_nf\n"
-         << std::setprecision(6);
+    file << header << '\n' << std::setprecision(6);
     for (const auto &rank : all)
-      for (unsigned int i = 0; i < rank.size(); i += 5)
-        file << rank[i] << ',' << rank[i + 1] << ',' << rank[i + 2] << ','
-             << rank[i + 3] << ',' << rank[i + 4] << '\n';
+      for (unsigned int i = 0; i < rank.size(); i += n_columns)
+        for (unsigned int c = 0; c < n_columns; ++c)
+          file << rank[i + c] << (c + 1 < n_columns ? ',' : '\n');
   }
 
 
@@ -614,6 +771,21 @@ namespace CompactTension
     const unsigned int n_steps = problem.step_reports().size();
     const double       energy  = G_f * geometry.ligament() * geometry.depth();
     const auto band = geometry.count_failed_band_points(problem, communicator);
+    // With smeared cracks, where the energy went: the main crack, the
+    // cracks beside it, and the rest of the work of the load (the elastic
+    // energy still stored at the end and that released by failed points).
+    const auto [main, beside] =
+      geometry.crack_dissipation(problem, communicator);
+    const auto dissipation_lines = [&, main = main, beside = beside]() {
+      std::ostringstream lines;
+      lines << std::setprecision(5);
+      if (main + beside > 0.)
+        lines << "  dissipated by cracks: main crack (centre line) = " << main
+              << " J, beside it = " << beside
+              << " J, rest of the work = " << curve.work() - main - beside
+              << " J\n";
+      return lines.str();
+    };
     problem.pcout()
       << std::setprecision(5) << '\n'
       << "Compact tension " << run_parameters.plot_label << " finished\n"
@@ -627,6 +799,7 @@ namespace CompactTension
       << "  energy ratio                   = " << curve.work() / energy << '\n'
       << "  band points failed completely  = " << band.second << " of "
       << band.first << " (the hinge not counted)\n"
+      << dissipation_lines()
       << "  Newton iterations per step     = " << newton_min << " to "
       << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
       << '\n'
@@ -638,6 +811,162 @@ namespace CompactTension
       << "  wall time                      = " << wall_time << " s on "
       << Utilities::MPI::n_mpi_processes(communicator) << " rank(s)"
       << std::endl;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionTest<dim>::peak_force() const
+  {
+    return curve.peak_force();
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionTest<dim>::work() const
+  {
+    return curve.work();
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionTest<dim>::fracture_energy() const
+  {
+    return G_f;
+  }
+
+
+
+  template <int dim>
+  double
+  CompactTensionTest<dim>::ligament_area() const
+  {
+    return geometry.ligament() * geometry.depth();
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  CompactTensionTest<dim>::output_directory() const
+  {
+    return directory;
+  }
+
+
+
+  // @sect3{Pictures of a size study}
+  //
+  // A gnuplot script next to the table, and the pictures if gnuplot is
+  // installed: the load-deflection curves of all sizes (size_effect.png)
+  // and the map of the energy the points' cracks dissipated at the end of
+  // each run, over G_f (size_effect_cracks.png; with the decohesion model
+  // the crack opening over u0).
+  void
+  write_size_plots(const std::string              &table_file,
+                   const std::vector<std::string> &directories,
+                   const std::vector<std::string> &labels,
+                   const bool                      smeared)
+  {
+    const std::string stem = table_file.substr(0, table_file.find_last_of('.'));
+    std::ofstream     gp(stem + ".gp");
+    gp << "set terminal pngcairo size 800,560 noenhanced\n"
+       << "set datafile separator ','\n"
+       << "set output '" << stem << ".png'\n"
+       << "set xlabel 'load-point displacement (mm)'\n"
+       << "set ylabel 'load P (kN)'\nset grid\nplot ";
+    for (unsigned int i = 0; i < directories.size(); ++i)
+      gp << (i > 0 ? ", \\\n     " : "") << "'" << directories[i]
+         << "/load_displacement.csv' skip 1 using ($2*1e3):($3*1e-3) w l lw "
+            "2 t '"
+         << labels[i] << "'";
+    const std::string field =
+      smeared ? "dissipated_over_Gf" : "opening_over_u0";
+    gp << "\nset output '" << stem << "_cracks.png'\n"
+       << "set terminal pngcairo size " << 420 * directories.size()
+       << ",520 noenhanced\n"
+       << "set multiplot layout 1," << directories.size() << "\n"
+       << "set size ratio -1\nunset key\nunset grid\nset cbrange [0:1]\n"
+       << "set xlabel 'x (m)'\nset ylabel 'y (m)'\n"
+       << "set palette rgbformulae 33,13,10\n";
+    // Only the points with at least 2 % of the full value: the rest
+    // started a crack that unloaded on its initial branch.
+    for (unsigned int i = 0; i < directories.size(); ++i)
+      gp << "set title '" << labels[i] << ": " << field << "'\n"
+         << "plot '" << directories[i] << "/points_complete.csv' using "
+         << "'x':'y':(column('" << field << "') >= 0.02 ? column('" << field
+         << "') : 1/0) with points pt 5 ps 0.4 lc palette\n";
+    gp << "unset multiplot\n";
+    gp.close();
+    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
+        std::system(("gnuplot " + stem + ".gp").c_str()) == 0)
+      std::cout << "wrote " << stem << ".png and " << stem << "_cracks.png"
+                << std::endl;
+    else
+      std::cout << "wrote " << stem << ".gp (gnuplot not found: no pictures)"
+                << std::endl;
+  }
+
+
+
+  // @sect3{One run, or a size study}
+  //
+  // With `Size effect/Ligament lengths` empty, one run of the specimen of
+  // the file; otherwise one run per ligament and the table of their peaks
+  // and apparent fracture energies, written by rank 0.
+  void
+  run_program(const std::string &parameter_file, const bool resume)
+  {
+    ParameterHandler prm;
+    CompactTensionTest<2>::declare_parameters(prm);
+    prm.parse_input(parameter_file);
+    SizeEffectParameters sizes;
+    sizes.parse_parameters(prm);
+    if (sizes.ligaments.empty())
+      {
+        CompactTensionTest<2> test(parameter_file, resume);
+        test.run();
+        return;
+      }
+    AssertThrow(!resume,
+                ExcMessage("compact_tension: --resume does not continue a "
+                           "size study (Size effect/Ligament lengths)."));
+
+    std::ostringstream table;
+    table << "b_cm,peak_N,apparent_Gf_J_per_m2,Gf_J_per_m2\n"
+          << std::setprecision(6);
+    std::vector<std::string> directories, labels;
+    for (const double b : sizes.ligaments)
+      {
+        CompactTensionTest<2> test(parameter_file, false, b);
+        test.run();
+        table << 100. * b << ',' << test.peak_force() << ','
+              << test.work() / test.ligament_area() << ','
+              << test.fracture_energy() << '\n';
+        directories.push_back(test.output_directory());
+        labels.push_back("b = " + std::to_string(std::lround(100. * b)) +
+                         " cm");
+      }
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ofstream file(sizes.output_file);
+        AssertThrow(file,
+                    ExcMessage("Cannot write <" + sizes.output_file + ">."));
+        file << table.str();
+        std::cout << "\nwrote " << sizes.output_file << ":\n"
+                  << table.str() << std::flush;
+        prm.enter_subsection("Material");
+        write_size_plots(sizes.output_file,
+                         directories,
+                         labels,
+                         prm.get("Model") == "smeared cracks");
+        prm.leave_subsection();
+      }
   }
 } // namespace CompactTension
 
@@ -668,8 +997,7 @@ main(int argc, char *argv[])
       // A missing file, a directory or an unreadable file: one line that
       // names it.
       qsmpm::Utils::check_parameter_file(parameter_file);
-      CompactTension::CompactTensionTest<2> test(parameter_file, resume);
-      test.run();
+      CompactTension::run_program(parameter_file, resume);
     }
   catch (std::exception &exc)
     {

@@ -30,6 +30,7 @@
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/materials/decohesion.h>
+#include <qsmpm/materials/smeared_cracks.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,6 +102,12 @@ namespace CompactTension
        * 0: the grid is the specimen.
        */
       unsigned int grid_margin = 0;
+      /**
+       * Where cracks may start: "centre line", the cells that contain the
+       * centre line below the notch (the paper), or "everywhere", the whole
+       * specimen but the cells at the pins (see in_cracking_region()).
+       */
+      std::string cracking_region = "centre line";
 
       /// Declare the entries of the subsection, bound to the members
       /// (ParameterHandler::add_parameter(); the initializers above are
@@ -113,9 +120,11 @@ namespace CompactTension
     explicit CompactTensionGeometry(const Parameters &parameters);
 
     /**
-     * Set up @p problem for this specimen: the grid, the model (cracks only
-     * in the cells on the centre line, smearing length from h; the model's
-     * "Crack band width" must equal h), material points in the body with
+     * Set up @p problem for this specimen: the grid, the model (Decohesion
+     * or SmearedCracks, cracks only in the cracking region, see
+     * in_cracking_region(); the model's "Crack band width" must equal h,
+     * the smearing length of a crack along a cell edge), material points
+     * in the body with
      * @p points_per_direction^dim per cell, and the pins. Returns the index
      * of the pulled pin among the displacement conditions (see load()).
      *
@@ -144,7 +153,7 @@ namespace CompactTension
      */
     unsigned int
     setup(QuasiStaticProblem<dim>                        &problem,
-          std::unique_ptr<Decohesion<dim>>                model,
+          std::unique_ptr<ConstitutiveModel<dim>>         model,
           const unsigned int                              points_per_direction,
           const typename MaterialPointSet<dim>::Placement placement) const;
 
@@ -162,6 +171,17 @@ namespace CompactTension
     /// cracks are allowed.
     bool
     in_crack_band(const Point<dim> &x) const;
+
+    /**
+     * Whether a crack may start at @p x: with `Cracking region = centre
+     * line` in the crack band (in_crack_band()); with `everywhere` in the
+     * whole specimen but within two cells of a pin's nodes. The pins hold
+     * single grid nodes, whose corners concentrate stress as no real
+     * loading pin (a bolt through a hole) does; a crack that started there
+     * would not be part of the test.
+     */
+    bool
+    in_cracking_region(const Point<dim> &x) const;
 
     /// Whether @p x lies in the crack-band cell(s) at the back face (the
     /// bottom row of the band, 0 < y < h), see setup().
@@ -196,18 +216,32 @@ namespace CompactTension
 
     /**
      * The number of crack-band points of @p problem and of those that have
-     * failed completely, [[u_n]] >= u0, summed over @p communicator; the
+     * failed completely (Decohesion: [[u_n]] >= u0; SmearedCracks: a crack
+     * that has dissipated G_f), summed over @p communicator; the
      * lowest band point, the hinge (see setup()), is counted in neither.
      * The band is broken once both numbers are equal (and not zero).
      *
      * By then the points have moved by millimetres (the centre line by
-     * half the load-point displacement), so the band points are those the
-     * model allows to crack, and the hinge is the one that was lowest at
-     * the start, y - u_y.
+     * half the load-point displacement), so the band points are those that
+     * started in the band, x - u, and the hinge is the one that was lowest
+     * at the start.
      */
     std::pair<unsigned int, unsigned int>
     count_failed_band_points(const QuasiStaticProblem<dim> &problem,
                              const MPI_Comm                 communicator) const;
+
+    /**
+     * With the SmearedCracks model: the energy (J, for the depth d) the
+     * points' cracks have dissipated, on the centre line (the points that
+     * started in the crack band: the main crack) and elsewhere, summed
+     * over @p communicator. A crack dissipates D per unit crack area (see
+     * SmearedCracks::crack_summaries()) over the crack area V / L of its
+     * point (V its volume, L the smearing length); in 2D the volumes are
+     * areas and the depth d makes the energy. {0, 0} with Decohesion.
+     */
+    std::pair<double, double>
+    crack_dissipation(const QuasiStaticProblem<dim> &problem,
+                      const MPI_Comm                 communicator) const;
 
     /// Cell size h.
     double
@@ -310,6 +344,14 @@ namespace CompactTension
         "when the broken halves rotate apart by degrees (Run to complete "
         "failure). 0: the grid is the specimen.",
         Patterns::Integer(0, 100));
+      prm.add_parameter(
+        "Cracking region",
+        cracking_region,
+        "Where cracks may start. centre line: the cells that contain the "
+        "centre line below the notch (the paper, Section 3.3). everywhere: "
+        "the whole specimen but two cells around each pin's nodes (the "
+        "smeared cracks model, which finds the cracks' normals itself).",
+        Patterns::Selection("centre line|everywhere"));
       prm.add_parameter("Notch depth over ligament",
                         notch_ratio,
                         "a / b: depth of the notch from the top edge over the "
@@ -413,19 +455,35 @@ namespace CompactTension
   unsigned int
   CompactTensionGeometry<dim>::setup(
     QuasiStaticProblem<dim>                        &problem,
-    std::unique_ptr<Decohesion<dim>>                model,
+    std::unique_ptr<ConstitutiveModel<dim>>         model,
     const unsigned int                              points_per_direction,
     const typename MaterialPointSet<dim>::Placement placement) const
   {
     Tensor<1, dim> x_normal;
-    x_normal[0] = 1.;
-    AssertThrow(std::abs(model->smearing_length(x_normal) - cell_size()) <=
-                  1e-12 * cell_size(),
-                ExcMessage("Compact tension: the decohesion model's 'Crack "
-                           "band width' must equal the cell size h."));
+    x_normal[0]       = 1.;
+    const auto region = [this](const Point<dim> &x) {
+      return in_cracking_region(x);
+    };
+    double smearing = 0.;
+    if (auto *decohesion = dynamic_cast<Decohesion<dim> *>(model.get()))
+      {
+        smearing = decohesion->smearing_length(x_normal);
+        decohesion->set_crack_region(region);
+      }
+    else if (auto *cracks = dynamic_cast<SmearedCracks<dim> *>(model.get()))
+      {
+        smearing = cracks->smearing_length(x_normal);
+        cracks->set_crack_region(region);
+      }
+    else
+      AssertThrow(false,
+                  ExcMessage("Compact tension: the material model must be "
+                             "<decohesion> or <smeared cracks>, not <" +
+                             model->name() + ">."));
+    AssertThrow(std::abs(smearing - cell_size()) <= 1e-12 * cell_size(),
+                ExcMessage("Compact tension: the model's 'Crack band width' "
+                           "must equal the cell size h."));
     make_grid(problem.grid());
-    model->set_crack_region(
-      [this](const Point<dim> &x) { return in_crack_band(x); });
     problem.set_model(std::move(model));
     // The body, and the back-face band cell with k times as many points
     // along y (see the class documentation on the hinge); with k = 1 the
@@ -463,6 +521,20 @@ namespace CompactTension
   CompactTensionGeometry<dim>::in_crack_band(const Point<dim> &x) const
   {
     return std::abs(x[0]) < 0.5 * parameters.cell_size;
+  }
+
+
+
+  template <int dim>
+  bool
+  CompactTensionGeometry<dim>::in_cracking_region(const Point<dim> &x) const
+  {
+    if (parameters.cracking_region == "centre line")
+      return in_crack_band(x);
+    const double h       = parameters.cell_size;
+    const double reach_x = (0.5 * parameters.plate_cells + 2.) * h;
+    return !(std::abs(std::abs(x[0]) - load_point_x()) < reach_x &&
+             x[1] > height() - 2. * h);
   }
 
 
@@ -549,36 +621,92 @@ namespace CompactTension
     const QuasiStaticProblem<dim> &problem,
     const MPI_Comm                 communicator) const
   {
-    const auto        &layout = problem.points().get_layout();
-    const unsigned int w = layout.offset(Decohesion<dim>::crack_opening_name),
-                       allowed =
-                         layout.offset(Decohesion<dim>::crack_allowed_name),
-                       u_y = problem.points().get_offsets().displacement + 1;
+    const auto       &points  = problem.points();
+    const auto       &offsets = points.get_offsets();
     const auto *const decohesion =
-      dynamic_cast<const Decohesion<dim> *>(&problem.points().get_model());
-    AssertThrow(decohesion != nullptr,
+      dynamic_cast<const Decohesion<dim> *>(&points.get_model());
+    const auto *const cracks_model =
+      dynamic_cast<const SmearedCracks<dim> *>(&points.get_model());
+    AssertThrow(decohesion != nullptr || cracks_model != nullptr,
                 ExcMessage("Compact tension: the material model must be "
-                           "<decohesion>."));
-    const double u0             = decohesion->critical_opening();
-    const auto   initial_height = [&](const auto &particle) {
-      return particle.get_location()[1] - particle.get_properties()[u_y];
+                           "<decohesion> or <smeared cracks>."));
+    const unsigned int opening =
+      decohesion != nullptr ?
+        points.get_layout().offset(Decohesion<dim>::crack_opening_name) :
+        0;
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
+    const auto failed = [&](const auto &particle) {
+      const auto data = particle.get_properties();
+      if (decohesion != nullptr)
+        return data[opening] / decohesion->critical_opening() >= 1.;
+      const unsigned int n =
+        cracks_model->crack_summaries({data.data() + offsets.state,
+                                       cracks_model->n_state_components()},
+                                      cracks);
+      for (unsigned int k = 0; k < n; ++k)
+        if (cracks[k].dissipated >=
+            (1. - 1e-9) * cracks_model->fracture_energy())
+          return true;
+      return false;
+    };
+    // Where a point started: its position less its displacement.
+    const auto initial = [&](const auto &particle) {
+      Point<dim> x0 = particle.get_location();
+      for (unsigned int d = 0; d < dim; ++d)
+        x0[d] -= particle.get_properties()[offsets.displacement + d];
+      return x0;
     };
     double lowest = std::numeric_limits<double>::max();
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5)
-        lowest = std::min(lowest, initial_height(particle));
+    for (const auto &particle : points.get_particle_handler())
+      if (in_crack_band(initial(particle)))
+        lowest = std::min(lowest, initial(particle)[1]);
     lowest              = Utilities::MPI::min(lowest, communicator);
     unsigned int n_band = 0, n_failed = 0;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_properties()[allowed] > 0.5 &&
-          initial_height(particle) > lowest + 1e-6 * cell_size())
-        {
-          ++n_band;
-          if (particle.get_properties()[w] / u0 >= 1.)
-            ++n_failed;
-        }
+    for (const auto &particle : points.get_particle_handler())
+      {
+        const Point<dim> x0 = initial(particle);
+        if (in_crack_band(x0) && x0[1] > lowest + 1e-6 * cell_size())
+          {
+            ++n_band;
+            if (failed(particle))
+              ++n_failed;
+          }
+      }
     return {Utilities::MPI::sum(n_band, communicator),
             Utilities::MPI::sum(n_failed, communicator)};
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  CompactTensionGeometry<dim>::crack_dissipation(
+    const QuasiStaticProblem<dim> &problem,
+    const MPI_Comm                 communicator) const
+  {
+    const auto *model =
+      dynamic_cast<const SmearedCracks<dim> *>(&problem.points().get_model());
+    if (model == nullptr)
+      return {0., 0.};
+    const auto &offsets = problem.points().get_offsets();
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
+    double main = 0., beside = 0.;
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const auto         data  = particle.get_properties();
+        const unsigned int count = model->crack_summaries(
+          {data.data() + offsets.state, model->n_state_components()}, cracks);
+        Point<dim> x0 = particle.get_location();
+        for (unsigned int d = 0; d < dim; ++d)
+          x0[d] -= data[offsets.displacement + d];
+        for (unsigned int k = 0; k < count; ++k)
+          (in_crack_band(x0) ? main : beside) += cracks[k].dissipated /
+                                                 cracks[k].length *
+                                                 data[offsets.initial_volume];
+      }
+    const double depth = dim == 2 ? parameters.depth : 1.;
+    return {Utilities::MPI::sum(main, communicator) * depth,
+            Utilities::MPI::sum(beside, communicator) * depth};
   }
 
 
