@@ -73,12 +73,10 @@ namespace
     double                                        c = 0., s = 0.;
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const auto data = particle.get_properties();
-        Point<2>   x0   = particle.get_location();
-        for (unsigned int d = 0; d < 2; ++d)
-          x0[d] -= data[offsets.displacement + d];
-        if (!geometry.in_crack_band(x0))
+        if (!geometry.in_crack_band(
+              problem.points().initial_location(particle)))
           continue;
+        const auto         data  = particle.get_properties();
         const unsigned int count = model.crack_summaries(
           {data.data() + offsets.state, model.n_state_components()}, cracks);
         for (unsigned int k = 0; k < count; ++k)

@@ -871,6 +871,7 @@ namespace CompactTension
   write_size_plots(const std::string              &table_file,
                    const std::vector<std::string> &directories,
                    const std::vector<std::string> &labels,
+                   const std::vector<double>      &ligaments,
                    const bool                      smeared)
   {
     const std::string stem = table_file.substr(0, table_file.find_last_of('.'));
@@ -892,15 +893,23 @@ namespace CompactTension
        << ",520 noenhanced\n"
        << "set multiplot layout 1," << directories.size() << "\n"
        << "set size ratio -1\nunset key\nunset grid\nset cbrange [0:1]\n"
+
        << "set xlabel 'x (m)'\nset ylabel 'y (m)'\n"
        << "set palette rgbformulae 33,13,10\n";
     // Only the points with at least 2 % of the full value: the rest
-    // started a crack that unloaded on its initial branch.
+    // started a crack that unloaded on its initial branch. The other
+    // points in grey show the specimen around the ligament (x within b/2
+    // of the centre line, y from the back face to just above the notch
+    // tip).
     for (unsigned int i = 0; i < directories.size(); ++i)
       gp << "set title '" << labels[i] << ": " << field << "'\n"
-         << "plot '" << directories[i] << "/points_complete.csv' using "
-         << "'x':'y':(column('" << field << "') >= 0.02 ? column('" << field
-         << "') : 1/0) with points pt 5 ps 0.4 lc palette\n";
+         << "set xrange [" << -0.5 * ligaments[i] << ":" << 0.5 * ligaments[i]
+         << "]\nset yrange [0:" << 1.1 * ligaments[i] << "]\nset xtics "
+         << 0.5 * ligaments[i] << "\nset ytics " << 0.5 * ligaments[i]
+         << "\nf = '" << directories[i] << "/points_complete.csv'\n"
+         << "plot f using 'x':'y' with points pt 5 ps 0.8 lc rgb '#c0c0c0', "
+         << "f using 'x':'y':(column('" << field << "') >= 0.02 ? column('"
+         << field << "') : 1/0) with points pt 5 ps 0.9 lc palette\n";
     gp << "unset multiplot\n";
     gp.close();
     if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
@@ -964,6 +973,7 @@ namespace CompactTension
         write_size_plots(sizes.output_file,
                          directories,
                          labels,
+                         sizes.ligaments,
                          prm.get("Model") == "smeared cracks");
         prm.leave_subsection();
       }

@@ -649,22 +649,15 @@ namespace CompactTension
           return true;
       return false;
     };
-    // Where a point started: its position less its displacement.
-    const auto initial = [&](const auto &particle) {
-      Point<dim> x0 = particle.get_location();
-      for (unsigned int d = 0; d < dim; ++d)
-        x0[d] -= particle.get_properties()[offsets.displacement + d];
-      return x0;
-    };
     double lowest = std::numeric_limits<double>::max();
     for (const auto &particle : points.get_particle_handler())
-      if (in_crack_band(initial(particle)))
-        lowest = std::min(lowest, initial(particle)[1]);
+      if (in_crack_band(points.initial_location(particle)))
+        lowest = std::min(lowest, points.initial_location(particle)[1]);
     lowest              = Utilities::MPI::min(lowest, communicator);
     unsigned int n_band = 0, n_failed = 0;
     for (const auto &particle : points.get_particle_handler())
       {
-        const Point<dim> x0 = initial(particle);
+        const Point<dim> x0 = points.initial_location(particle);
         if (in_crack_band(x0) && x0[1] > lowest + 1e-6 * cell_size())
           {
             ++n_band;
@@ -696,13 +689,12 @@ namespace CompactTension
         const auto         data  = particle.get_properties();
         const unsigned int count = model->crack_summaries(
           {data.data() + offsets.state, model->n_state_components()}, cracks);
-        Point<dim> x0 = particle.get_location();
-        for (unsigned int d = 0; d < dim; ++d)
-          x0[d] -= data[offsets.displacement + d];
+        const bool main_crack =
+          in_crack_band(problem.points().initial_location(particle));
         for (unsigned int k = 0; k < count; ++k)
-          (in_crack_band(x0) ? main : beside) += cracks[k].dissipated /
-                                                 cracks[k].length *
-                                                 data[offsets.initial_volume];
+          (main_crack ? main : beside) += cracks[k].dissipated /
+                                          cracks[k].length *
+                                          data[offsets.initial_volume];
       }
     const double depth = dim == 2 ? parameters.depth : 1.;
     return {Utilities::MPI::sum(main, communicator) * depth,

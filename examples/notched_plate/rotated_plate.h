@@ -379,10 +379,8 @@ namespace NotchedPlate
           D += cracks[k].dissipated / model.fracture_energy();
         if (D > 0.)
           {
-            Point<dim> x0 = particle.get_location();
-            for (unsigned int d = 0; d < dim; ++d)
-              x0[d] -= data[offsets.displacement + d];
-            const auto [xi, eta] = plate_frame(x0);
+            const auto [xi, eta] =
+              plate_frame(problem.points().initial_location(particle));
             local.insert(local.end(), {xi, eta, D});
           }
       }

@@ -677,6 +677,19 @@ namespace qsmpm
 
 
   template <int dim>
+  Point<dim>
+  MaterialPointSet<dim>::initial_location(
+    const Particles::ParticleAccessor<dim> &particle) const
+  {
+    Point<dim> x = particle.get_location();
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] -= particle.get_properties()[offsets.displacement + d];
+    return x;
+  }
+
+
+
+  template <int dim>
   PropertyLayout
   MaterialPointSet<dim>::output_layout() const
   {

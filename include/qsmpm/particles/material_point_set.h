@@ -268,6 +268,15 @@ namespace qsmpm
     point_state(const Particles::ParticleAccessor<dim> &particle) const;
 
     /**
+     * Where @p particle was created: its location less its displacement
+     * (the total displacement since the start, which the points carry).
+     * Programs that classify points by where they started (a crack band,
+     * a layer) use it once the body has deformed.
+     */
+    Point<dim>
+    initial_location(const Particles::ParticleAccessor<dim> &particle) const;
+
+    /**
      * The layout of the model's output fields (ConstitutiveModel::
      * output_fields()), in the order compute_output_fields() writes them.
      */
