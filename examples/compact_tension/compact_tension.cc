@@ -11,6 +11,7 @@
  *   ./compact_tension b15.prm
  *   mpirun -np 2 ./compact_tension b30.prm
  *   ./compact_tension --resume b15.prm   (after a run with checkpoints)
+ *   ./compact_tension size_effect.prm    (three sizes, one fracture energy)
  *
  * ---------------------------------------------------------------------
  */
@@ -68,11 +69,14 @@ namespace CompactTension
   // The specimen is modelled in 2D (plane stress by default) with one
   // material point per square cell of size $h$ = 1, 2 and 4 cm. Cracks may
   // only form in the column of cells that contains the centre line, with
-  // their normal fixed to $x$; the notch is the upper part of that column,
-  // left empty, so the two appendages share no grid node. Everything about
-  // the geometry lives in CompactTensionGeometry (compact_tension_geometry.h),
-  // whose documentation also explains the outer dimensions we chose (they
-  // are not given in the paper).
+  // their normal fixed to $x$ (the paper's restrictions; with the `smeared
+  // cracks` model and `Cracking region = everywhere` they may form
+  // anywhere, at any angle, see "The size effect" below); the notch is the
+  // upper part of that column, left empty, so the two appendages share no
+  // grid node. Everything about the geometry lives in
+  // CompactTensionGeometry (compact_tension_geometry.h), whose
+  // documentation also explains the outer dimensions we chose (they are not
+  // given in the paper).
   //
   // The load factor $t$ of the library is the load-point displacement in
   // metres; the parameter files advance it by $10^{-3}$ mm per step as in
@@ -210,10 +214,10 @@ namespace CompactTension
   // the load-deflection curve step by step and sums the run up, one method
   // per stage, like step-44's Solid. The sequence is that of every qsmpm
   // program: read the parameters, make the grid, choose the model, fill the
-  // body with points, add supports, run. Only the model is made here rather
-  // than by the library's factory, because its crack band width must be the
-  // cell size and its cracking region the centre line of this particular
-  // grid.
+  // body with points, add supports, run. The model comes from the
+  // library's factory, but its crack band width is set here to the cell
+  // size, and its cracking region (the centre line, or everywhere but the
+  // pins) follows this particular grid.
   //
   // What the object keeps between steps -- the curve so far, which of the
   // moments of the paper's Fig. 4 have passed, the log of the steps -- is
@@ -330,7 +334,7 @@ namespace CompactTension
   // @sect4{CompactTensionTest::parse_parameters}
   //
   // The library's subsections, the specimen's "Compact tension" and our
-  // "Run" (and "Size effect", which main() reads) are declared in one
+  // "Run" (and "Size effect", which run_program() reads) are declared in one
   // ParameterHandler, so that a misspelt entry in any of them is reported
   // with its name. A run of a size study scales the specimen here, before
   // anything is read from the entries. Returns the specimen's parameters,
@@ -776,16 +780,13 @@ namespace CompactTension
     // energy still stored at the end and that released by failed points).
     const auto [main, beside] =
       geometry.crack_dissipation(problem, communicator);
-    const auto dissipation_lines = [&, main = main, beside = beside]() {
-      std::ostringstream lines;
-      lines << std::setprecision(5);
-      if (main + beside > 0.)
-        lines << "  dissipated by cracks: main crack (centre line) = " << main
-              << " J, beside it = " << beside
-              << " J, rest of the work = " << curve.work() - main - beside
-              << " J\n";
-      return lines.str();
-    };
+    std::ostringstream dissipation;
+    dissipation << std::setprecision(5);
+    if (main + beside > 0.)
+      dissipation << "  dissipated by cracks: main crack (centre line) = "
+                  << main << " J, beside it = " << beside
+                  << " J, rest of the work = " << curve.work() - main - beside
+                  << " J\n";
     problem.pcout()
       << std::setprecision(5) << '\n'
       << "Compact tension " << run_parameters.plot_label << " finished\n"
@@ -799,7 +800,7 @@ namespace CompactTension
       << "  energy ratio                   = " << curve.work() / energy << '\n'
       << "  band points failed completely  = " << band.second << " of "
       << band.first << " (the hinge not counted)\n"
-      << dissipation_lines()
+      << dissipation.str()
       << "  Newton iterations per step     = " << newton_min << " to "
       << newton_max << ", mean " << static_cast<double>(newton_sum) / n_steps
       << '\n'
