@@ -18,7 +18,6 @@
 // @sect3{Include files}
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -540,8 +539,7 @@ namespace Column
           "t 'GIMP, max', \\\n"
        << "     0.03*(8.0/x)**1.5 w l lc rgb 'gray' dt 3 t 'slope 1.5'\n";
     gp.close();
-    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
-        std::system(("gnuplot " + stem + ".gp").c_str()) == 0)
+    if (qsmpm::Utils::run_gnuplot(stem + ".gp"))
       std::cout << "wrote " << csv_file << " and " << stem << ".png"
                 << std::endl;
     else

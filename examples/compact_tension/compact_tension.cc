@@ -29,7 +29,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -250,9 +249,11 @@ namespace CompactTension
     fracture_energy() const;
     double
     ligament_area() const;
-    /// The output directory of the run.
+    /// The output directory and the label of the run.
     const std::string &
     output_directory() const;
+    const std::string &
+    label() const;
 
   private:
     typename CompactTensionGeometry<dim>::Parameters
@@ -861,6 +862,15 @@ namespace CompactTension
 
 
 
+  template <int dim>
+  const std::string &
+  CompactTensionTest<dim>::label() const
+  {
+    return run_parameters.plot_label;
+  }
+
+
+
   // @sect3{Pictures of a size study}
   //
   // A gnuplot script next to the table, and the pictures if gnuplot is
@@ -894,7 +904,6 @@ namespace CompactTension
        << ",520 noenhanced\n"
        << "set multiplot layout 1," << directories.size() << "\n"
        << "set size ratio -1\nunset key\nunset grid\nset cbrange [0:1]\n"
-
        << "set xlabel 'x (m)'\nset ylabel 'y (m)'\n"
        << "set palette rgbformulae 33,13,10\n";
     // Only the points with at least 2 % of the full value: the rest
@@ -913,8 +922,7 @@ namespace CompactTension
          << field << "') : 1/0) with points pt 5 ps 0.9 lc palette\n";
     gp << "unset multiplot\n";
     gp.close();
-    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
-        std::system(("gnuplot " + stem + ".gp").c_str()) == 0)
+    if (Utils::run_gnuplot(stem + ".gp"))
       std::cout << "wrote " << stem << ".png and " << stem << "_cracks.png"
                 << std::endl;
     else
@@ -959,8 +967,7 @@ namespace CompactTension
               << test.work() / test.ligament_area() << ','
               << test.fracture_energy() << '\n';
         directories.push_back(test.output_directory());
-        labels.push_back("b = " + std::to_string(std::lround(100. * b)) +
-                         " cm");
+        labels.push_back(test.label());
       }
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {

@@ -651,8 +651,11 @@ namespace CompactTension
     };
     double lowest = std::numeric_limits<double>::max();
     for (const auto &particle : points.get_particle_handler())
-      if (in_crack_band(points.initial_location(particle)))
-        lowest = std::min(lowest, points.initial_location(particle)[1]);
+      {
+        const Point<dim> x0 = points.initial_location(particle);
+        if (in_crack_band(x0))
+          lowest = std::min(lowest, x0[1]);
+      }
     lowest              = Utilities::MPI::min(lowest, communicator);
     unsigned int n_band = 0, n_failed = 0;
     for (const auto &particle : points.get_particle_handler())

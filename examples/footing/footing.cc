@@ -22,7 +22,6 @@
 // @sect3{Include files}
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
@@ -780,8 +779,7 @@ namespace Footing
        << "/plastic_strain.csv' every ::1 using 1:2:3 with points pt 5 "
           "ps 0.3 lc palette\n";
     gp.close();
-    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
-        std::system(("gnuplot " + directory + "/footing.gp").c_str()) == 0)
+    if (qsmpm::Utils::run_gnuplot(directory + "/footing.gp"))
       std::cout << "wrote " << directory << "/pressure_settlement.png and "
                 << directory << "/plastic_strain.png" << std::endl;
     else

@@ -153,9 +153,7 @@ namespace NotchedPlate
               "with points pt 5 ps 0.5 lc palette\n";
       gp << "unset multiplot\n";
       gp.close();
-      if (std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
-          std::system(("gnuplot " + directory + "/objectivity.gp").c_str()) ==
-            0)
+      if (Utils::run_gnuplot(directory + "/objectivity.gp"))
         pcout << "wrote " << directory << "/load_displacement.png and "
               << directory << "/cracks.png" << std::endl;
       else

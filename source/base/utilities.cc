@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -263,6 +264,14 @@ namespace qsmpm
       AssertThrow(std::ifstream(filename).good(),
                   ExcMessage("Cannot read the parameter file <" + filename +
                              ">."));
+    }
+
+
+    bool
+    run_gnuplot(const std::string &script)
+    {
+      return std::system("command -v gnuplot > /dev/null 2>&1") == 0 &&
+             std::system(("gnuplot " + script).c_str()) == 0;
     }
 
 

@@ -149,6 +149,15 @@ namespace qsmpm
      */
     void
     return_large_blocks_to_system(const std::size_t smallest_block);
+
+    /**
+     * Run gnuplot on the script @p script (a file name) if gnuplot is
+     * installed (Debian: gnuplot-nox). Returns whether it ran and succeeded;
+     * the example programs write their plots' scripts in any case and
+     * make the pictures with this where they can.
+     */
+    bool
+    run_gnuplot(const std::string &script);
   } // namespace Utils
 } // namespace qsmpm
 
