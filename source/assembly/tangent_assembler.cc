@@ -199,7 +199,8 @@ namespace qsmpm
                                   const MaterialPointSet<dim>     &points,
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints,
-                                  const GhostPenalty<dim> *ghost_penalty)
+                                  const GhostPenalty<dim> *ghost_penalty,
+                                  const AdditionalTerm    &additional_term)
   {
     CellTangents<dim> cell_tangents(points);
 
@@ -240,6 +241,8 @@ namespace qsmpm
       }
     if (ghost_penalty != nullptr)
       ghost_penalty->add_to(constraints, K);
+    if (additional_term)
+      additional_term(constraints, K);
     K.compress(VectorOperation::add);
 
     // Constrained dofs outside every cell with points (nodes without points)

@@ -26,8 +26,8 @@ namespace qsmpm
                 ExcMessage("Load stepping: Control = " + control +
                            " needs a problem loaded by prescribed "
                            "displacements only (no body force, traction, "
-                           "point load or macroscopic displacement "
-                           "gradient)."));
+                           "point load, rigid body or macroscopic "
+                           "displacement gradient)."));
     AssertThrow(stepper.control() != LoadStepper::Control::dissipation ||
                   model.computes_dissipation(),
                 ExcMessage("Load stepping: Control = dissipation needs a "

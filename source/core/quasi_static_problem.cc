@@ -53,6 +53,7 @@ namespace qsmpm
     , displacement_constraints(bcs)
     , external_force(bcs)
     , surface_tractions(bcs)
+    , rigid_contact(bcs)
     , constraint_maker(background_grid,
                        bcs,
                        displacement_constraints,
@@ -127,7 +128,20 @@ namespace qsmpm
       background_grid,
       *model,
       prm_values.material_points.formulation,
-      bcs.surface_tractions().size());
+      bcs.surface_tractions().size(),
+      rigid_body_names());
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  QuasiStaticProblem<dim>::rigid_body_names() const
+  {
+    std::vector<std::string> names;
+    for (const auto &body : bcs.rigid_bodies())
+      names.push_back(body.name);
+    return names;
   }
 
 
@@ -242,6 +256,14 @@ namespace qsmpm
           surface_tractions.add_dead_loads(f_ext);
           f_ext.compress(VectorOperation::add);
         }
+      if (!rigid_contact.empty())
+        rigid_contact.reinit_step(background_grid,
+                                  cache,
+                                  points(),
+                                  residual->ghosted_layout(),
+                                  t_old,
+                                  t_new,
+                                  constraint_maker.mean_stiffness(points()));
       residual->set_external_force(f_ext);
     }
     // The stiffness and its preconditioner, unless the one of an earlier
@@ -257,11 +279,18 @@ namespace qsmpm
       {
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
+          typename TangentAssembler<dim>::AdditionalTerm contact_stiffness;
+          if (!rigid_contact.empty())
+            contact_stiffness = [this](const AffineConstraints<double> &c,
+                                       TrilinosWrappers::SparseMatrix  &K) {
+              rigid_contact.add_to(c, K);
+            };
           tangent.assemble(background_grid,
                            points(),
                            cache,
                            step_constraints.get(),
-                           stabilization());
+                           stabilization(),
+                           contact_stiffness);
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
@@ -293,6 +322,14 @@ namespace qsmpm
         points().get_formulation().finite_strain() ?
           InitialGuess::linear_predictor :
           InitialGuess::extrapolation;
+    // Coulomb friction switches points between stick and slip, and full
+    // Newton steps then cycle between the two (the block on a floor of
+    // test contact_rigid_bodies: 20 iterations without convergence in its
+    // first step, 5-12 with the line search).
+    for (const auto &body : bcs.rigid_bodies())
+      if (body.friction == RigidBody<dim>::Friction::coulomb)
+        newton_parameters.max_line_search_steps =
+          std::max(newton_parameters.max_line_search_steps, 8u);
     const bool extrapolate =
       newton_parameters.initial_guess == InitialGuess::extrapolation;
     if (extrapolate && last_load_increment > 0.)
@@ -314,7 +351,8 @@ namespace qsmpm
                                  step_constraints,
                                  preconditioner,
                                  stabilization(),
-                                 pressure_loads());
+                                 pressure_loads(),
+                                 contact_loads());
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
@@ -375,7 +413,8 @@ namespace qsmpm
                                  step_constraints,
                                  preconditioner,
                                  stabilization(),
-                                 pressure_loads());
+                                 pressure_loads(),
+                                 contact_loads());
       const typename PathFollowingSetup<dim>::Solver newton(
         prm_values.nonlinear_solver, &progress);
       const auto constraint =
@@ -428,6 +467,8 @@ namespace qsmpm
     residual->commit(du_ghosted);
     if (!surface_tractions.empty())
       surface_tractions.commit(points(), du_ghosted);
+    if (!rigid_contact.empty())
+      rigid_contact.commit(points(), du_ghosted);
     const double moved = points().advect(cache, du_ghosted);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
@@ -453,18 +494,27 @@ namespace qsmpm
   void
   QuasiStaticProblem<dim>::audit_equilibrium(const double t_new)
   {
-    // The applied load includes the pressures at the solution.
+    // The applied load includes the pressures and the contact forces at
+    // the solution.
+    const bool applied_depends_on_du =
+      pressure_loads() != nullptr || contact_loads() != nullptr;
     VectorType applied;
-    if (pressure_loads() != nullptr)
+    if (applied_depends_on_du)
       {
         applied = f_ext;
-        surface_tractions.add_pressure_forces(du, applied);
+        if (pressure_loads() != nullptr)
+          surface_tractions.add_pressure_forces(du, applied);
+        if (contact_loads() != nullptr)
+          {
+            rigid_contact.add_contact_forces(du, applied);
+            body_loads = rigid_contact.body_loads(du);
+          }
       }
     last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
                                 R,
-                                pressure_loads() != nullptr ? applied : f_ext,
+                                applied_depends_on_du ? applied : f_ext,
                                 run_state.load_scale);
     run_state.reactions  = last_audit.reactions;
     run_state.load_scale = last_audit.scale;
@@ -570,6 +620,9 @@ namespace qsmpm
     condition_names.clear();
     for (const auto &condition : bcs.dirichlet_conditions())
       condition_names.push_back(condition.name);
+    for (const auto &name : rigid_body_names())
+      condition_names.push_back(name);
+    body_loads.assign(bcs.rigid_bodies().size(), {});
     condition_names.push_back("applied");
     condition_names.push_back("held");
 
@@ -708,6 +761,8 @@ namespace qsmpm
   {
     TimerOutput::Scope          scope(timer_output, "output");
     std::vector<Tensor<1, dim>> forces = run_state.reactions;
+    for (const auto &load : body_loads)
+      forces.push_back(load.force);
     forces.push_back(last_audit.applied);
     forces.push_back(last_audit.held);
     writer.write_reactions(

@@ -137,7 +137,10 @@ namespace qsmpm
                                                 t_new,
                                                 communicator);
       }
-    if (grid.periodic_directions().empty())
+    // Contact with a rigid body may be what holds the body (a block on a
+    // floor): that the points touch it is known only in the step's
+    // solution, so the check is left to Newton.
+    if (grid.periodic_directions().empty() && bcs.rigid_bodies().empty())
       {
         std::vector<std::pair<Point<dim>, unsigned int>> held_nodes;
         held_nodes.reserve(held.size());

@@ -192,7 +192,31 @@ namespace qsmpm
   BoundaryDescriptor<dim>::has_loads() const
   {
     return body_force_function || !traction_functions.empty() ||
-           !surface_traction_list.empty() || !nodal_loads.empty();
+           !surface_traction_list.empty() || !nodal_loads.empty() ||
+           !rigid_body_list.empty();
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_rigid_body(const RigidBody<dim> &body)
+  {
+    body.check();
+    for (const auto &other : rigid_body_list)
+      AssertThrow(other.name != body.name,
+                  ExcMessage("Two rigid bodies are called <" + body.name +
+                             ">: give each its own name."));
+    rigid_body_list.push_back(body);
+  }
+
+
+
+  template <int dim>
+  const std::vector<RigidBody<dim>> &
+  BoundaryDescriptor<dim>::rigid_bodies() const
+  {
+    return rigid_body_list;
   }
 
 

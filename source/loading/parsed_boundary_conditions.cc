@@ -5,6 +5,7 @@
 #include <iostream>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
+#include <qsmpm/loading/parsed_rigid_body.h>
 #include <sstream>
 
 namespace qsmpm
@@ -223,6 +224,7 @@ namespace qsmpm
           prm.set("Variable names", dim == 2 ? "x,y,t" : "x,y,z,t");
           prm.leave_subsection();
         }
+      ParsedRigidBody<dim>::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -278,6 +280,9 @@ namespace qsmpm
       add_surface_traction(parameters, surface_traction, boundary);
     if (expressions[3] != zero_expression<dim>())
       boundary.set_body_force(body_force);
+    prm.enter_subsection("Boundary conditions");
+    ParsedRigidBody<dim>::parse_parameters(prm, boundary);
+    prm.leave_subsection();
   }
 
 

@@ -189,10 +189,12 @@ namespace qsmpm
 
 
   template <int dim>
-  MaterialPointSet<dim>::MaterialPointSet(const BackgroundGrid<dim>    &grid,
-                                          const ConstitutiveModel<dim> &model,
-                                          const Formulation &formulation,
-                                          const unsigned int n_surface_loads)
+  MaterialPointSet<dim>::MaterialPointSet(
+    const BackgroundGrid<dim>      &grid,
+    const ConstitutiveModel<dim>   &model,
+    const Formulation              &formulation,
+    const unsigned int              n_surface_loads,
+    const std::vector<std::string> &contact_bodies)
     : grid(grid)
     , model(model)
     , formulation(formulation)
@@ -222,6 +224,10 @@ namespace qsmpm
       offsets.surface_load = layout.add("surface_load",
                                         n_surface_loads * (2 * dim + 1),
                                         Kind::scalar);
+    if (!contact_bodies.empty())
+      offsets.contact = layout.size();
+    for (const auto &body : contact_bodies)
+      layout.add("contact_" + body, dim, Kind::vector);
     offsets.state = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);

@@ -4,6 +4,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -39,15 +40,23 @@ namespace qsmpm
     void
     reinit(const BackgroundGrid<dim> &grid, const bool gimp = false);
 
+    /// A term that adds its stiffness to K with the step's constraints,
+    /// within the couplings K's pattern already has (e.g. the contact of
+    /// the points with rigid bodies).
+    using AdditionalTerm =
+      std::function<void(const AffineConstraints<double> &,
+                         TrilinosWrappers::SparseMatrix &)>;
+
     /// Assemble K at the points of @p cache, plus the matrix of
     /// @p ghost_penalty if given (its couplings across faces then join the
-    /// pattern, made anew for the step).
+    /// pattern, made anew for the step), plus @p additional_term if given.
     void
     assemble(const BackgroundGrid<dim>       &grid,
              const MaterialPointSet<dim>     &points,
              const ShapeCache<dim>           &cache,
              const AffineConstraints<double> &constraints,
-             const GhostPenalty<dim>         *ghost_penalty = nullptr);
+             const GhostPenalty<dim>         *ghost_penalty   = nullptr,
+             const AdditionalTerm            &additional_term = {});
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;

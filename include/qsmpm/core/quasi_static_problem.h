@@ -24,6 +24,7 @@
 #include <qsmpm/loading/equilibrium_audit.h>
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
+#include <qsmpm/loading/rigid_contact.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/materials/constitutive_model.h>
@@ -221,6 +222,14 @@ namespace qsmpm
     const std::vector<Tensor<1, dim>> &
     reactions() const;
 
+    /// The material's force on each rigid body in the last accepted step,
+    /// the number of points in contact and the deepest penetration.
+    const std::vector<typename RigidContact<dim>::BodyLoad> &
+    rigid_body_loads() const
+    {
+      return body_loads;
+    }
+
     /**
      * The force balance of the last accepted step: applied load, reactions,
      * the force of the held nodes and the lost load (see EquilibriumAudit).
@@ -320,9 +329,21 @@ namespace qsmpm
     DisplacementConstraints<dim>            displacement_constraints;
     ExternalForceAssembler<dim>             external_force;
     SurfaceTractions<dim>                   surface_tractions;
-    EquilibriumAudit<dim>                   audit;
-    typename EquilibriumAudit<dim>::Result  last_audit;
-    bool                                    lost_load_warned = false;
+    RigidContact<dim>                       rigid_contact;
+    /// The material's force on each rigid body in the last accepted step.
+    std::vector<typename RigidContact<dim>::BodyLoad> body_loads;
+    /// The names of the rigid bodies.
+    std::vector<std::string>
+    rigid_body_names() const;
+    /// The rigid bodies' contact if there are any, else null.
+    const RigidContact<dim> *
+    contact_loads() const
+    {
+      return rigid_contact.empty() ? nullptr : &rigid_contact;
+    }
+    EquilibriumAudit<dim>                  audit;
+    typename EquilibriumAudit<dim>::Result last_audit;
+    bool                                   lost_load_warned = false;
     /// Whether return_large_blocks_to_system() was called.
     bool manage_heap = false;
     /// The degrees of freedom of the step held for lack of material or

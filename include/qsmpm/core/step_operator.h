@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
+#include <qsmpm/loading/rigid_contact.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/solvers/newton_krylov.h>
@@ -30,24 +31,27 @@ namespace qsmpm
 
     /// The step's operator; @p ghost_penalty, if given, stabilizes the
     /// nodes of cut cells; @p pressures, if given, add the pressures on
-    /// the body's surface, which follow the increment.
+    /// the body's surface, which follow the increment; @p contact, if
+    /// given, the contact forces of rigid bodies.
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
                  const Preconditioner<dim>      &preconditioner,
                  const GhostPenalty<dim>        *ghost_penalty = nullptr,
-                 const SurfaceTractions<dim>    *pressures     = nullptr)
+                 const SurfaceTractions<dim>    *pressures     = nullptr,
+                 const RigidContact<dim>        *contact       = nullptr)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
       , ghost_penalty(ghost_penalty)
       , pressures(pressures)
+      , contact(contact)
     {
     }
 
     /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
-    /// penalty, if any) + f_p(du) (the pressures, if any), with coupled
-    /// rows added to their masters; returns what the evaluation found on
-    /// this rank's points.
+    /// penalty, if any) + f_p(du) (the pressures, if any) + f_c(du) (the
+    /// contact forces, if any), with coupled rows added to their masters;
+    /// returns what the evaluation found on this rank's points.
     Evaluation
     residual(const VectorType &du, VectorType &R) const
     {
@@ -56,6 +60,8 @@ namespace qsmpm
         ghost_penalty->subtract_forces(du, R);
       if (pressures != nullptr)
         pressures->add_pressure_forces(du, R);
+      if (contact != nullptr)
+        contact->add_contact_forces(du, R);
       constraints.condense(R);
       return evaluation;
     }
@@ -136,6 +142,7 @@ namespace qsmpm
     const Preconditioner<dim>      &preconditioner;
     const GhostPenalty<dim>        *ghost_penalty;
     const SurfaceTractions<dim>    *pressures;
+    const RigidContact<dim>        *contact;
   };
 } // namespace qsmpm
 

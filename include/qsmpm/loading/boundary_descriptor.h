@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 #include <functional>
 #include <memory>
+#include <qsmpm/loading/rigid_body.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -147,6 +148,16 @@ namespace qsmpm
     void
     add_point_load(const Point<dim> &location, const Tensor<1, dim> &force);
 
+    /**
+     * A rigid body that the points cannot enter (RigidContact): its force
+     * on the material is a load of the step, and the material's force on
+     * it a column of reactions.csv. Add every rigid body before the
+     * material points are made: each point carries its contact traction
+     * with each body. Throws if the description is incomplete.
+     */
+    void
+    add_rigid_body(const RigidBody<dim> &body);
+
     /// The displacement conditions, in the order they were added.
     const std::vector<DirichletCondition> &
     dirichlet_conditions() const;
@@ -180,7 +191,12 @@ namespace qsmpm
     const Point<dim> &
     macroscopic_reference() const;
 
-    /// Whether any load (body force, traction, point load) is given.
+    /// The rigid bodies, in the order they were added.
+    const std::vector<RigidBody<dim>> &
+    rigid_bodies() const;
+
+    /// Whether any load (body force, traction, point load, rigid body) is
+    /// given.
     bool
     has_loads() const;
 
@@ -189,6 +205,7 @@ namespace qsmpm
     std::vector<std::pair<types::boundary_id, std::shared_ptr<Function<dim>>>>
                                                        traction_functions;
     std::vector<SurfaceTraction>                       surface_traction_list;
+    std::vector<RigidBody<dim>>                        rigid_body_list;
     std::shared_ptr<Function<dim>>                     body_force_function;
     std::vector<std::pair<Point<dim>, Tensor<1, dim>>> nodal_loads;
     std::function<Tensor<2, dim>(const double)>        gradient;

@@ -106,6 +106,9 @@ namespace qsmpm
       /// area-weighted sum of its faces' offsets from the point (2 dim + 1
       /// doubles each; SurfaceTractions).
       unsigned int surface_load = numbers::invalid_unsigned_int;
+      /// With rigid bodies only: per body, the contact traction on the
+      /// point's surface (dim doubles each; RigidContact).
+      unsigned int contact = numbers::invalid_unsigned_int;
       /// First of the constitutive model's own fields.
       unsigned int state;
     };
@@ -114,12 +117,15 @@ namespace qsmpm
      * Points for @p model on @p grid. The @p formulation decides which
      * fields the points carry besides the common ones: F at finite strain,
      * the initial domain half-lengths with GIMP; @p n_surface_loads the
-     * number of surface tractions whose area each point carries.
+     * number of surface tractions whose area each point carries;
+     * @p contact_bodies the names of the rigid bodies whose contact
+     * traction each point carries (the fields contact_<name>).
      */
-    MaterialPointSet(const BackgroundGrid<dim>    &grid,
-                     const ConstitutiveModel<dim> &model,
-                     const Formulation            &formulation     = {},
-                     const unsigned int            n_surface_loads = 0);
+    MaterialPointSet(const BackgroundGrid<dim>      &grid,
+                     const ConstitutiveModel<dim>   &model,
+                     const Formulation              &formulation     = {},
+                     const unsigned int              n_surface_loads = 0,
+                     const std::vector<std::string> &contact_bodies  = {});
 
     /**
      * Fill every locally owned cell with points at the positions given by

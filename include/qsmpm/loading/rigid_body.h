@@ -1,0 +1,112 @@
+#ifndef qsmpm_loading_rigid_body_h
+#define qsmpm_loading_rigid_body_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <memory>
+#include <string>
+
+namespace qsmpm
+{
+  using namespace dealii;
+
+  /**
+   * A rigid body that the material points cannot enter: its shape in the
+   * initial configuration, the translation it makes as a function of the
+   * load factor, and the friction of its surface. RigidContact turns it
+   * into forces on the points; this class only describes it.
+   *
+   * Shapes (the body is the set where signed_distance() < 0):
+   *  - half-space: every x with (x - point) . normal < 0; @p normal is
+   *    the outward normal of the body, towards the material;
+   *  - box: lower corner @p point, upper corner @p upper_corner;
+   *  - sphere (a circle in 2D, a cylinder along z in plane strain):
+   *    centre @p point, radius @p radius.
+   *
+   * Friction of the surface:
+   *  - frictionless: the body pushes along its normal only;
+   *  - coulomb: a tangential traction up to mu times the contact pressure
+   *    (stick below, slip at it);
+   *  - rough: no slip at all (mu infinite).
+   */
+  template <int dim>
+  struct RigidBody
+  {
+    enum class Shape
+    {
+      half_space,
+      box,
+      sphere
+    };
+
+    enum class Friction
+    {
+      frictionless,
+      coulomb,
+      rough
+    };
+
+    /// Names the body in reactions.csv, in the points' output (the field
+    /// contact_<name>) and in messages.
+    std::string name = "body";
+
+    Shape shape = Shape::half_space;
+    /// half-space: a point of its plane; box: the lower corner; sphere:
+    /// the centre (initial configuration).
+    Point<dim> point;
+    /// half-space: the outward unit normal.
+    Tensor<1, dim> normal;
+    /// box: the upper corner.
+    Point<dim> upper_corner;
+    /// sphere: the radius.
+    double radius = 0.;
+
+    /// The body's displacement (dim components) as a function of the load
+    /// factor t (set_time(t), evaluated at the origin); nullptr: at rest.
+    std::shared_ptr<Function<dim>> motion;
+
+    Friction friction = Friction::frictionless;
+    /// mu of Coulomb friction.
+    double friction_coefficient = 0.;
+
+    /**
+     * The penalty factor gamma: the contact stiffness per unit area is
+     * gamma k / h^(dim-1), k the mean stiffness of the grid's degrees of
+     * freedom (the diagonal of the step's tangent), h the smallest cell
+     * size, so that gamma has no units. A point penetrates the body by
+     * about p h / (gamma E): the larger gamma, the closer to
+     * impenetrability and the stiffer Newton's problem.
+     */
+    double penalty_factor = 100.;
+
+    /// The body's translation at load factor @p t.
+    Tensor<1, dim>
+    displacement(const double t) const;
+
+    /**
+     * The signed distance of @p x from the body's surface at load factor
+     * @p t (positive outside, negative inside), and in @p normal the
+     * body's outward unit normal at the nearest point of its surface.
+     */
+    double
+    signed_distance(const Point<dim> &x,
+                    const double      t,
+                    Tensor<1, dim>   &normal) const;
+
+    /// Throws with a message naming the body if its description is
+    /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0).
+    void
+    check() const;
+
+    /// Friction from its name: frictionless, coulomb or rough.
+    static Friction
+    parse_friction(const std::string &name);
+
+    /// Shape from its name: half-space, box or sphere.
+    static Shape
+    parse_shape(const std::string &name);
+  };
+} // namespace qsmpm
+
+#endif

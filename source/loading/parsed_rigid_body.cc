@@ -1,0 +1,138 @@
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/lac/vector.h>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/loading/parsed_rigid_body.h>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  ParsedRigidBody<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rigid body");
+    prm.declare_entry("Shape",
+                      "none",
+                      Patterns::Selection("none|half-space|box|sphere"),
+                      "A rigid body the material points cannot enter "
+                      "(contact by a penalty on the points' surfaces). none: "
+                      "no body. half-space: the side of the plane through "
+                      "<Point> away from <Normal>. box: from <Point> (lower "
+                      "corner) to <Upper corner>. sphere: centre <Point>, "
+                      "<Radius> (a circle in 2D). Positions are those at "
+                      "t = 0; the body then moves by <Motion>.");
+    prm.declare_entry("Name",
+                      "body",
+                      Patterns::Anything(),
+                      "Names the body in reactions.csv (the material's "
+                      "force on it, columns <Name>_Fx, ...) and the points' "
+                      "contact traction in the output (contact_<Name>).");
+    prm.declare_entry("Point",
+                      dim == 2 ? "0, 0" : "0, 0, 0",
+                      Patterns::Anything(),
+                      "half-space: a point of its plane; box: its lower "
+                      "corner; sphere: its centre.");
+    prm.declare_entry("Normal",
+                      dim == 2 ? "0, 1" : "0, 0, 1",
+                      Patterns::Anything(),
+                      "half-space: its outward unit normal (towards the "
+                      "material).");
+    prm.declare_entry("Upper corner",
+                      dim == 2 ? "1, 1" : "1, 1, 1",
+                      Patterns::Anything(),
+                      "box: its upper corner.");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "sphere: its radius.");
+    prm.declare_entry("Friction",
+                      "frictionless",
+                      Patterns::Selection("frictionless|coulomb|rough"),
+                      "frictionless: normal contact only. coulomb: "
+                      "tangential traction up to <Friction coefficient> "
+                      "times the contact pressure (stick, then slip; "
+                      "Newton then takes at least 8 steps of line search, "
+                      "Nonlinear solver/Line search steps). rough: no "
+                      "slip.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Double(0.),
+                      "mu of Coulomb friction.");
+    prm.declare_entry("Penalty factor",
+                      "100",
+                      Patterns::Double(0.),
+                      "gamma: the contact stiffness per area is gamma k / "
+                      "h^(dim-1), k the mean stiffness of the grid's "
+                      "degrees of freedom, h the smallest cell size. A "
+                      "point penetrates the body by about p h / (gamma E).");
+    prm.enter_subsection("Motion");
+    Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+    prm.set("Function expression", dim == 2 ? "0; 0" : "0; 0; 0");
+    prm.set("Variable names", dim == 2 ? "x,y,t" : "x,y,z,t");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ParsedRigidBody<dim>::parse_parameters(ParameterHandler        &prm,
+                                         BoundaryDescriptor<dim> &boundary)
+  {
+    prm.enter_subsection("Rigid body");
+    const std::string shape = prm.get("Shape");
+    if (shape == "none")
+      {
+        prm.leave_subsection();
+        return;
+      }
+    const std::string where = "Boundary conditions/Rigid body: ";
+    RigidBody<dim>    body;
+    body.name  = prm.get("Name");
+    body.shape = RigidBody<dim>::parse_shape(shape);
+    body.point = Utils::parse_point<dim>(prm.get("Point"), where + "<Point>");
+    const Point<dim> normal =
+      Utils::parse_point<dim>(prm.get("Normal"), where + "<Normal>");
+    AssertThrow(body.shape != RigidBody<dim>::Shape::half_space ||
+                  normal.norm() > 0.,
+                ExcMessage(where + "<Normal> must not be zero."));
+    if (normal.norm() > 0.)
+      body.normal = normal / normal.norm();
+    body.upper_corner = Utils::parse_point<dim>(prm.get("Upper corner"),
+                                                where + "<Upper corner>");
+    body.radius       = prm.get_double("Radius");
+    body.friction     = RigidBody<dim>::parse_friction(prm.get("Friction"));
+    body.friction_coefficient = prm.get_double("Friction coefficient");
+    body.penalty_factor       = prm.get_double("Penalty factor");
+    AssertThrow(body.penalty_factor > 0.,
+                ExcMessage(where + "<Penalty factor> must be positive."));
+    auto motion = std::make_shared<Functions::ParsedFunction<dim>>(dim);
+    prm.enter_subsection("Motion");
+    try
+      {
+        motion->parse_parameters(prm);
+        motion->set_time(0.);
+        Vector<double> values(dim);
+        motion->vector_value(Point<dim>(), values);
+      }
+    catch (const std::exception &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage(
+                      where + "Motion: <Function expression> = <" +
+                      prm.get("Function expression") +
+                      ">: " + Utils::error_message(exc) +
+                      " (the body's displacement: " + std::to_string(dim) +
+                      " expressions in t separated by ';')."));
+      }
+    prm.leave_subsection();
+    prm.leave_subsection();
+    body.motion = motion;
+    boundary.add_rigid_body(body);
+  }
+
+
+
+  template struct ParsedRigidBody<2>;
+  template struct ParsedRigidBody<3>;
+} // namespace qsmpm
