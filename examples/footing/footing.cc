@@ -87,18 +87,21 @@ namespace Footing
   // stepping) are read by QuasiStaticProblem.
   struct Parameters
   {
-    double                    half_width   = 1.;
-    double                    width        = 5.;
-    double                    depth        = 5.;
-    double                    space_above  = 0.;
-    double                    settlement   = 0.02;
-    std::vector<unsigned int> cells        = {8, 16};
-    std::vector<std::string>  treatments   = {"F-bar", "none"};
-    double                    tolerance    = 0.03;
-    bool                      check        = true;
-    std::string               directory    = ".";
-    bool                      write_points = false;
-    bool                      verbose      = false;
+    double                    half_width      = 1.;
+    double                    width           = 5.;
+    double                    depth           = 5.;
+    double                    space_above     = 0.;
+    double                    settlement      = 0.02;
+    std::string               footing_model   = "grid nodes";
+    std::string               footing_surface = "smooth";
+    double                    penalty_factor  = 100.;
+    std::vector<unsigned int> cells           = {8, 16};
+    std::vector<std::string>  treatments      = {"F-bar", "none"};
+    double                    tolerance       = 0.03;
+    bool                      check           = true;
+    std::string               directory       = ".";
+    bool                      write_points    = false;
+    bool                      verbose         = false;
 
     void
     add_parameters(ParameterHandler &prm)
@@ -126,6 +129,26 @@ namespace Footing
                         "Final settlement of the footing (reached at load "
                         "factor 1; the load stepping's Final load factor "
                         "scales it).",
+                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Footing model",
+        footing_model,
+        "grid nodes: the footing is the set of grid nodes under it, their "
+        "vertical displacement prescribed (horizontally free). rigid body: "
+        "a rigid box |x| <= a above the soil surface that the soil points "
+        "cannot enter (contact by a penalty, Boundary conditions/Rigid "
+        "body in the library), independent of the grid.",
+        Patterns::Selection("grid nodes|rigid body"));
+      prm.add_parameter("Footing surface",
+                        footing_surface,
+                        "With Footing model = rigid body: smooth "
+                        "(frictionless) or rough (no slip).",
+                        Patterns::Selection("smooth|rough"));
+      prm.add_parameter("Footing penalty factor",
+                        penalty_factor,
+                        "With Footing model = rigid body: gamma of the "
+                        "contact penalty (Boundary conditions/Rigid body/"
+                        "Penalty factor).",
                         Patterns::Double(0.));
       prm.add_parameter("Cells per half-width",
                         cells,
@@ -339,9 +362,11 @@ namespace Footing
     problem.pcout().set_condition(
       footing.verbose && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     make_grid();
+    // The conditions first: with a rigid footing every point carries its
+    // contact traction.
+    setup_boundary_conditions();
     problem.set_model(ConstitutiveModelFactory<dim>::create(prm));
     setup_points();
-    setup_boundary_conditions();
     problem.set_step_callback(
       [this](const QuasiStaticProblem<dim>::StepReport &report) {
         return observe_step(report);
@@ -425,6 +450,23 @@ namespace Footing
     footing_condition = bcs.dirichlet_conditions().size();
 
     const double a = footing.half_width, surface = footing.depth;
+    if (footing.footing_model == "rigid body")
+      {
+        // A box from the symmetry line's mirror image to x = a, its base
+        // on the soil surface, moved down by s t.
+        RigidBody<dim> body;
+        body.name           = "footing";
+        body.shape          = RigidBody<dim>::Shape::box;
+        body.point          = Point<dim>(-a, surface);
+        body.upper_corner   = Point<dim>(a, surface + a);
+        body.motion         = std::make_shared<Settlement>(footing.settlement);
+        body.penalty_factor = footing.penalty_factor;
+        body.friction       = footing.footing_surface == "rough" ?
+                                RigidBody<dim>::Friction::rough :
+                                RigidBody<dim>::Friction::frictionless;
+        bcs.add_rigid_body(body);
+        return;
+      }
     bcs.add_dirichlet_nodes(
       "footing",
       [this, a, surface](const Point<dim> &x) {
@@ -445,7 +487,9 @@ namespace Footing
   StripFooting::observe_step(const QuasiStaticProblem<dim>::StepReport &report)
   {
     current_settlement = footing.settlement * report.load_factor;
-    const double force = -problem.reactions()[footing_condition][1];
+    const double force = footing.footing_model == "rigid body" ?
+                           problem.rigid_body_loads().front().force[1] :
+                           -problem.reactions()[footing_condition][1];
     curve.emplace_back(current_settlement, force / footing.half_width);
     return true;
   }
