@@ -22,12 +22,12 @@ namespace qsmpm
 
   template <int dim>
   double
-  RigidBody<dim>::signed_distance(const Point<dim> &x_current,
-                                  const double      t,
-                                  Tensor<1, dim>   &n) const
+  RigidBody<dim>::signed_distance(const Point<dim>     &x_current,
+                                  const Tensor<1, dim> &motion_so_far,
+                                  Tensor<1, dim>       &n) const
   {
     // The body moves as a whole: measure in its initial configuration.
-    const Point<dim> x = x_current - displacement(t);
+    const Point<dim> x = x_current - motion_so_far;
     switch (shape)
       {
         case Shape::half_space:

@@ -45,7 +45,6 @@ namespace qsmpm
   {
     const auto &bodies = boundary.rigid_bodies();
     cache              = &shape_cache;
-    t_end              = t_new;
     candidates.clear();
     dof_global.clear();
     dof_local.clear();
@@ -69,12 +68,14 @@ namespace qsmpm
     std::vector<types::global_dof_index> cell_dofs(dofs_per_cell);
     const Epetra_BlockMap &ghosted_map = ghosted_layout.trilinos_vector().Map();
     penalty.resize(bodies.size());
+    body_displacement.resize(bodies.size());
     body_increment.resize(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         penalty[b] = bodies[b].penalty_factor * stiffness_scale / h_power;
+        body_displacement[b] = bodies[b].displacement(t_new);
         body_increment[b] =
-          bodies[b].displacement(t_new) - bodies[b].displacement(t_old);
+          body_displacement[b] - bodies[b].displacement(t_old);
       }
 
     for (unsigned int c = 0; c < cache->n_cells(); ++c)
@@ -100,7 +101,7 @@ namespace qsmpm
               {
                 Tensor<1, dim> n;
                 const double   centre_gap =
-                  bodies[b].signed_distance(x, t_new, n);
+                  bodies[b].signed_distance(x, body_displacement[b], n);
                 if (centre_gap > margin + half.norm() * F.norm())
                   continue;
                 Tensor<1, dim> a;
@@ -117,7 +118,9 @@ namespace qsmpm
                 const Point<dim> corner = x + a;
                 Tensor<1, dim>   n_corner;
                 const double     gap =
-                  bodies[b].signed_distance(corner, t_new, n_corner);
+                  bodies[b].signed_distance(corner,
+                                            body_displacement[b],
+                                            n_corner);
                 if (gap > margin)
                   continue;
                 Candidate candidate;
@@ -182,7 +185,7 @@ namespace qsmpm
     Tensor<1, dim> u;
     for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
       u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-    gap = body.signed_distance(c.corner + u, t_end, n);
+    gap = body.signed_distance(c.corner + u, body_displacement[c.body], n);
     if (gap >= 0.)
       return Tensor<1, dim>();
     const double   pressure = -penalty[c.body] * gap;
@@ -289,7 +292,7 @@ namespace qsmpm
           continue;
         const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
         Tensor<1, dim>        n;
-        body.signed_distance(c.corner, t_end, n);
+        body.signed_distance(c.corner, body_displacement[c.body], n);
         // epsilon A (n (x) n), with friction epsilon A I (sticking).
         Tensor<2, dim> stiffness = outer_product(n, n);
         if (body.friction != RigidBody<dim>::Friction::frictionless)

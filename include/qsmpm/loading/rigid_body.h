@@ -85,14 +85,15 @@ namespace qsmpm
     displacement(const double t) const;
 
     /**
-     * The signed distance of @p x from the body's surface at load factor
-     * @p t (positive outside, negative inside), and in @p normal the
-     * body's outward unit normal at the nearest point of its surface.
+     * The signed distance of @p x from the body's surface when the body
+     * has moved by @p motion (positive outside, negative inside), and in
+     * @p normal the body's outward unit normal at the nearest point of its
+     * surface. The caller evaluates displacement() once per load factor.
      */
     double
-    signed_distance(const Point<dim> &x,
-                    const double      t,
-                    Tensor<1, dim>   &normal) const;
+    signed_distance(const Point<dim>     &x,
+                    const Tensor<1, dim> &motion,
+                    Tensor<1, dim>       &normal) const;
 
     /// Throws with a message naming the body if its description is
     /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0).

@@ -168,10 +168,11 @@ namespace qsmpm
     const BoundaryDescriptor<dim> &boundary;
 
     /// The step's data.
-    const ShapeCache<dim>      *cache          = nullptr;
-    unsigned int                contact_offset = 0;
-    double                      t_end          = 0.;
-    std::vector<double>         penalty;
+    const ShapeCache<dim> *cache          = nullptr;
+    unsigned int           contact_offset = 0;
+    std::vector<double>    penalty;
+    /// Each body's displacement at the step's end, and in the step.
+    std::vector<Tensor<1, dim>> body_displacement;
     std::vector<Tensor<1, dim>> body_increment;
     std::vector<Candidate>      candidates;
     unsigned int                dofs_per_cell = 0;
