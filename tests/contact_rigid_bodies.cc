@@ -8,28 +8,27 @@
 //    half-space that moves down by d = 0.01 t. In uniaxial strain the
 //    exact stress is sigma_yy = -M d / H, sigma_xx = -lambda d / H,
 //    M = lambda + 2 mu, everywhere. The penalty lets the plate penetrate
-//    by g = |sigma_yy| / epsilon: the error is of the order
-//    M h / (gamma kbar H), 1e-3 at gamma = 100 here, and falls with
-//    gamma (checked: 10 times larger gamma, at least 5 times smaller
-//    error). Tolerance: 1 % (the issue's) on the stress of every point and
-//    on the plate's force, which must also equal the base's reaction
-//    (global equilibrium) to 1e-6.
-// 2. The same at finite strain (hencky, cpGIMP), compacted by 20 %:
+//    by g = |sigma_yy| / epsilon, of the order M h / (gamma kbar H) of
+//    the plate's motion (checked: below 0.2 %). With cpGIMP, whose
+//    domains tile the body, the uniform stress is then reproduced (with
+//    linear shape functions the cell under the plate is off by about
+//    u / h, doc/contact.md). Tolerance: 1 % (the issue's) on the stress of
+//    every point and on the plate's force, which must also equal the base's
+//    reaction (global equilibrium) to 1e-6.
+// 2. The same at finite strain (hencky, cpGIMP), compacted by 5 %:
 //    exact Cauchy stress sigma_yy = M ln(lambda) / lambda with the stretch
-//    lambda = 0.8 (Hencky's law in uniaxial strain), 1 % again.
+//    lambda = 0.95 (Hencky's law in uniaxial strain), 1 % again.
 // 3. A block pushed across a rigid floor with Coulomb friction mu = 0.3:
 //    the block [0,1] x [0.25,0.75] rests on a half-space floor y < 0.25,
 //    is pressed by a surface traction q = 10 on its top (t <= 1), and the
-//    floor then slides in x (5e-4 per step) while the grid's left
-//    boundary holds the block. Once every point slips, the floor's
-//    tangential force over its normal force is mu (to 1 %, the issue's
+//    floor then slides in x by 0.2 in 100 steps while the grid's left
+//    boundary holds the block. Once every point slips (steps 21-100), the
+//    floor's tangential force over its normal force is mu (to 1 %, the issue's
 //    tolerance; the penalty does not enter a ratio of forces at slip),
 //    and the normal force equals the applied q * 1 to 1e-6; in the first
-//    sliding step, 2.5e-4 of floor motion, the block sticks: the ratio is
+//    sliding step, 2e-3 of floor motion, the block sticks: the ratio is
 //    below mu, and it never exceeds mu. With rough contact the ratio
-//    exceeds mu. (15 sliding steps, 7.4e-3 of floor motion: further
-//    sliding stalls Newton at about 1e-5 of the first residual, an open
-//    defect of issue 30.)
+//    exceeds mu (5 sliding steps).
 //
 // Output from rank 0; the results do not depend on the number of ranks.
 #include "tests.h"
@@ -149,6 +148,7 @@ namespace
 
   std::string
   floor_prm(const std::string &friction, const unsigned int steps)
+  // (the default Newton tolerance, 1e-6)
   {
     std::ostringstream prm;
     prm << "set Dimension = 2\n"
@@ -173,11 +173,10 @@ namespace
         << "    set Friction = " << friction << "\n"
         << "    set Friction coefficient = 0.3\n"
         << "    subsection Motion\n"
-        << "      set Function expression = 0.05*max(t - 1, 0); 0\n"
+        << "      set Function expression = 0.2*max(t - 1, 0); 0\n"
         << "    end\n  end\nend\n"
         << "subsection Load stepping\n  set Final load factor = 2\n"
         << "  set Number of steps = " << steps << "\nend\n"
-        << "subsection Nonlinear solver\n  set Tolerance = 1e-8\nend\n"
         << "subsection Output\n  set Interval = 0\n"
         << "  set Directory = contact-out\nend\n";
     return prm.str();
@@ -192,7 +191,7 @@ namespace
   };
 
   FloorResult
-  run_floor(const std::string &friction)
+  run_floor(const std::string &friction, const unsigned int sliding_steps)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
@@ -210,8 +209,7 @@ namespace
       const double q = 10. * std::min(report.load_factor, 1.);
       result.normal_error =
         std::max(result.normal_error, std::abs(floor.force[1] + q) / q);
-      // 15 steps of sliding, 7.4e-3 of floor motion.
-      return result.ratio.size() < 15;
+      return result.ratio.size() < sliding_steps;
     });
     try
       {
@@ -271,30 +269,35 @@ main(int argc, char **argv)
 
   deallog << "3. A block on a sliding floor, Coulomb friction mu = 0.3"
           << std::endl;
-  const FloorResult coulomb = run_floor("coulomb");
-  check("  completed", coulomb.completed && coulomb.ratio.size() == 15);
-  if (coulomb.ratio.size() == 15)
+  // The whole sliding phase: 100 steps, 0.2 of floor motion.
+  const FloorResult coulomb = run_floor("coulomb", 100);
+  check("  completed", coulomb.completed && coulomb.ratio.size() == 100);
+  if (coulomb.ratio.size() == 100)
     {
-      double largest = 0.;
-      for (const double r : coulomb.ratio)
-        largest = std::max(largest, r);
-      const double last_error = std::abs(coulomb.ratio.back() - 0.3) / 0.3;
+      double largest = 0., last_error = 0.;
+      for (unsigned int k = 0; k < 100; ++k)
+        {
+          largest = std::max(largest, coulomb.ratio[k]);
+          if (k >= 20)
+            last_error =
+              std::max(last_error, std::abs(coulomb.ratio[k] - 0.3) / 0.3);
+        }
       if (root)
         std::cout << "floor: F_x/F_y first sliding step "
-                  << coulomb.ratio.front() << ", step 15 "
-                  << coulomb.ratio.back() << ", largest " << largest
+                  << coulomb.ratio.front() << ", steps 21-100 within "
+                  << last_error << " of mu, largest " << largest
                   << "; normal force error " << coulomb.normal_error
                   << std::endl;
-      check("  step 15 (all points slip): F_x / F_y = mu within 1 %",
+      check("  steps 21-100 (all points slip): F_x / F_y = mu within 1 %",
             last_error < 1e-2);
       check("  every step: F_x / F_y <= mu (1 + 1e-3)",
             largest <= 0.3 * (1. + 1e-3));
-      check("  first step (5e-4 of floor motion): stick, F_x / F_y < mu",
+      check("  first step (2e-3 of floor motion): stick, F_x / F_y < mu",
             coulomb.ratio.front() < 0.3 * 0.99);
       check("  normal force = applied load to 1e-6",
             coulomb.normal_error < 1e-6);
     }
-  const FloorResult rough = run_floor("rough");
-  check("  rough: F_x / F_y > mu at the end",
+  const FloorResult rough = run_floor("rough", 5);
+  check("  rough: F_x / F_y > mu after 5 sliding steps",
         rough.completed && !rough.ratio.empty() && rough.ratio.back() > 0.3);
 }

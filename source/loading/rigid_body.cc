@@ -22,38 +22,45 @@ namespace qsmpm
 
   template <int dim>
   double
-  RigidBody<dim>::signed_distance(const Point<dim>     &x_current,
+  RigidBody<dim>::signed_distance(const Point<dim>     &x,
                                   const Tensor<1, dim> &motion_so_far,
                                   Tensor<1, dim>       &n) const
   {
     // The body moves as a whole: measure in its initial configuration.
-    const Point<dim> x = x_current - motion_so_far;
+    return signed_distance_from_point((x - point) - motion_so_far, n);
+  }
+
+
+
+  template <int dim>
+  double
+  RigidBody<dim>::signed_distance_from_point(const Tensor<1, dim> &y,
+                                             Tensor<1, dim>       &n) const
+  {
     switch (shape)
       {
         case Shape::half_space:
           n = normal;
-          return (x - point) * normal;
+          return y * normal;
         case Shape::sphere:
           {
-            const Tensor<1, dim> r      = x - point;
-            const double         length = r.norm();
-            n = length > 0. ? r / length : Tensor<1, dim>();
+            const double length = y.norm();
+            n                   = length > 0. ? y / length : Tensor<1, dim>();
             if (length == 0.)
               n[dim - 1] = 1.;
             return length - radius;
           }
         case Shape::box:
           {
-            // q_d > 0: outside the slab of direction d, by q_d.
+            // q_d > 0: outside the slab 0 <= y_d <= size_d, by q_d.
             Tensor<1, dim> q, outside;
             unsigned int   nearest = 0;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                const double centre = 0.5 * (point[d] + upper_corner[d]);
-                const double half   = 0.5 * (upper_corner[d] - point[d]);
-                const double offset = x[d] - centre;
-                q[d]                = std::abs(offset) - half;
-                outside[d] = std::max(q[d], 0.) * (offset < 0. ? -1. : 1.);
+                const double size  = upper_corner[d] - point[d];
+                const bool   below = -y[d] > y[d] - size;
+                q[d]               = below ? -y[d] : y[d] - size;
+                outside[d]         = std::max(q[d], 0.) * (below ? -1. : 1.);
                 if (q[d] > q[nearest])
                   nearest = d;
               }
@@ -64,11 +71,11 @@ namespace qsmpm
                 return distance;
               }
             // Inside: the nearest face.
-            n = Tensor<1, dim>();
-            n[nearest] =
-              x[nearest] < 0.5 * (point[nearest] + upper_corner[nearest]) ?
-                -1. :
-                1.;
+            n          = Tensor<1, dim>();
+            n[nearest] = -y[nearest] > y[nearest] - (upper_corner[nearest] -
+                                                     point[nearest]) ?
+                           -1. :
+                           1.;
             return q[nearest];
           }
       }

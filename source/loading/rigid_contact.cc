@@ -116,19 +116,21 @@ namespace qsmpm
                 if (!(r > 0.))
                   continue;
                 const Point<dim> corner = x + a;
-                Tensor<1, dim>   n_corner;
-                const double     gap =
-                  bodies[b].signed_distance(corner,
-                                            body_displacement[b],
-                                            n_corner);
+                // Relative to the body's reference point, as the gap is
+                // evaluated in every residual (small near the surface).
+                const Tensor<1, dim> relative =
+                  (corner - bodies[b].point) - body_displacement[b];
+                Tensor<1, dim> n_corner;
+                const double   gap =
+                  bodies[b].signed_distance_from_point(relative, n_corner);
                 if (gap > margin)
                   continue;
                 Candidate candidate;
-                candidate.point  = p;
-                candidate.body   = b;
-                candidate.first  = dof_values.size();
-                candidate.corner = corner;
-                candidate.area   = data[offsets.volume] / (2. * r);
+                candidate.point    = p;
+                candidate.body     = b;
+                candidate.first    = dof_values.size();
+                candidate.relative = relative;
+                candidate.area     = data[offsets.volume] / (2. * r);
                 // Points that touch the body count too: a body resting on
                 // another is held only by the contact.
                 candidate.penetrates = gap <= 1e-8 * h;
@@ -185,7 +187,7 @@ namespace qsmpm
     Tensor<1, dim> u;
     for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
       u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-    gap = body.signed_distance(c.corner + u, body_displacement[c.body], n);
+    gap = body.signed_distance_from_point(c.relative + u, n);
     if (gap >= 0.)
       return Tensor<1, dim>();
     const double   pressure = -penalty[c.body] * gap;
@@ -280,6 +282,23 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  RigidContact<dim>::slipped(const Candidate &c, const Tensor<1, dim> &n) const
+  {
+    const double *stored =
+      cache->properties(c.point) + contact_offset + c.body * dim;
+    Tensor<1, dim> t;
+    for (unsigned int d = 0; d < dim; ++d)
+      t[d] = stored[d];
+    const double pressure = t * n;
+    const double mu = boundary.rigid_bodies()[c.body].friction_coefficient;
+    return pressure > 0. &&
+           (t - pressure * n).norm() >= (1. - 1e-9) * mu * pressure;
+  }
+
+
+
+  template <int dim>
   void
   RigidContact<dim>::add_to(const AffineConstraints<double> &constraints,
                             TrilinosWrappers::SparseMatrix  &K) const
@@ -292,11 +311,22 @@ namespace qsmpm
           continue;
         const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
         Tensor<1, dim>        n;
-        body.signed_distance(c.corner, body_displacement[c.body], n);
-        // epsilon A (n (x) n), with friction epsilon A I (sticking).
-        Tensor<2, dim> stiffness = outer_product(n, n);
-        if (body.friction != RigidBody<dim>::Friction::frictionless)
-          stiffness = unit_symmetric_tensor<dim>();
+        body.signed_distance_from_point(c.relative, n);
+        // epsilon A (n (x) n), with friction plus epsilon_T A P if the
+        // point sticks. Which points slip in this step is not known yet:
+        // those whose traction of the last step was at the Coulomb limit
+        // are taken to slip on (their tangential stiffness is zero, and a
+        // preconditioner that gave them the stick's would be far from the
+        // Jacobian: GMRES then met its tolerance on directions along
+        // which Newton's residual did not fall, and the block on a
+        // sliding floor stalled at 1e-5 of its first residual).
+        const Tensor<2, dim> normal_part = outer_product(n, n);
+        Tensor<2, dim>       stiffness   = normal_part;
+        if (body.friction == RigidBody<dim>::Friction::rough ||
+            (body.friction == RigidBody<dim>::Friction::coulomb &&
+             !slipped(c, n)))
+          stiffness +=
+            tangential_scale * (unit_symmetric_tensor<dim>() - normal_part);
         stiffness *= penalty[c.body] * c.area;
         K_point.reinit(dofs_per_cell, dofs_per_cell);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)

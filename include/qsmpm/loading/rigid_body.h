@@ -95,6 +95,19 @@ namespace qsmpm
                     const Tensor<1, dim> &motion,
                     Tensor<1, dim>       &normal) const;
 
+    /**
+     * The same for @p y = x - point - motion, the position relative to
+     * the body's reference point in its initial configuration. Near the
+     * surface of a half-space (and the lower faces of a box) @p y is small,
+     * so that the gap has the round-off of y, not of x: a penalty of
+     * stiffness epsilon turns a round-off of 1e-16 |x| into forces of
+     * epsilon 1e-16 |x|, which kept Newton from its tolerance in steady
+     * sliding, where the residual of a step is itself tiny.
+     */
+    double
+    signed_distance_from_point(const Tensor<1, dim> &y,
+                               Tensor<1, dim>       &normal) const;
+
     /// Throws with a message naming the body if its description is
     /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0).
     void

@@ -70,8 +70,10 @@ namespace qsmpm
    * the force on the body. Everything depends on the increment, so it is part
    * of the step's residual and Newton sees the exact (piecewise smooth)
    * Jacobian through its finite differences; the preconditioner gets
-   * epsilon A N_i N_j (n (x) n, plus P with friction) of the points that
-   * touch or penetrate the body at du = 0. Coulomb friction turns Newton's
+   * epsilon A N_i N_j (n (x) n, plus epsilon_T / epsilon P for points that
+   * stick: rough contact, and Coulomb contact unless the point's traction
+   * of the last step was at the Coulomb limit) of the points that touch or
+   * penetrate the body at du = 0. Coulomb friction turns Newton's
    * line search on (QuasiStaticProblem::advance()).
    *
    * The candidates of a step are the points within two cell sizes of a
@@ -146,8 +148,10 @@ namespace qsmpm
       unsigned int body;
       /// The first of its cell's dofs in dof_global etc.
       unsigned int first;
-      /// The contact point x_p + a at the start of the step.
-      Point<dim> corner;
+      /// The contact point x_p + a at the start of the step, relative to
+      /// the body's reference point moved to the step's end
+      /// (RigidBody::signed_distance_from_point()).
+      Tensor<1, dim> relative;
       /// The point's contact area A.
       double area;
       /// Whether the corner touches or is inside the body at du = 0.
@@ -164,6 +168,11 @@ namespace qsmpm
              const double    *du_local,
              Tensor<1, dim>  &n,
              double          &gap) const;
+
+    /// Whether candidate @p c slipped in the last step: its stored
+    /// traction at the Coulomb limit (@p n: the body's normal).
+    bool
+    slipped(const Candidate &c, const Tensor<1, dim> &n) const;
 
     const BoundaryDescriptor<dim> &boundary;
 
