@@ -176,6 +176,18 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  RigidContact<dim>::motion_scale(const VectorType &layout) const
+  {
+    double largest = 0.;
+    for (const auto &increment : body_increment)
+      largest = std::max(largest, increment.norm());
+    return largest * std::sqrt(static_cast<double>(layout.size()));
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   RigidContact<dim>::traction(const Candidate &c,
                               const double    *du_local,

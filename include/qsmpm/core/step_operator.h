@@ -93,6 +93,23 @@ namespace qsmpm
     }
 
     /**
+     * The smallest size of the increments of interest for the
+     * Jacobian-free products (JacobianFreeOperator): with rigid bodies,
+     * their motion in the step at every degree of freedom; else 0.
+     */
+    double
+    increment_scale_floor() const
+    {
+      if (contact == nullptr)
+        return 0.;
+      // A motion of round-off size (a body that starts to move at the end
+      // of the step) is none.
+      const double motion =
+        contact->motion_scale(residual_evaluator.ghosted_layout());
+      return motion > 1e-10 * typical_increment_norm() ? motion : 0.;
+    }
+
+    /**
      * The energy all points dissipate in the trial state of the residual()
      * that returned @p evaluation (summed over the ranks), for path
      * following.

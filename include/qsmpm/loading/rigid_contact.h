@@ -114,6 +114,13 @@ namespace qsmpm
     void
     add_contact_forces(const VectorType &du, VectorType &R) const;
 
+    /// The largest motion of a body in the step, |u_b(t_new) - u_b(t_old)|,
+    /// times the square root of the number of entries of @p layout's
+    /// vector space: the size of a displacement of that motion at every
+    /// degree of freedom.
+    double
+    motion_scale(const VectorType &layout) const;
+
     /// The force of the material on one body at an increment.
     struct BodyLoad
     {

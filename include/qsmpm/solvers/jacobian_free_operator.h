@@ -1,10 +1,42 @@
 #ifndef qsmpm_solvers_jacobian_free_operator_h
 #define qsmpm_solvers_jacobian_free_operator_h
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 namespace qsmpm
 {
+  namespace internal
+  {
+    /// Whether Operator has increment_scale_floor().
+    template <typename Operator, typename = void>
+    struct has_increment_scale_floor : std::false_type
+    {
+    };
+
+    template <typename Operator>
+    struct has_increment_scale_floor<
+      Operator,
+      std::void_t<
+        decltype(std::declval<const Operator &>().increment_scale_floor())>>
+      : std::true_type
+    {
+    };
+
+    /// The operator's smallest scale of the increments of interest, or 0.
+    template <typename Operator>
+    double
+    increment_scale_floor(const Operator &op)
+    {
+      if constexpr (has_increment_scale_floor<Operator>::value)
+        return op.increment_scale_floor();
+      else
+        return 0.;
+    }
+  } // namespace internal
+
   /**
    * The Jacobian-vector product of paper eqs. (A.3)-(A.4) as a matrix-free
    * operator for deal.II's Krylov solvers:
@@ -24,6 +56,13 @@ namespace qsmpm
    * already on the points; the difference quotient was exactly zero and
    * GMRES divided by zero (issue 10: the self-weight column with AMG
    * stopped with a NaN residual at its second load step).
+   *
+   * An operator may also provide increment_scale_floor(), a size below
+   * which ||du|| is not taken (0: none): a rigid body that slides past a
+   * body in steady sliding changes the residual while du, the body's own
+   * deformation, is almost zero, and a perturbation relative to that
+   * ||du|| made the products round-off (StepOperator: the bodies'
+   * motion in the step).
    *
    * Constrained components of the product are zero, so the Krylov vectors
    * never leave the space of admissible corrections.
@@ -51,7 +90,10 @@ namespace qsmpm
       , R_du(R_du)
       , sqrt_eps_prec(sqrt_eps_prec)
       , increment_scale([&]() {
-        const double d = scale > 0. ? scale : du.l2_norm();
+        const double d =
+          scale > 0. ?
+            scale :
+            std::max(du.l2_norm(), internal::increment_scale_floor(op));
         return d > 0. ? d : op.typical_increment_norm();
       }())
     {
