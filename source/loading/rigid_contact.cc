@@ -170,6 +170,7 @@ namespace qsmpm
         du_ghosted.reinit(ghosted_layout);
         forces.reinit(ghosted_layout.locally_owned_elements(),
                       ghosted_layout.get_mpi_communicator());
+        values.resize(dofs_per_cell);
       }
   }
 
@@ -207,7 +208,7 @@ namespace qsmpm
     if (body.friction == RigidBody<dim>::Friction::frictionless)
       return t;
     // Return map of the tangential traction: the last step's, plus the
-    // penalty of the slip of the corner relative to the body.
+    // penalty of the slip of the contact point relative to the body.
     const double *old =
       cache->properties(c.point) + contact_offset + c.body * dim;
     Tensor<1, dim> tau;
@@ -228,29 +229,42 @@ namespace qsmpm
 
 
   template <int dim>
+  template <typename Action>
+  void
+  RigidContact<dim>::for_each_contact(const VectorType &du,
+                                      const Action     &action) const
+  {
+    if (!any)
+      return;
+    du_ghosted             = du;
+    const double *du_local = du_ghosted.trilinos_vector()[0];
+    for (const Candidate &c : candidates)
+      {
+        Tensor<1, dim>       n;
+        double               gap;
+        const Tensor<1, dim> t = traction(c, du_local, n, gap);
+        if (gap < 0.)
+          action(c, t, gap);
+      }
+  }
+
+
+
+  template <int dim>
   void
   RigidContact<dim>::add_contact_forces(const VectorType &du,
                                         VectorType       &R) const
   {
     if (!any)
       return;
-    du_ghosted             = du;
-    const double *du_local = du_ghosted.trilinos_vector()[0];
-    forces                 = 0.;
-    std::vector<double> values;
-    for (const Candidate &c : candidates)
-      {
-        Tensor<1, dim>       n;
-        double               gap;
-        const Tensor<1, dim> t = traction(c, du_local, n, gap);
-        if (gap >= 0.)
-          continue;
-        values.resize(dofs_per_cell);
+    forces = 0.;
+    for_each_contact(
+      du, [&](const Candidate &c, const Tensor<1, dim> &t, double) {
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           values[i] =
             dof_values[c.first + i] * c.area * t[dof_component[c.first + i]];
         forces.add(dofs_per_cell, &dof_global[c.first], values.data());
-      }
+      });
     forces.compress(VectorOperation::add);
     R += forces;
   }
@@ -262,23 +276,13 @@ namespace qsmpm
   RigidContact<dim>::body_loads(const VectorType &du) const
   {
     std::vector<BodyLoad> loads(boundary.rigid_bodies().size());
-    if (any)
-      {
-        du_ghosted             = du;
-        const double *du_local = du_ghosted.trilinos_vector()[0];
-        for (const Candidate &c : candidates)
-          {
-            Tensor<1, dim>       n;
-            double               gap;
-            const Tensor<1, dim> t = traction(c, du_local, n, gap);
-            if (gap >= 0.)
-              continue;
-            BodyLoad &load = loads[c.body];
-            load.force -= c.area * t;
-            ++load.n_points;
-            load.penetration = std::max(load.penetration, -gap);
-          }
-      }
+    for_each_contact(
+      du, [&](const Candidate &c, const Tensor<1, dim> &t, const double gap) {
+        BodyLoad &load = loads[c.body];
+        load.force -= c.area * t;
+        ++load.n_points;
+        load.penetration = std::max(load.penetration, -gap);
+      });
     const MPI_Comm communicator = du.get_mpi_communicator();
     for (BodyLoad &load : loads)
       {

@@ -176,6 +176,12 @@ namespace qsmpm
              Tensor<1, dim>  &n,
              double          &gap) const;
 
+    /// Call @p action(candidate, traction, gap) for every candidate in
+    /// contact at the increment @p du (owned entries).
+    template <typename Action>
+    void
+    for_each_contact(const VectorType &du, const Action &action) const;
+
     /// Whether candidate @p c slipped in the last step: its stored
     /// traction at the Coulomb limit (@p n: the body's normal).
     bool
@@ -201,6 +207,8 @@ namespace qsmpm
     bool                                 any = false;
     mutable VectorType                   du_ghosted;
     mutable VectorType                   forces;
+    /// Scratch of add_contact_forces(): one cell's nodal forces.
+    mutable std::vector<double> values;
   };
 } // namespace qsmpm
 
