@@ -91,7 +91,15 @@ main(int argc, char *argv[])
         {
           prm.nonlinear_solver.initial_guess =
             qsmpm::NewtonParameters::InitialGuess::extrapolation;
-          prm.nonlinear_solver.eisenstat_walker = true;
+          prm.nonlinear_solver.forcing =
+            qsmpm::NewtonParameters::Forcing::eisenstat_walker;
+        }
+      else
+        {
+          prm.nonlinear_solver.initial_guess =
+            qsmpm::NewtonParameters::InitialGuess::linear_predictor;
+          prm.nonlinear_solver.forcing =
+            qsmpm::NewtonParameters::Forcing::constant;
         }
       prm.load_stepping.n_steps           = n_steps;
       prm.load_stepping.final_load_factor = 10.;

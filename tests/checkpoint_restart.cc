@@ -87,7 +87,7 @@ namespace
     prm.nonlinear_solver.preconditioner_reuse_steps = 1;
     prm.nonlinear_solver.initial_guess =
       NewtonParameters::InitialGuess::linear_predictor;
-    prm.nonlinear_solver.eisenstat_walker = false;
+    prm.nonlinear_solver.forcing = NewtonParameters::Forcing::constant;
     prm.load_stepping.n_steps             = 40;
     prm.load_stepping.final_load_factor   = 2e-4;
     prm.load_stepping.max_cut_backs       = 6;

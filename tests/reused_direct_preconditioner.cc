@@ -64,7 +64,7 @@ namespace
     // the comparison is of the preconditioners alone.
     prm.nonlinear_solver.initial_guess =
       NewtonParameters::InitialGuess::linear_predictor;
-    prm.nonlinear_solver.eisenstat_walker = false;
+    prm.nonlinear_solver.forcing = NewtonParameters::Forcing::constant;
     prm.load_stepping.n_steps             = 300;
     prm.load_stepping.final_load_factor   = 3e-4;
     prm.load_stepping.max_cut_backs       = 6;

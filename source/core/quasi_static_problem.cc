@@ -272,7 +272,7 @@ namespace qsmpm
     // it).
     if (preconditioner_reuse.build_for_step(
           preconditioner.needs_matrix(),
-          prm_values.nonlinear_solver,
+          solver_parameters(),
           step_constraints.get(),
           background_grid.locally_owned_dofs(),
           communicator))
@@ -302,6 +302,16 @@ namespace qsmpm
 
 
   template <int dim>
+  NewtonParameters
+  QuasiStaticProblem<dim>::solver_parameters() const
+  {
+    return prm_values.nonlinear_solver.resolve(
+      model->is_elastic(), points().get_formulation().finite_strain());
+  }
+
+
+
+  template <int dim>
   bool
   QuasiStaticProblem<dim>::advance(const double  t_old,
                                    const double  t_new,
@@ -316,12 +326,7 @@ namespace qsmpm
     // proportional loading of a nearly linear problem they are nearly this
     // step's solution, which saves the predictor's linear solve.
     using InitialGuess                 = NewtonParameters::InitialGuess;
-    NewtonParameters newton_parameters = prm_values.nonlinear_solver;
-    if (newton_parameters.initial_guess == InitialGuess::automatic)
-      newton_parameters.initial_guess =
-        points().get_formulation().finite_strain() ?
-          InitialGuess::linear_predictor :
-          InitialGuess::extrapolation;
+    NewtonParameters newton_parameters = solver_parameters();
     // Coulomb friction switches points between stick and slip, and full
     // Newton steps then cycle between the two (the block on a floor of
     // test contact_rigid_bodies: 20 iterations without convergence in its
@@ -358,7 +363,7 @@ namespace qsmpm
       typename StepOperator<dim>::Evaluation evaluation;
       report = newton.solve(op, du, R, evaluation);
       op.reject_inverted_points(evaluation, report);
-      preconditioner_reuse.count_use(report, prm_values.nonlinear_solver);
+      preconditioner_reuse.count_use(report, solver_parameters());
     }
     // A step that failed (and is tried again with a smaller increment, or
     // a new preconditioner) starts from the linear predictor.
@@ -415,9 +420,9 @@ namespace qsmpm
                                  stabilization(),
                                  pressure_loads(),
                                  contact_loads());
-      const typename PathFollowingSetup<dim>::Solver newton(
-        prm_values.nonlinear_solver, &progress);
-      const auto constraint =
+      const typename PathFollowingSetup<dim>::Solver newton(solver_parameters(),
+                                                            &progress);
+      const auto                                     constraint =
         path_following.constraint(stepper,
                                   cache,
                                   points().get_offsets().displacement,
@@ -438,7 +443,7 @@ namespace qsmpm
                             evaluation,
                             PathFollowingSetup<dim>::force_guard(stepper));
       op.reject_inverted_points(evaluation, report);
-      preconditioner_reuse.count_use(report, prm_values.nonlinear_solver);
+      preconditioner_reuse.count_use(report, solver_parameters());
     }
     t_new = t_old + delta_lambda;
     if (!report.converged)

@@ -199,6 +199,15 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  ConstitutiveModel<dim>::is_elastic() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   std::string
   ConstitutiveModel<dim>::name() const
   {

@@ -383,6 +383,17 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  MaterialMap<dim>::is_elastic() const
+  {
+    return std::all_of(ordered.begin(), ordered.end(), [](const auto &entry) {
+      return entry.second->model->is_elastic();
+    });
+  }
+
+
+
+  template <int dim>
   std::string
   MaterialMap<dim>::name() const
   {

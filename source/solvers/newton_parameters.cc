@@ -65,15 +65,16 @@ namespace qsmpm
         preconditioner_reuse_steps,
         "The preconditioner (AMG hierarchy or LU factors) may serve up to "
         "this many load steps before it is built anew from the stiffness of "
-        "the current step. 1: a new one every step (the default). "
+        "the current step. 1: a new one every step (the paper). "
         "Larger values save the set-up where the stiffness changes slowly; "
         "a preconditioner is always rebuilt after a failed step and when "
         "GMRES slows down (Preconditioner reuse growth) and when the "
         "constrained degrees of freedom change. Measured: a converged "
         "answer within the Newton tolerance of a rebuilt one in elastic "
         "and softening runs; with perfect plasticity (the footing with "
-        "F-bar) more Newton iterations and cut-backs.",
-        Patterns::Integer(1));
+        "F-bar) more Newton iterations and cut-backs. 0 (the default): "
+        "auto, 10 for elastic models, 1 for all others.",
+        Patterns::Integer(0));
       prm.add_parameter(
         "Preconditioner reuse growth",
         preconditioner_reuse_growth,
@@ -82,16 +83,19 @@ namespace qsmpm
         "iterations per Newton iteration of the first step after the last "
         "rebuild.",
         Patterns::Double(1.));
-      Utils::add_selection<bool>(
+      Utils::add_selection<Forcing>(
         prm,
         "Forcing term",
-        eisenstat_walker,
-        {{"constant", false}, {"eisenstat-walker", true}},
+        forcing,
+        {{"constant", Forcing::constant},
+         {"eisenstat-walker", Forcing::eisenstat_walker},
+         {"auto", Forcing::automatic}},
         "constant: GMRES always solves to <Linear tolerance> (the paper); "
         "eisenstat-walker: adapt it to the Newton convergence (Eisenstat "
         "and Walker's choice 2), starting from <Linear tolerance>: loose "
         "where Newton is far from the solution, tight near it. The "
-        "stopping test is on the nonlinear residual either way.");
+        "stopping test is on the nonlinear residual either way. auto: "
+        "eisenstat-walker for elastic models, constant for all others.");
       prm.add_parameter("Line search steps",
                         max_line_search_steps,
                         "Backtracking: halve the Newton correction at most "
@@ -124,11 +128,12 @@ namespace qsmpm
         "(Load stepping/Control) does not use it). Under "
         "proportional loading extrapolation often meets the "
         "stopping test without a Newton iteration. auto: "
-        "extrapolation with small-strain kinematics, the linear "
-        "predictor with finite strain (where a body rotates the last "
-        "increment points the wrong way: the cantilever example needed up "
-        "to 20 Newton iterations and cut-backs with extrapolation, 3-8 "
-        "with the predictor).");
+        "extrapolation for elastic models with small-strain kinematics, "
+        "the linear predictor for all others (with finite strain a "
+        "rotating body's last increment points the wrong way: the "
+        "cantilever example needed up to 20 Newton iterations and "
+        "cut-backs with extrapolation, 3-8 with the predictor; with "
+        "perfect plasticity the footing needed cut-backs).");
       prm.add_parameter("Verbose",
                         verbose,
                         "Print one line per Newton iteration: ||R||, GMRES "
@@ -137,5 +142,23 @@ namespace qsmpm
                         Patterns::Bool());
     }
     prm.leave_subsection();
+  }
+
+
+
+  NewtonParameters
+  NewtonParameters::resolve(const bool elastic, const bool finite_strain) const
+  {
+    NewtonParameters resolved = *this;
+    if (resolved.preconditioner_reuse_steps == 0)
+      resolved.preconditioner_reuse_steps = elastic ? 10 : 1;
+    if (resolved.forcing == Forcing::automatic)
+      resolved.forcing =
+        elastic ? Forcing::eisenstat_walker : Forcing::constant;
+    if (resolved.initial_guess == InitialGuess::automatic)
+      resolved.initial_guess = elastic && !finite_strain ?
+                                 InitialGuess::extrapolation :
+                                 InitialGuess::linear_predictor;
+    return resolved;
   }
 } // namespace qsmpm

@@ -318,6 +318,11 @@ namespace qsmpm
     std::string
     write_last_converged_state(OutputWriter<dim> &writer);
 
+    /// The parameters of subsection "Nonlinear solver" with their `auto`
+    /// settings decided for the model (NewtonParameters::resolve()).
+    NewtonParameters
+    solver_parameters() const;
+
     MPI_Comm                                communicator;
     ConditionalOStream                      progress;
     TimerOutput                             timer_output;

@@ -225,6 +225,17 @@ namespace qsmpm
     kirchhoff_tangent(const PointState<dim>             &old,
                       const FiniteStrainKinematics<dim> &kinematics) const;
 
+    /**
+     * Whether the stress is a function of the strain (or deformation)
+     * alone, without history: the solver's `auto` settings
+     * (NewtonParameters::resolve()) then extrapolate the last step's
+     * increment, adapt GMRES's tolerance and keep a preconditioner over
+     * several steps (measured safe for such models, not for perfect
+     * plasticity). False by default.
+     */
+    virtual bool
+    is_elastic() const;
+
     /// The model's name in messages.
     virtual std::string
     name() const;

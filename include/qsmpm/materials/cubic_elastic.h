@@ -44,6 +44,13 @@ namespace qsmpm
       return "cubic elastic";
     }
 
+    /// True: the stress follows from the strain alone.
+    bool
+    is_elastic() const override
+    {
+      return true;
+    }
+
     /// Orientation g (Bunge, sample -> crystal) of a point at x.
     using OrientationFunction = std::function<Tensor<2, 3>(const Point<dim> &)>;
 

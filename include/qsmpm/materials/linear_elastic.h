@@ -41,6 +41,13 @@ namespace qsmpm
       return "linear elastic";
     }
 
+    /// True: the stress follows from the strain alone.
+    bool
+    is_elastic() const override
+    {
+      return true;
+    }
+
     LinearElastic(const double young_modulus,
                   const double poisson_ratio,
                   const bool   plane_stress = false);

@@ -113,6 +113,10 @@ namespace qsmpm
       const PointState<dim>             &old,
       const FiniteStrainKinematics<dim> &kinematics) const override;
 
+    /// Whether every model of the map is elastic.
+    bool
+    is_elastic() const override;
+
     /// E.g. "material map (0: linear elastic, 1: von Mises)".
     std::string
     name() const override;

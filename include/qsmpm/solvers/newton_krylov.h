@@ -314,7 +314,7 @@ namespace qsmpm
           // du_0 (previous_norm is ||R(du_0)|| in the first iteration). A
           // first solve from du_0 keeps the linear tolerance but does not
           // solve further than the Newton target asks either.
-          if (parameters.eisenstat_walker)
+          if (parameters.forcing == NewtonParameters::Forcing::eisenstat_walker)
             forcing = (n > 0 || norm < previous_norm) ?
                         eisenstat_walker(forcing, norm, previous_norm, target) :
                         std::max(forcing, 0.5 * target / norm);
