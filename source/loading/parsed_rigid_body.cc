@@ -12,13 +12,15 @@ namespace qsmpm
     prm.enter_subsection("Rigid body");
     prm.declare_entry("Shape",
                       "none",
-                      Patterns::Selection("none|half-space|box|sphere"),
+                      Patterns::Selection("none|half-space|box|sphere|polygon"),
                       "A rigid body the material points cannot enter "
                       "(contact by a penalty on the points' surfaces). none: "
                       "no body. half-space: the side of the plane through "
                       "<Point> away from <Normal>. box: from <Point> (lower "
                       "corner) to <Upper corner>. sphere: centre <Point>, "
-                      "<Radius> (a circle in 2D). Positions are those at "
+                      "<Radius> (a circle in 2D). polygon: the convex "
+                      "polygon with the corners <Vertices> in the x-y plane "
+                      "(in 3D the prism along z). Positions are those at "
                       "t = 0; the body then moves by <Motion>.");
     prm.declare_entry("Name",
                       "body",
@@ -30,7 +32,7 @@ namespace qsmpm
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
                       "half-space: a point of its plane; box: its lower "
-                      "corner; sphere: its centre.");
+                      "corner; sphere: its centre (not used by a polygon).");
     prm.declare_entry("Normal",
                       dim == 2 ? "0, 1" : "0, 0, 1",
                       Patterns::Anything(),
@@ -44,6 +46,12 @@ namespace qsmpm
                       "1",
                       Patterns::Double(0.),
                       "sphere: its radius.");
+    prm.declare_entry("Vertices",
+                      "",
+                      Patterns::Anything(),
+                      "polygon: its corners, x and y of each, separated by "
+                      "';' (e.g. \"0, 1; 1, 1; 0.5, 0.5\" for a wedge "
+                      "pointing down), in either order.");
     prm.declare_entry("Friction",
                       "frictionless",
                       Patterns::Selection("frictionless|coulomb|rough"),
@@ -101,7 +109,22 @@ namespace qsmpm
     body.upper_corner = Utils::parse_point<dim>(prm.get("Upper corner"),
                                                 where + "<Upper corner>");
     body.radius       = prm.get_double("Radius");
-    body.friction     = RigidBody<dim>::parse_friction(prm.get("Friction"));
+    if (body.shape == RigidBody<dim>::Shape::polygon)
+      {
+        std::vector<Point<dim>> corners;
+        for (const auto &text :
+             Utilities::split_string_list(prm.get("Vertices"), ';'))
+          {
+            const Point<2> xy =
+              Utils::parse_point<2>(text, where + "<Vertices>");
+            Point<dim> corner;
+            corner[0] = xy[0];
+            corner[1] = xy[1];
+            corners.push_back(corner);
+          }
+        body.set_polygon(corners);
+      }
+    body.friction = RigidBody<dim>::parse_friction(prm.get("Friction"));
     body.friction_coefficient = prm.get_double("Friction coefficient");
     body.penalty_factor       = prm.get_double("Penalty factor");
     AssertThrow(body.penalty_factor > 0.,

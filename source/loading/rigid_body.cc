@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <limits>
 #include <qsmpm/loading/rigid_body.h>
 
 namespace qsmpm
@@ -78,8 +79,90 @@ namespace qsmpm
                            1.;
             return q[nearest];
           }
+        case Shape::polygon:
+          {
+            // Inside: the largest distance to the edges' lines, all
+            // negative. Outside: the distance to the nearest edge segment.
+            Tensor<1, dim> p;
+            p[0]                   = y[0];
+            p[1]                   = y[1];
+            const unsigned int m   = vertices.size();
+            double             in  = -std::numeric_limits<double>::max();
+            double             out = std::numeric_limits<double>::max();
+            Tensor<1, dim>     in_normal, out_normal;
+            for (unsigned int i = 0; i < m; ++i)
+              {
+                const Tensor<1, dim> &a    = vertices[i];
+                const Tensor<1, dim>  edge = vertices[(i + 1) % m] - a;
+                Tensor<1, dim>        outward;
+                outward[0] = edge[1];
+                outward[1] = -edge[0];
+                outward /= outward.norm();
+                const double along_line = outward * (p - a);
+                if (along_line > in)
+                  {
+                    in        = along_line;
+                    in_normal = outward;
+                  }
+                const double s =
+                  std::clamp(((p - a) * edge) / (edge * edge), 0., 1.);
+                const Tensor<1, dim> offset   = p - (a + s * edge);
+                const double         distance = offset.norm();
+                if (distance < out)
+                  {
+                    out        = distance;
+                    out_normal = distance > 0. ? offset / distance : outward;
+                  }
+              }
+            if (in <= 0.)
+              {
+                n = in_normal;
+                return in;
+              }
+            n = out_normal;
+            return out;
+          }
       }
     return 0.;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidBody<dim>::set_polygon(const std::vector<Point<dim>> &corners)
+  {
+    const std::string body = "Rigid body <" + name + ">: ";
+    AssertThrow(corners.size() >= 3,
+                ExcMessage(body + "a polygon needs at least 3 vertices."));
+    shape = Shape::polygon;
+    point = Point<dim>();
+    for (const auto &corner : corners)
+      for (unsigned int d = 0; d < 2; ++d)
+        point[d] += corner[d] / corners.size();
+    vertices.clear();
+    for (const auto &corner : corners)
+      {
+        Tensor<1, dim> v;
+        v[0] = corner[0] - point[0];
+        v[1] = corner[1] - point[1];
+        vertices.push_back(v);
+      }
+    const auto cross = [](const Tensor<1, dim> &a, const Tensor<1, dim> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    double area = 0.;
+    for (unsigned int i = 0; i < vertices.size(); ++i)
+      area += cross(vertices[i], vertices[(i + 1) % vertices.size()]);
+    if (area < 0.)
+      std::reverse(vertices.begin(), vertices.end());
+    const unsigned int m = vertices.size();
+    for (unsigned int i = 0; i < m; ++i)
+      AssertThrow(cross(vertices[(i + 1) % m] - vertices[i],
+                        vertices[(i + 2) % m] - vertices[(i + 1) % m]) > 0.,
+                  ExcMessage(body + "the vertices must form a convex polygon "
+                                    "(no three on a line, no reflex "
+                                    "corner)."));
   }
 
 
@@ -106,6 +189,11 @@ namespace qsmpm
         case Shape::sphere:
           AssertThrow(radius > 0.,
                       ExcMessage(body + "the radius must be positive."));
+          break;
+        case Shape::polygon:
+          AssertThrow(vertices.size() >= 3,
+                      ExcMessage(body + "a polygon needs at least 3 "
+                                        "vertices (set_polygon())."));
           break;
       }
     AssertThrow(friction != Friction::coulomb || friction_coefficient >= 0.,
@@ -147,9 +235,11 @@ namespace qsmpm
       return Shape::box;
     if (name == "sphere")
       return Shape::sphere;
+    if (name == "polygon")
+      return Shape::polygon;
     AssertThrow(false,
                 ExcMessage("Unknown rigid body shape <" + name +
-                           ">: half-space, box or sphere."));
+                           ">: half-space, box, sphere or polygon."));
     return Shape::half_space;
   }
 

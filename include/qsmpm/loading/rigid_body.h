@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace qsmpm
 {
@@ -22,7 +23,10 @@ namespace qsmpm
    *    the outward normal of the body, towards the material;
    *  - box: lower corner @p point, upper corner @p upper_corner;
    *  - sphere (a circle in 2D, a cylinder along z in plane strain):
-   *    centre @p point, radius @p radius.
+   *    centre @p point, radius @p radius;
+   *  - polygon: the convex polygon with the @p vertices (in the x-y
+   *    plane, in either order; a wedge, a punch with chamfers, a cone's
+   *    section in plane strain); in 3D the prism it spans along z.
    *
    * Friction of the surface:
    *  - frictionless: the body pushes along its normal only;
@@ -37,7 +41,8 @@ namespace qsmpm
     {
       half_space,
       box,
-      sphere
+      sphere,
+      polygon
     };
 
     enum class Friction
@@ -61,6 +66,16 @@ namespace qsmpm
     Point<dim> upper_corner;
     /// sphere: the radius.
     double radius = 0.;
+    /// polygon: its vertices, x and y (the z coordinate is ignored),
+    /// relative to @p point, counterclockwise (set_polygon() orders them).
+    std::vector<Tensor<1, dim>> vertices;
+
+    /// Make the body the convex polygon with the corners @p corners
+    /// (positions at t = 0, in either order): @p point becomes their
+    /// centroid. Throws with a message naming the body unless there are at
+    /// least 3 corners forming a convex polygon.
+    void
+    set_polygon(const std::vector<Point<dim>> &corners);
 
     /// The body's displacement (dim components) as a function of the load
     /// factor t (set_time(t), evaluated at the origin); nullptr: at rest.
@@ -117,7 +132,7 @@ namespace qsmpm
     static Friction
     parse_friction(const std::string &name);
 
-    /// Shape from its name: half-space, box or sphere.
+    /// Shape from its name: half-space, box, sphere or polygon.
     static Shape
     parse_shape(const std::string &name);
   };
