@@ -1,0 +1,198 @@
+// Checkpoint and restart with a rigid body in Coulomb contact (issue 30:
+// "bodies and contact in checkpoints, resume gives the same curve"). The
+// block of contact_rigid_bodies (E = 1000, nu = 0.3, [0,1] x [0.25,0.75]
+// on 12 x 8 cells) is pressed by q = 10 onto a half-space floor in 10
+// steps, and the floor then slides by 0.002 per step in x for 10 steps
+// with mu = 0.3: the points go from stick to slip, and each step's
+// tangential traction starts from the last step's (the field
+// contact_floor on the points), which is what a resume must restore.
+//
+//  A: the uninterrupted run.
+//  B: the same with a checkpoint every 11 steps, stopped after step 14
+//     (as if killed), then resumed from the checkpoint of step 11 (the
+//     first sliding step, in which the points stick): its reactions.csv
+//     (with the floor's force, floor_Fx and floor_Fy) must be A's, the
+//     same rows and the same numbers to 1e-10 of the largest force (the
+//     same ranks and the paper's solver settings, so that the steps are
+//     bitwise those of A; doc/restart.md).
+//  C: negative control, B's checkpoints resumed with the contact
+//     tractions set to zero after resume(): the floor's force must differ
+//     by more than 1e-4 of the largest (measured 5e-4: the traction's
+//     history decides the steps until the points slip, after which the
+//     return map puts them at mu p_N again), so that the check above,
+//     six orders of magnitude tighter, can fail.
+#include "tests.h"
+
+#include <filesystem>
+#include <qsmpm/core/quasi_static_problem.h>
+
+using namespace qsmpm;
+namespace fs = std::filesystem;
+
+namespace
+{
+  struct Options
+  {
+    std::string  directory;
+    unsigned int checkpoint_interval = 0;
+    unsigned int stop_after          = 0;
+    bool         resume              = false;
+    bool         forget_tractions    = false;
+  };
+
+  void
+  run(const Options &options)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = 0,0\n"
+         << "  set Upper corner = 1.5,1\n  set Subdivisions = 12,8\nend\n"
+         << "subsection Material points\n"
+         << "  set Points per cell per direction = 2\n"
+         << "  set Region lower corner = 0,0.25\n"
+         << "  set Region upper corner = 1,0.75\nend\n"
+         << "subsection Material\n  set Model = linear elastic\n"
+         << "  subsection linear elastic\n"
+         << "    set Young's modulus = 1000\n"
+         << "    set Poisson's ratio = 0.3\n  end\nend\n"
+         << "subsection Boundary conditions\n"
+         << "  set Dirichlet boundaries = 0:x\n"
+         << "  set Surface traction region = y > 0.74\n"
+         << "  subsection Surface traction\n"
+         << "    set Function expression = 0; -10*min(t, 1)\n  end\n"
+         << "  subsection Rigid body\n"
+         << "    set Shape = half-space\n    set Name = floor\n"
+         << "    set Point = 0, 0.25\n    set Normal = 0, 1\n"
+         << "    set Friction = coulomb\n"
+         << "    set Friction coefficient = 0.3\n"
+         << "    subsection Motion\n"
+         << "      set Function expression = 0.02*max(t - 1, 0); 0\n"
+         << "    end\n  end\nend\n"
+         << "subsection Load stepping\n  set Final load factor = 2\n"
+         << "  set Number of steps = 20\nend\n"
+         << "subsection Nonlinear solver\n"
+         << "  set Preconditioner reuse steps = 1\n"
+         << "  set Forcing term = constant\n"
+         << "  set Initial guess = linear predictor\nend\n"
+         << "subsection Output\n  set Interval = 0\n"
+         << "  set Directory = " << options.directory << "\n"
+         << "  set Checkpoint interval = " << options.checkpoint_interval
+         << "\nend\n";
+    ParameterHandler prm;
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(text.str());
+    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    problem.pcout().set_condition(false);
+    problem.initialize(prm);
+    if (options.resume)
+      problem.resume();
+    if (options.forget_tractions)
+      {
+        const unsigned int traction =
+          problem.points().get_layout().offset("contact_floor");
+        for (auto &particle : problem.points().get_particle_handler())
+          for (unsigned int d = 0; d < 2; ++d)
+            particle.get_properties()[traction + d] = 0.;
+      }
+    if (options.stop_after > 0)
+      problem.set_step_callback(
+        [&](const QuasiStaticProblem<2>::StepReport &report) {
+          return report.step < options.stop_after;
+        });
+    problem.run();
+  }
+
+  /// The rows of a reactions.csv (header skipped).
+  std::vector<std::vector<double>>
+  read_csv(const std::string &filename)
+  {
+    std::vector<std::vector<double>> rows;
+    std::ifstream                    file(filename);
+    std::string                      line;
+    std::getline(file, line);
+    while (std::getline(file, line))
+      {
+        std::vector<double> row;
+        std::istringstream  fields(line);
+        std::string         field;
+        while (std::getline(fields, field, ','))
+          row.push_back(std::stod(field));
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  /// Whether the two files have the same steps, and the largest difference
+  /// of their forces relative to the largest force of @p reference.
+  std::pair<bool, double>
+  compare(const std::string &reference, const std::string &other)
+  {
+    const auto a = read_csv(reference), b = read_csv(other);
+    bool       same    = a.size() == b.size() && a.size() == 20;
+    double     largest = 0., difference = 0.;
+    for (const auto &row : a)
+      for (unsigned int j = 2; j < row.size(); ++j)
+        largest = std::max(largest, std::abs(row[j]));
+    for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
+      {
+        same = same && a[i].size() == b[i].size() && a[i][0] == b[i][0];
+        for (unsigned int j = 2; j < std::min(a[i].size(), b[i].size()); ++j)
+          difference = std::max(difference, std::abs(a[i][j] - b[i][j]));
+      }
+    return {same, difference / largest};
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  if (root)
+    for (const std::string d : {"A", "B", "C"})
+      fs::remove_all(d);
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  run({"A", 0, 0, false, false});
+  run({"B", 11, 14, false, false});
+  if (root)
+    {
+      check_that("interrupted run: 14 rows",
+                 read_csv("B/reactions.csv").size() == 14);
+      fs::copy("B", "C", fs::copy_options::recursive);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  run({"B", 11, 0, true, false});
+  run({"C", 11, 0, true, true});
+  if (root)
+    {
+      const auto header = [](const std::string &file) {
+        std::ifstream in(file);
+        std::string   line;
+        std::getline(in, line);
+        return line;
+      };
+      check_that("reactions.csv has the floor's force (floor_Fx, floor_Fy)",
+                 header("A/reactions.csv").find("floor_Fx") !=
+                     std::string::npos &&
+                   header("A/reactions.csv").find("floor_Fy") !=
+                     std::string::npos);
+      const auto resumed = compare("A/reactions.csv", "B/reactions.csv");
+      std::cout << "resumed: max difference / max force " << resumed.second
+                << std::endl;
+      check_that("resumed: the 20 steps of the uninterrupted run",
+                 resumed.first);
+      check("resumed: max |force - uninterrupted| / max |force|",
+            resumed.second,
+            1e-10);
+      const auto forgotten = compare("A/reactions.csv", "C/reactions.csv");
+      std::cout << "tractions forgotten: max difference / max force "
+                << forgotten.second << std::endl;
+      check_at_least("control, tractions set to zero on resume: max "
+                     "|difference| / max |force|",
+                     forgotten.second,
+                     1e-4);
+    }
+}
