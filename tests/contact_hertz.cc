@@ -31,13 +31,18 @@
 // penalty's compliance makes a too large and p0 too small, by an error
 // that falls with h (epsilon = gamma kbar / h).
 //
+// Each run writes the points' pressure, x / a and p / p0, to
+// pressure-<cells>.csv (the picture in doc/contact.md).
+//
 // Checks: at the finest grid (a/h = 14) a_m and the peak pressure within
 // 3 % of Hertz's (the tolerance); both errors fall under each
 // refinement (a/h = 3.5, 7, 14); the cylinder's force equals the base's
 // reaction (global equilibrium) to 1e-6.
 #include "tests.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 
@@ -100,8 +105,9 @@ namespace
 
     // The pressure's moments over the points' contact tractions (a point
     // of the top row stands for the width h / 2 of the surface).
-    const auto &offsets = problem.points().get_offsets();
-    double      force = 0., second_moment = 0., peak = 0.;
+    const auto         &offsets = problem.points().get_offsets();
+    double              force = 0., second_moment = 0., peak = 0.;
+    std::vector<double> profile; // x / a, p / p0 of each point in contact
     for (const auto &particle : problem.points().get_particle_handler())
       {
         const double p = -particle.get_properties()[offsets.contact + 1];
@@ -111,6 +117,20 @@ namespace
         force += p * h / 2.;
         second_moment += p * h / 2. * x * x;
         peak = std::max(peak, p);
+        profile.insert(profile.end(), {x / a, p / p0});
+      }
+    // The pressure profile for the picture in doc/contact.md (rank 0).
+    std::vector<std::pair<double, double>> all;
+    for (const auto &part : Utilities::MPI::gather(MPI_COMM_WORLD, profile))
+      for (unsigned int i = 0; i + 1 < part.size(); i += 2)
+        all.emplace_back(part[i], part[i + 1]);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::sort(all.begin(), all.end());
+        std::ofstream csv("pressure-" + std::to_string(cells) + ".csv");
+        csv << "x_over_a,p_over_p0\n";
+        for (const auto &[x, p] : all)
+          csv << x << ',' << p << '\n';
       }
     force         = Utilities::MPI::sum(force, MPI_COMM_WORLD);
     second_moment = Utilities::MPI::sum(second_moment, MPI_COMM_WORLD);
