@@ -25,6 +25,7 @@
 //
 // The measured differences and the messages of the bad resumes are printed
 // to stdout; the output file holds only PASS/FAIL.
+#include "prm_text.h"
 #include "tests.h"
 
 // The specimen of the example compact_tension (examples/compact_tension/,
@@ -87,13 +88,13 @@ namespace
     prm.nonlinear_solver.preconditioner_reuse_steps = 1;
     prm.nonlinear_solver.initial_guess =
       NewtonParameters::InitialGuess::linear_predictor;
-    prm.nonlinear_solver.forcing = NewtonParameters::Forcing::constant;
-    prm.load_stepping.n_steps             = 40;
-    prm.load_stepping.final_load_factor   = 2e-4;
-    prm.load_stepping.max_cut_backs       = 6;
-    prm.output.directory                  = options.directory;
-    prm.output.interval                   = 0;
-    prm.output.checkpoint_interval        = options.checkpoint_interval;
+    prm.nonlinear_solver.forcing        = NewtonParameters::Forcing::constant;
+    prm.load_stepping.n_steps           = 40;
+    prm.load_stepping.final_load_factor = 2e-4;
+    prm.load_stepping.max_cut_backs     = 6;
+    prm.output.directory                = options.directory;
+    prm.output.interval                 = 0;
+    prm.output.checkpoint_interval      = options.checkpoint_interval;
 
     const unsigned int step = options.resume ? problem.resume() : 0;
     if (options.forget_cracks)
@@ -110,25 +111,6 @@ namespace
         });
     problem.run();
     return step;
-  }
-
-  std::vector<std::vector<double>>
-  read_csv(const std::string &filename)
-  {
-    std::vector<std::vector<double>> rows;
-    std::ifstream                    file(filename);
-    std::string                      line;
-    std::getline(file, line); // header
-    while (std::getline(file, line))
-      {
-        std::vector<double> row;
-        std::istringstream  fields(line);
-        std::string         field;
-        while (std::getline(fields, field, ','))
-          row.push_back(std::stod(field));
-        rows.push_back(row);
-      }
-    return rows;
   }
 
   // Whether the steps of the two files are the same, and the largest

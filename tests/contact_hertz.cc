@@ -38,6 +38,7 @@
 // 3 % of Hertz's (the tolerance); both errors fall under each
 // refinement (a/h = 3.5, 7, 14); the cylinder's force equals the base's
 // reaction (global equilibrium) to 1e-6.
+#include "prm_text.h"
 #include "tests.h"
 
 #include <algorithm>
@@ -86,13 +87,8 @@ namespace
          << "subsection Nonlinear solver\n  set Tolerance = 1e-8\nend\n"
          << "subsection Output\n  set Interval = 0\n"
          << "  set Directory = contact-out\nend\n";
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
+    initialize_from_text(problem, text.str());
     problem.run();
 
     // Hertz's a and p0 for the force of the whole cylinder (twice the half

@@ -21,6 +21,7 @@
 //     history decides the steps until the points slip, after which the
 //     return map puts them at mu p_N again), so that the check above,
 //     six orders of magnitude tighter, can fail.
+#include "prm_text.h"
 #include "tests.h"
 
 #include <filesystem>
@@ -78,13 +79,8 @@ namespace
          << "  set Directory = " << options.directory << "\n"
          << "  set Checkpoint interval = " << options.checkpoint_interval
          << "\nend\n";
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
+    initialize_from_text(problem, text.str());
     if (options.resume)
       problem.resume();
     if (options.forget_tractions)
@@ -101,26 +97,6 @@ namespace
           return report.step < options.stop_after;
         });
     problem.run();
-  }
-
-  /// The rows of a reactions.csv (header skipped).
-  std::vector<std::vector<double>>
-  read_csv(const std::string &filename)
-  {
-    std::vector<std::vector<double>> rows;
-    std::ifstream                    file(filename);
-    std::string                      line;
-    std::getline(file, line);
-    while (std::getline(file, line))
-      {
-        std::vector<double> row;
-        std::istringstream  fields(line);
-        std::string         field;
-        while (std::getline(fields, field, ','))
-          row.push_back(std::stod(field));
-        rows.push_back(row);
-      }
-    return rows;
   }
 
   /// Whether the two files have the same steps, and the largest difference

@@ -31,6 +31,7 @@
 //    exceeds mu (5 sliding steps).
 //
 // Output from rank 0; the results do not depend on the number of ranks.
+#include "prm_text.h"
 #include "tests.h"
 
 #include <cmath>
@@ -103,13 +104,8 @@ namespace
             const double       sigma_yy,
             const double       sigma_xx)
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text);
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
+    initialize_from_text(problem, text);
     PlateResult result;
     try
       {
@@ -193,14 +189,9 @@ namespace
   FloorResult
   run_floor(const std::string &friction, const unsigned int sliding_steps)
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
     // 2 steps of pressing, 200 of sliding (the first slides by 2.5e-4).
-    prm.parse_input_from_string(floor_prm(friction, 202));
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
+    initialize_from_text(problem, floor_prm(friction, 202));
     FloorResult result;
     problem.set_step_callback([&](const StepReport &report) {
       const auto &floor = problem.rigid_body_loads().at(0);

@@ -64,12 +64,12 @@ namespace
     // the comparison is of the preconditioners alone.
     prm.nonlinear_solver.initial_guess =
       NewtonParameters::InitialGuess::linear_predictor;
-    prm.nonlinear_solver.forcing = NewtonParameters::Forcing::constant;
-    prm.load_stepping.n_steps             = 300;
-    prm.load_stepping.final_load_factor   = 3e-4;
-    prm.load_stepping.max_cut_backs       = 6;
-    prm.output.directory                  = "results";
-    prm.output.interval                   = 0;
+    prm.nonlinear_solver.forcing        = NewtonParameters::Forcing::constant;
+    prm.load_stepping.n_steps           = 300;
+    prm.load_stepping.final_load_factor = 3e-4;
+    prm.load_stepping.max_cut_backs     = 6;
+    prm.output.directory                = "results";
+    prm.output.interval                 = 0;
 
     Result result;
     problem.set_step_callback(

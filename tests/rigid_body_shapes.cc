@@ -14,6 +14,7 @@
 //    nu = 0.3, plane strain, cpGIMP) compacted by 1 % by a polygon whose
 //    bottom face y = 1 is wider than the column (the .prm route): every
 //    point's stress within 1 % of the exact uniaxial strain state.
+#include "prm_text.h"
 #include "tests.h"
 
 #include <cmath>
@@ -146,13 +147,8 @@ main(int argc, char **argv)
        << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
        << "subsection Output\n  set Interval = 0\n"
        << "  set Directory = shapes-out\nend\n";
-  ParameterHandler prm;
-  prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-  QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-  prm.parse_input_from_string(text.str());
   QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-  problem.pcout().set_condition(false);
-  problem.initialize(prm);
+  initialize_from_text(problem, text.str());
   problem.run();
   const double sigma_yy = -M * 0.01, sigma_xx = -lambda * 0.01;
   const auto  &offsets = problem.points().get_offsets();

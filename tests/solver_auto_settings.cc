@@ -18,6 +18,7 @@
 //    under the loaded half's edge, below the punch's limit load, about
 //    (2 + pi) 600 / sqrt 3 = 1780): the defaults are the paper's, so the
 //    displacements are bitwise those of the written-out settings.
+#include "prm_text.h"
 #include "tests.h"
 
 #include <qsmpm/core/quasi_static_problem.h>
@@ -70,13 +71,8 @@ namespace
   Run
   run(const std::string &model, const bool paper_settings)
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(strip_prm(model, paper_settings));
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
+    initialize_from_text(problem, strip_prm(model, paper_settings));
     Run result;
     problem.set_step_callback(
       [&](const QuasiStaticProblem<2>::StepReport &report) {
