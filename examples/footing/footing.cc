@@ -98,6 +98,7 @@ namespace Footing
     std::vector<unsigned int> cells           = {8, 16};
     std::vector<std::string>  treatments      = {"F-bar", "none"};
     double                    tolerance       = 0.03;
+    double                    umat_cohesion   = 0.;
     bool                      check           = true;
     std::string               directory       = ".";
     bool                      write_points    = false;
@@ -169,6 +170,12 @@ namespace Footing
                         "Prandtl's (a small-deformation result); false for "
                         "deep penetration, where the pressure keeps rising "
                         "with the embedment.");
+      prm.add_parameter("UMAT cohesion",
+                        umat_cohesion,
+                        "With Material/Model = umat: the cohesion c of the "
+                        "von Mises soil the UMAT models (sigma_y / sqrt(3)), "
+                        "for Prandtl's (2 + pi) c.",
+                        Patterns::Double(0.));
       prm.add_parameter("Output directory", directory);
       prm.add_parameter("Verbose",
                         verbose,
@@ -231,10 +238,24 @@ namespace Footing
           }
         reference.description = "Prandtl, c N_c(phi)";
       }
+    else if (model == "umat")
+      {
+        // A UMAT is a black box: the cohesion of the von Mises (Tresca)
+        // soil it models comes from the footing's own entry.
+        prm.leave_subsection();
+        prm.enter_subsection("Footing");
+        reference.cohesion = prm.get_double("UMAT cohesion");
+        AssertThrow(reference.cohesion > 0.,
+                    ExcMessage("Footing/UMAT cohesion: with Material/Model = "
+                               "umat, give the cohesion c of the UMAT's von "
+                               "Mises soil (sigma_y / sqrt(3))."));
+        reference.bearing_factor = 2. + numbers::PI;
+        reference.description    = "Prandtl, (2 + pi) c, c = UMAT cohesion";
+      }
     else
       AssertThrow(false,
-                  ExcMessage("Footing: the soil model must be <von Mises> or "
-                             "<Drucker-Prager>, not <" +
+                  ExcMessage("Footing: the soil model must be <von Mises>, "
+                             "<Drucker-Prager> or <umat>, not <" +
                              model + ">."));
     prm.leave_subsection();
     return reference;
@@ -557,13 +578,17 @@ namespace Footing
   // @sect4{StripFooting::write_plastic_strain}
   //
   // Position and equivalent plastic strain of every point, gathered on
-  // rank 0 into a CSV file that gnuplot draws as the plastic zone.
+  // rank 0 into a CSV file that gnuplot draws as the plastic zone. With a
+  // UMAT it is STATEV(1), the equivalent plastic strain of the von Mises
+  // UMAT of footing-umat.prm.
   void
   StripFooting::write_plastic_strain(const std::string &file) const
   {
     const auto        &points = problem.points();
-    const unsigned int alpha =
-      points.get_layout().offset("equivalent_plastic_strain");
+    const auto        &layout = points.get_layout();
+    const unsigned int alpha  = layout.offset(
+      layout.has("equivalent_plastic_strain") ? "equivalent_plastic_strain" :
+                                                "umat_statev");
     std::vector<double> local;
     for (const auto &particle : points.get_particle_handler())
       {

@@ -55,6 +55,18 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  ConstitutiveModel<dim>::initialize_point_state(const Point<dim>  &x,
+                                                 const unsigned int material_id,
+                                                 const types::particle_index,
+                                                 ArrayView<double> state) const
+  {
+    initialize_material_state(x, material_id, state);
+  }
+
+
+
+  template <int dim>
   std::vector<StateField>
   ConstitutiveModel<dim>::output_fields() const
   {

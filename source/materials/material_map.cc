@@ -175,13 +175,26 @@ namespace qsmpm
                                               const unsigned int material_id,
                                               ArrayView<double>  state) const
   {
+    initialize_point_state(x, material_id, 0, state);
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialMap<dim>::initialize_point_state(const Point<dim>  &x,
+                                           const unsigned int material_id,
+                                           const types::particle_index id,
+                                           ArrayView<double> state) const
+  {
     const Member &m = member(material_id);
     std::fill(state.begin(), state.end(), 0.);
     std::array<double, max_components> own;
     const unsigned int                 n = m.state_index.size();
-    m.model->initialize_material_state(x,
-                                       material_id,
-                                       ArrayView<double>(own.data(), n));
+    m.model->initialize_point_state(x,
+                                    material_id,
+                                    id,
+                                    ArrayView<double>(own.data(), n));
     for (unsigned int c = 0; c < n; ++c)
       state[m.state_index[c]] = own[c];
   }

@@ -349,6 +349,21 @@ namespace qsmpm
             }
         }
 
+    // The points' ids: consecutive over the ranks, in the order of the
+    // cells (which does not depend on the partition).
+    const MPI_Comm              comm     = grid.get_communicator();
+    const types::particle_index n_local  = new_points.size();
+    types::particle_index       first_id = 0;
+    MPI_Exscan(&n_local,
+               &first_id,
+               1,
+               Utilities::MPI::mpi_type_id_for_type<types::particle_index>,
+               MPI_SUM,
+               comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first_id = 0;
+    first_id += particle_handler.n_global_particles();
+
     // The material ids and the model's initial state of every point. An
     // error here (an id that is not an integer, an id without a model) may
     // arise on some ranks only; all ranks stop with the first rank's
@@ -363,9 +378,10 @@ namespace qsmpm
           {
             NewPoint &p   = new_points[i];
             p.material_id = material_id(p.location);
-            model.initialize_material_state(
+            model.initialize_point_state(
               p.location,
               p.material_id,
+              first_id + i,
               ArrayView<double>(initial_states.data() + i * n_state, n_state));
           }
       }
@@ -375,18 +391,6 @@ namespace qsmpm
       }
     Utils::throw_if_any_rank(error, grid.get_communicator());
 
-    const MPI_Comm              comm     = grid.get_communicator();
-    const types::particle_index n_local  = new_points.size();
-    types::particle_index       first_id = 0;
-    MPI_Exscan(&n_local,
-               &first_id,
-               1,
-               Utilities::MPI::mpi_type_id_for_type<types::particle_index>,
-               MPI_SUM,
-               comm);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      first_id = 0;
-    first_id += particle_handler.n_global_particles();
 
     std::vector<double> properties(layout.size(), 0.);
     for (types::particle_index i = 0; i < n_local; ++i)

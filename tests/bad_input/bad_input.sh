@@ -170,6 +170,12 @@ driver_case selection_unknown "Model" 1 \
   $'subsection Material\n set Model = plasticity\nend'
 driver_case bool_unknown "Plane stress" 1 \
   $'subsection Material\n subsection linear elastic\n  set Plane stress = maybe\n end\nend'
+# An Abaqus UMAT that cannot be loaded (the probe calls' checks of a UMAT
+# that loads are in the test umat_bad_input).
+driver_case umat_no_library "UMAT library" 1 \
+  $'subsection Material\n set Model = umat\nend'
+driver_case umat_missing_library_2_ranks "UMAT library" 2 \
+  $'subsection Material\n set Model = umat\n subsection umat\n  set UMAT library = /no/such/libmodel.so\n end\nend'
 driver_case list_wrong_length "Upper corner" 1 \
   $'subsection Geometry\n set Upper corner = 1,1,1\nend'
 driver_case list_not_a_number "Lower corner" 1 \

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/particles/property_pool.h>
 #include <functional>
 #include <memory>
 #include <qsmpm/materials/point_state.h>
@@ -68,6 +69,20 @@ namespace qsmpm
     initialize_material_state(const Point<dim>  &x,
                               const unsigned int material_id,
                               ArrayView<double>  state) const;
+
+    /**
+     * Initial values of the model's fields for the point with the id
+     * @p id (unique and independent of the number of ranks) and material
+     * id @p material_id created at @p x: what MaterialPointSet calls. The
+     * default calls initialize_material_state(); a model that numbers its
+     * points (the UMAT's NOEL) overrides it, and a MaterialMap passes the
+     * point on to the model of its id.
+     */
+    virtual void
+    initialize_point_state(const Point<dim>           &x,
+                           const unsigned int          material_id,
+                           const types::particle_index id,
+                           ArrayView<double>           state) const;
 
     /**
      * Fields that are written with the points but are not state: functions

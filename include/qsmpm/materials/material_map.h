@@ -70,6 +70,14 @@ namespace qsmpm
                               const unsigned int material_id,
                               ArrayView<double>  state) const override;
 
+    /// The member's initialize_point_state(), gathered like
+    /// initialize_material_state().
+    void
+    initialize_point_state(const Point<dim>           &x,
+                           const unsigned int          material_id,
+                           const types::particle_index id,
+                           ArrayView<double>           state) const override;
+
     std::vector<StateField>
     output_fields() const override;
 

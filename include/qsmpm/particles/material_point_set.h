@@ -157,7 +157,7 @@ namespace qsmpm
     /**
      * As above, with the material id of each point given by @p material_id
      * at the point's position: layers, inclusions, a footing on soil. The
-     * model's initialize_material_state() sees the id.
+     * model's initialize_point_state() sees the id (and the point's id).
      */
     void
     fill(const std::function<bool(const Point<dim> &)>         &inside,
