@@ -74,6 +74,9 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/doc/ DESTINATION share/doc/qsmpm)
 install(FILES ${CMAKE_SOURCE_DIR}/README.md DESTINATION share/doc/qsmpm)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/tests/install_package/
   DESTINATION share/doc/qsmpm/user_model)
+# The example UMATs (Fortran and C) of doc/user_models.md.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/tests/umat/
+  DESTINATION share/doc/qsmpm/umat)
 install(SCRIPT ${CMAKE_SOURCE_DIR}/cmake/install_doc_links.cmake)
 
 # The package. qsmpmConfig.cmake is the same file in the build tree and in

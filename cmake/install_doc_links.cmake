@@ -8,6 +8,7 @@
 ##   P/share/doc/qsmpm/                doc/ and README.md
 ##   P/share/doc/qsmpm/user_model/     tests/install_package/ (the user model
 ##                                     of doc/user_models.md)
+##   P/share/doc/qsmpm/umat/           tests/umat/ (the example UMATs)
 ##   P/share/qsmpm/examples/<name>/    examples/<name>/
 ##   P/include/                        include/
 ##
@@ -32,6 +33,7 @@ foreach(_page ${_qsmpm_pages})
     string(REPLACE "](../examples/" "](../../qsmpm/examples/" _text "${_text}")
     string(REPLACE "](../include/" "](../../../include/" _text "${_text}")
     string(REPLACE "](../tests/install_package/" "](user_model/" _text "${_text}")
+    string(REPLACE "](../tests/umat" "](umat" _text "${_text}")
   endif()
   file(WRITE "${_page}" "${_text}")
 endforeach()
