@@ -13,7 +13,9 @@
 //     it yields (the punch's limit load is about (2 + pi) 600 / sqrt 3 =
 //     1780, the traction reaches 1000 on the loaded half's edge);
 //  3. the same UMAT written in C (umat_von_mises_c.c) against the Fortran
-//     one.
+//     one;
+//  4. a material map: `linear elastic` for y < 0.5, the elastic UMAT for
+//     material id 1 above, against `linear elastic` everywhere.
 //
 // The check: the displacements of all points after every step agree to
 // 1e-10 of the largest. Both runs solve to a Newton tolerance of 1e-13
@@ -39,6 +41,22 @@ namespace
   {
     std::ostringstream m;
     m << "subsection Material\n";
+    if (model == "map")
+      {
+        // Linear elastic below y = 0.5, the elastic UMAT above: its
+        // subsection goes before the "end" that closes Material.
+        std::string text = material("linear elastic");
+        text.insert(text.rfind("end\n"),
+                    "  set Models by material id = 1: umat\n"
+                    "  subsection umat\n"
+                    "    set UMAT library = " +
+                      umat_dir +
+                      "/libumat_elastic.so\n"
+                      "    set Properties = 1e6, 0.3\n"
+                      "  end\n");
+        return text + "subsection Material points\n"
+                      "  set Material id = if(y > 0.5, 1, 0)\nend\n";
+      }
     if (model == "linear elastic" || model == "von Mises")
       {
         m << "  set Model = " << model << "\n  subsection " << model << "\n"
@@ -148,6 +166,9 @@ namespace
     const Curve<dim> elastic = run<dim>("linear elastic");
     check("UMAT elastic (Fortran) vs linear elastic",
           difference(elastic, run<dim>("umat_elastic")),
+          1e-10);
+    check("UMAT elastic for material id 1 only vs linear elastic",
+          difference(elastic, run<dim>("map")),
           1e-10);
     const Curve<dim> plastic = run<dim>("von Mises");
     check_at_least("it yields: von Mises vs linear elastic",
