@@ -391,7 +391,6 @@ namespace qsmpm
       }
     Utils::throw_if_any_rank(error, grid.get_communicator());
 
-
     std::vector<double> properties(layout.size(), 0.);
     for (types::particle_index i = 0; i < n_local; ++i)
       {
