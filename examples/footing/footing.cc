@@ -214,18 +214,20 @@ namespace Footing
         reference.bearing_factor = 2. + numbers::PI;
         reference.description    = "Prandtl, (2 + pi) c, c = sigma_y/sqrt(3)";
       }
-    else if (model == "Drucker-Prager")
+    else if (model == "Drucker-Prager" || model == "Mohr-Coulomb")
       {
-        prm.enter_subsection("Drucker-Prager");
+        prm.enter_subsection(model);
         reference.cohesion = prm.get_double("Cohesion");
         const double phi =
           prm.get_double("Friction angle") * numbers::PI / 180.;
-        AssertThrow(prm.get("Mohr-Coulomb matching") == "plane strain" &&
+        AssertThrow((model == "Mohr-Coulomb" ||
+                     prm.get("Mohr-Coulomb matching") == "plane strain") &&
                       prm.get_double("Dilatancy angle") ==
                         prm.get_double("Friction angle"),
                     ExcMessage("Footing: Prandtl's N_c holds for associated "
-                               "flow (Dilatancy angle = Friction angle) and "
-                               "the plane-strain Mohr-Coulomb matching."));
+                               "flow (Dilatancy angle = Friction angle) and, "
+                               "with Drucker-Prager, the plane-strain "
+                               "Mohr-Coulomb matching."));
         prm.leave_subsection();
         if (phi == 0.)
           reference.bearing_factor = 2. + numbers::PI;
@@ -255,7 +257,8 @@ namespace Footing
     else
       AssertThrow(false,
                   ExcMessage("Footing: the soil model must be <von Mises>, "
-                             "<Drucker-Prager> or <umat>, not <" +
+                             "<Drucker-Prager>, <Mohr-Coulomb> or <umat>, not "
+                             "<" +
                              model + ">."));
     prm.leave_subsection();
     return reference;
