@@ -22,7 +22,11 @@
 // 4. Linear hardening of the cohesion (H = 500) on the triaxial path: the
 //    limit stress of the current cohesion c(alpha) = c0 + H alpha in every
 //    plastic step.
-// 5. Bad parameters: one message each, naming the entry.
+// 5. Finite strain: a stretch F1 from the virgin state gives the return
+//    mapping of the trial elastic strain ln F1 (the exponential map), and
+//    a rigid rotation R of the yielded state gives R tau R^T without a
+//    plastic increment (objectivity).
+// 6. Bad parameters: one message each, naming the entry.
 //
 // Tolerances: the returns are closed form in principal stresses (linear
 // systems), so only round-off remains: 1e-10 relative is far above it
@@ -228,7 +232,64 @@ main()
   deallog << "4. Cohesion hardening on the triaxial path" << std::endl;
   triaxial(30., 10., 500.);
 
-  deallog << "5. Bad parameters" << std::endl;
+  deallog << "5. Finite strain (the exponential map of IsotropicPlasticity)"
+          << std::endl;
+  {
+    const MohrCoulomb<3> model(E, nu, c, 30., 10.);
+    std::vector<double>  state(8, 0.), state_1(8), state_2(8);
+    const Tensor<2, 3>   I = unit_symmetric_tensor<3>();
+    Tensor<2, 3>         F1;
+    F1[0][0] = 0.98;
+    F1[1][1] = 1.004;
+    F1[2][2] = 1.001;
+    const PointState<3>   virgin{SymmetricTensor<2, 3>(),
+                               SymmetricTensor<2, 3>(),
+                               ArrayView<const double>(state),
+                               1.};
+    SymmetricTensor<2, 3> tau_1, tau_2;
+    model.update_kirchhoff_stress(virgin,
+                                  {I, F1, F1},
+                                  tau_1,
+                                  make_array_view(state_1));
+    // A stretch from the virgin state: the trial elastic strain is ln F1.
+    SymmetricTensor<2, 3> ln_F1;
+    for (unsigned int d = 0; d < 3; ++d)
+      ln_F1[d][d] = std::log(F1[d][d]);
+    MohrCoulomb<3>::Return r;
+    model.return_map(ln_F1, 0., false, r);
+    check_that("  the stretch yields", r.increment > 0.);
+    check("  |tau - return map of ln F| / |tau|",
+          (tau_1 - r.stress).norm() / r.stress.norm(),
+          1e-12);
+    // Then a rigid rotation by 30 degrees about (1, 2, 3).
+    Tensor<1, 3> axis({1., 2., 3.});
+    axis /= axis.norm();
+    const double a = M_PI / 6.;
+    Tensor<2, 3> R = std::cos(a) * I +
+                     std::sin(a) * Tensor<2, 3>({{0., -axis[2], axis[1]},
+                                                 {axis[2], 0., -axis[0]},
+                                                 {-axis[1], axis[0], 0.}}) +
+                     (1. - std::cos(a)) * outer_product(axis, axis);
+    const PointState<3> yielded{SymmetricTensor<2, 3>(),
+                                tau_1 / determinant(F1),
+                                ArrayView<const double>(state_1),
+                                1.};
+    model.update_kirchhoff_stress(yielded,
+                                  {F1, R, R * F1},
+                                  tau_2,
+                                  make_array_view(state_2));
+    check(
+      "  rotated: |tau - R tau_1 R^T| / |tau_1|",
+      (Tensor<2, 3>(tau_2) - R * Tensor<2, 3>(tau_1) * transpose(R)).norm() /
+        tau_1.norm(),
+      1e-12);
+    check("  rotated: no plastic increment",
+          IsotropicPlasticity<3>::plastic_increment(
+            ArrayView<const double>(state_2)),
+          0.);
+  }
+
+  deallog << "6. Bad parameters" << std::endl;
   const auto message = [](const std::function<void()> &make) {
     try
       {
