@@ -114,6 +114,24 @@ namespace rotated_block_test
   }
 
   /**
+   * lambda tr(ln F0) I + 2 mu ln F0 for a diagonal F0 and the Lame
+   * constants of E, nu: the Kirchhoff stress of Hencky's model, and the
+   * Cauchy stress of a hypoelastic UMAT given the logarithmic strain (in
+   * 2D the in-plane part of the 3D formula, ln F0_zz = 0).
+   */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  log_strain_stress(const Tensor<2, dim> &F0, const double E, const double nu)
+  {
+    const double            mu     = E / (2. * (1. + nu));
+    const double            lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+    SymmetricTensor<2, dim> ln_U;
+    for (unsigned int d = 0; d < dim; ++d)
+      ln_U[d][d] = std::log(F0[d][d]);
+    return lambda * trace(ln_U) * unit_symmetric_tensor<dim>() + 2. * mu * ln_U;
+  }
+
+  /**
    * The test for the model @p model. @p closed_form is the Cauchy stress the
    * model gives for the stretch F0 applied in one step from the
    * unstressed state.

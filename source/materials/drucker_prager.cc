@@ -4,18 +4,6 @@
 
 namespace qsmpm
 {
-  namespace
-  {
-    std::string
-    to_text(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
-
-
   template <int dim>
   std::pair<double, double>
   DruckerPrager<dim>::matching_coefficients(const double   angle_deg,
@@ -54,28 +42,8 @@ namespace qsmpm
     , c0(cohesion)
     , H(hardening_modulus)
   {
-    AssertThrow(c0 >= 0 && std::isfinite(c0),
-                ExcMessage("Drucker-Prager: the 'Cohesion' must be "
-                           "non-negative (is " +
-                           to_text(c0) + ")."));
-    AssertThrow(friction_angle_deg >= 0 && friction_angle_deg < 90,
-                ExcMessage("Drucker-Prager: the 'Friction angle' must lie "
-                           "in [0, 90) degrees (is " +
-                           to_text(friction_angle_deg) + ")."));
-    AssertThrow(dilatancy_angle_deg >= 0 &&
-                  dilatancy_angle_deg <= friction_angle_deg,
-                ExcMessage("Drucker-Prager: the 'Dilatancy angle' must lie "
-                           "in [0, 'Friction angle'] (is " +
-                           to_text(dilatancy_angle_deg) +
-                           " degrees, the friction angle " +
-                           to_text(friction_angle_deg) + ")."));
-    AssertThrow(H >= 0 && std::isfinite(H),
-                ExcMessage("Drucker-Prager: the 'Hardening modulus' must be "
-                           "non-negative (softening is not supported; is " +
-                           to_text(H) + ")."));
-    AssertThrow(friction_angle_deg > 0 || c0 > 0,
-                ExcMessage("Drucker-Prager: with a zero 'Friction angle' the "
-                           "'Cohesion' must be positive."));
+    check_cohesion_friction(
+      "Drucker-Prager", c0, friction_angle_deg, dilatancy_angle_deg, H);
     const auto f = matching_coefficients(friction_angle_deg, matching);
     eta_f        = f.first;
     xi_c         = f.second;
@@ -111,25 +79,8 @@ namespace qsmpm
   DruckerPrager<dim>::Parameters::add_parameters(ParameterHandler &prm)
   {
     elasticity.add_parameters(prm);
-    prm.add_parameter("Cohesion",
-                      cohesion,
-                      "c0 >= 0: the Mohr-Coulomb cohesion (same unit as "
-                      "Young's modulus).",
-                      Patterns::Double(0.));
-    prm.add_parameter("Friction angle",
-                      friction_angle,
-                      "phi in [0, 90): the friction angle in degrees.",
-                      Patterns::Double(0., 90.));
-    prm.add_parameter("Dilatancy angle",
-                      dilatancy_angle,
-                      "psi in [0, phi]: the dilatancy angle in degrees "
-                      "(psi = phi: associative flow).",
-                      Patterns::Double(0., 90.));
-    prm.add_parameter("Hardening modulus",
-                      hardening_modulus,
-                      "H >= 0: linear hardening of the cohesion, c = c0 + H "
-                      "alpha (0: perfect plasticity).",
-                      Patterns::Double(0.));
+    add_cohesion_friction_parameters(
+      prm, cohesion, friction_angle, dilatancy_angle, hardening_modulus);
     Utils::add_selection<Matching>(
       prm,
       "Mohr-Coulomb matching",

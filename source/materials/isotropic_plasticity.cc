@@ -4,9 +4,90 @@
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/materials/isotropic_plasticity.h>
 #include <qsmpm/materials/linear_elastic.h>
+#include <sstream>
 
 namespace qsmpm
 {
+  namespace
+  {
+    std::string
+    to_text(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  add_cohesion_friction_parameters(ParameterHandler &prm,
+                                   double           &cohesion,
+                                   double           &friction_angle,
+                                   double           &dilatancy_angle,
+                                   double           &hardening_modulus)
+  {
+    prm.add_parameter("Cohesion",
+                      cohesion,
+                      "c0 >= 0: the Mohr-Coulomb cohesion (same unit as "
+                      "Young's modulus).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Friction angle",
+                      friction_angle,
+                      "phi in [0, 90): the friction angle in degrees.",
+                      Patterns::Double(0., 90.));
+    prm.add_parameter("Dilatancy angle",
+                      dilatancy_angle,
+                      "psi in [0, phi]: the dilatancy angle in degrees "
+                      "(psi = phi: associative flow).",
+                      Patterns::Double(0., 90.));
+    prm.add_parameter("Hardening modulus",
+                      hardening_modulus,
+                      "H >= 0: linear hardening of the cohesion, c = c0 + H "
+                      "alpha (0: perfect plasticity).",
+                      Patterns::Double(0.));
+  }
+
+
+
+  void
+  check_cohesion_friction(const std::string &model,
+                          const double       c0,
+                          const double       friction_angle_deg,
+                          const double       dilatancy_angle_deg,
+                          const double       H)
+  {
+    AssertThrow(c0 >= 0 && std::isfinite(c0),
+                ExcMessage(model +
+                           ": the 'Cohesion' must be non-negative (is " +
+                           to_text(c0) + ")."));
+    AssertThrow(friction_angle_deg >= 0 && friction_angle_deg < 90,
+                ExcMessage(model +
+                           ": the 'Friction angle' must lie in [0, 90) "
+                           "degrees (is " +
+                           to_text(friction_angle_deg) + ")."));
+    AssertThrow(dilatancy_angle_deg >= 0 &&
+                  dilatancy_angle_deg <= friction_angle_deg,
+                ExcMessage(model +
+                           ": the 'Dilatancy angle' must lie in [0, "
+                           "'Friction angle'] (is " +
+                           to_text(dilatancy_angle_deg) +
+                           " degrees, the friction angle " +
+                           to_text(friction_angle_deg) + ")."));
+    AssertThrow(H >= 0 && std::isfinite(H),
+                ExcMessage(model +
+                           ": the 'Hardening modulus' must be non-negative "
+                           "(softening is not supported; is " +
+                           to_text(H) + ")."));
+    AssertThrow(friction_angle_deg > 0 || c0 > 0,
+                ExcMessage(model +
+                           ": with a zero 'Friction angle' the 'Cohesion' "
+                           "must be positive."));
+  }
+
+
+
   namespace
   {
     // Offsets in the state: elastic strain (6), alpha, increment.

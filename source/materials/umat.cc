@@ -204,6 +204,35 @@ namespace qsmpm
 
 
 
+  namespace
+  {
+    /// Delta R and ln(Delta V) of Delta F = Delta V Delta R (3x3), or
+    /// false if det(Delta F) is not positive.
+    bool
+    polar_log(const Tensor<2, 3>    &f,
+              Tensor<2, 3>          &R,
+              SymmetricTensor<2, 3> &log_V)
+    {
+      const double j = determinant(f);
+      if (!(j > 0.) || !std::isfinite(j))
+        return false;
+      const auto eig =
+        TensorFunctions::eigen_decomposition(symmetrize(f * transpose(f)));
+      SymmetricTensor<2, 3> V_inv;
+      log_V = SymmetricTensor<2, 3>();
+      for (const auto &[lambda, n] : eig)
+        {
+          const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
+          log_V += 0.5 * std::log(lambda) * nn;
+          V_inv += (1. / std::sqrt(lambda)) * nn;
+        }
+      R = V_inv * f;
+      return true;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Umat<dim>::prepare(const PointState<dim> &old,
@@ -236,6 +265,51 @@ namespace qsmpm
     call.noel   = static_cast<int>(state[noel_offset]);
     call.pnewdt = 1e36;
     std::fill(std::begin(call.ddsdde), std::end(call.ddsdde), 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  Umat<dim>::prepare_small_strain(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment,
+    Call                          &call,
+    double                        *statev) const
+  {
+    const Tensor<2, 3> I = unit_symmetric_tensor<3>();
+    prepare(old, I, call, statev);
+    SymmetricTensor<2, 3> de;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        de[i][j] = strain_increment[i][j];
+    to_voigt(de, n_tensor, true, call.dstran);
+    write_matrix(I, call.drot);
+    write_matrix(I, call.dfgrd0);
+    write_matrix(I, call.dfgrd1);
+  }
+
+
+
+  template <int dim>
+  bool
+  Umat<dim>::prepare_finite_strain(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    Call                              &call,
+    double                            *statev) const
+  {
+    Tensor<2, 3>          R;
+    SymmetricTensor<2, 3> log_V;
+    if (!(determinant(kinematics.F) > 0.) ||
+        !polar_log(embed(kinematics.delta_F), R, log_V))
+      return false;
+    prepare(old, R, call, statev);
+    to_voigt(log_V, n_tensor, true, call.dstran);
+    write_matrix(R, call.drot);
+    write_matrix(embed(kinematics.F_old), call.dfgrd0);
+    write_matrix(embed(kinematics.F), call.dfgrd1);
+    return true;
   }
 
 
@@ -357,16 +431,7 @@ namespace qsmpm
   {
     Call call;
     std::copy(old.state.begin(), old.state.end(), new_state.begin());
-    prepare(old, unit_symmetric_tensor<3>(), call, new_state.data());
-    SymmetricTensor<2, 3> de;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        de[i][j] = strain_increment[i][j];
-    to_voigt(de, n_tensor, true, call.dstran);
-    const Tensor<2, 3> I = unit_symmetric_tensor<3>();
-    write_matrix(I, call.drot);
-    write_matrix(I, call.dfgrd0);
-    write_matrix(I, call.dfgrd1);
+    prepare_small_strain(old, strain_increment, call, new_state.data());
 
     if (!invoke(call, new_state.data(), old))
       {
@@ -395,16 +460,7 @@ namespace qsmpm
     thread_local std::vector<double> statev;
     statev.resize(parameters.n_state_variables);
     Call call;
-    prepare(old, unit_symmetric_tensor<3>(), call, statev.data());
-    SymmetricTensor<2, 3> de;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        de[i][j] = strain_increment[i][j];
-    to_voigt(de, n_tensor, true, call.dstran);
-    const Tensor<2, 3> I = unit_symmetric_tensor<3>();
-    write_matrix(I, call.drot);
-    write_matrix(I, call.dfgrd0);
-    write_matrix(I, call.dfgrd1);
+    prepare_small_strain(old, strain_increment, call, statev.data());
     invoke(call, statev.data(), old);
 
     const SymmetricTensor<4, 3> C3 = ddsdde_tensor(call);
@@ -437,35 +493,6 @@ namespace qsmpm
 
 
 
-  namespace
-  {
-    /// Delta R and ln(Delta V) of Delta F = Delta V Delta R (3x3), or
-    /// false if det(Delta F) is not positive.
-    bool
-    polar_log(const Tensor<2, 3>    &f,
-              Tensor<2, 3>          &R,
-              SymmetricTensor<2, 3> &log_V)
-    {
-      const double j = determinant(f);
-      if (!(j > 0.) || !std::isfinite(j))
-        return false;
-      const auto eig =
-        TensorFunctions::eigen_decomposition(symmetrize(f * transpose(f)));
-      SymmetricTensor<2, 3> V_inv;
-      log_V = SymmetricTensor<2, 3>();
-      for (const auto &[lambda, n] : eig)
-        {
-          const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
-          log_V += 0.5 * std::log(lambda) * nn;
-          V_inv += (1. / std::sqrt(lambda)) * nn;
-        }
-      R = V_inv * f;
-      return true;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   Umat<dim>::update_kirchhoff_stress(
@@ -474,22 +501,15 @@ namespace qsmpm
     SymmetricTensor<2, dim>           &tau,
     ArrayView<double>                  new_state) const
   {
-    const double          nan = std::numeric_limits<double>::quiet_NaN();
-    const double          J   = determinant(kinematics.F);
-    Tensor<2, 3>          R;
-    SymmetricTensor<2, 3> log_V;
-    if (!(J > 0.) || !polar_log(embed(kinematics.delta_F), R, log_V))
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double J   = determinant(kinematics.F);
+    Call         call;
+    std::copy(old.state.begin(), old.state.end(), new_state.begin());
+    if (!prepare_finite_strain(old, kinematics, call, new_state.data()))
       {
         tau = nan * unit_symmetric_tensor<dim>();
         return;
       }
-    Call call;
-    std::copy(old.state.begin(), old.state.end(), new_state.begin());
-    prepare(old, R, call, new_state.data());
-    to_voigt(log_V, n_tensor, true, call.dstran);
-    write_matrix(R, call.drot);
-    write_matrix(embed(kinematics.F_old), call.dfgrd0);
-    write_matrix(embed(kinematics.F), call.dfgrd1);
     if (!invoke(call, new_state.data(), old))
       {
         tau = nan * unit_symmetric_tensor<dim>();
@@ -511,20 +531,13 @@ namespace qsmpm
     const PointState<dim>             &old,
     const FiniteStrainKinematics<dim> &kinematics) const
   {
-    Tensor<4, dim>        c;
-    const double          J = determinant(kinematics.F);
-    Tensor<2, 3>          R;
-    SymmetricTensor<2, 3> log_V;
-    if (!(J > 0.) || !polar_log(embed(kinematics.delta_F), R, log_V))
-      return c;
+    Tensor<4, dim>                   c;
+    const double                     J = determinant(kinematics.F);
     thread_local std::vector<double> statev;
     statev.resize(parameters.n_state_variables);
     Call call;
-    prepare(old, R, call, statev.data());
-    to_voigt(log_V, n_tensor, true, call.dstran);
-    write_matrix(R, call.drot);
-    write_matrix(embed(kinematics.F_old), call.dfgrd0);
-    write_matrix(embed(kinematics.F), call.dfgrd1);
+    if (!prepare_finite_strain(old, kinematics, call, statev.data()))
+      return c;
     invoke(call, statev.data(), old);
 
     const SymmetricTensor<4, 3> D = ddsdde_tensor(call);
@@ -574,14 +587,10 @@ namespace qsmpm
       {
         std::vector<double> statev(parameters.n_state_variables + guard, 0.);
         Call                call;
-        prepare(initial, unit_symmetric_tensor<3>(), call, statev.data());
-        std::fill(std::begin(call.dstran), std::end(call.dstran), 0.);
-        call.dstran[3]       = increment;
-        const Tensor<2, 3> I = unit_symmetric_tensor<3>();
-        write_matrix(I, call.drot);
-        write_matrix(I, call.dfgrd0);
-        write_matrix(I, call.dfgrd1);
-
+        // The shear as engineering strain gamma_xy = 2 eps_xy.
+        SymmetricTensor<2, dim> shear_strain;
+        shear_strain[0][1] = 0.5 * increment;
+        prepare_small_strain(initial, shear_strain, call, statev.data());
         raw_call(call, statev.data(), props.data());
 
         for (unsigned int k = parameters.n_state_variables; k < statev.size();

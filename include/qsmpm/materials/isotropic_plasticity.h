@@ -6,6 +6,31 @@
 namespace qsmpm
 {
   /**
+   * The strength entries of the cohesive-frictional models (DruckerPrager,
+   * MohrCoulomb): "Cohesion", "Friction angle", "Dilatancy angle" and
+   * "Hardening modulus", bound to the given members.
+   */
+  void
+  add_cohesion_friction_parameters(ParameterHandler &prm,
+                                   double           &cohesion,
+                                   double           &friction_angle,
+                                   double           &dilatancy_angle,
+                                   double           &hardening_modulus);
+
+  /**
+   * Throws, with a message naming @p model and the entry, unless c0 >= 0,
+   * 0 <= psi <= phi < 90 (degrees), H >= 0, and phi > 0 or c0 > 0.
+   */
+  void
+  check_cohesion_friction(const std::string &model,
+                          const double       c0,
+                          const double       friction_angle_deg,
+                          const double       dilatancy_angle_deg,
+                          const double       H);
+
+
+
+  /**
    * What the isotropic elastoplastic models (VonMises, DruckerPrager) share:
    * isotropic linear elasticity (E, nu) between the stress and the elastic
    * strain, the per-point state, the small-strain and the finite-strain

@@ -192,6 +192,22 @@ namespace qsmpm
             Call                  &call,
             double                *statev) const;
 
+    /// prepare() without rotation, DSTRAN from @p strain_increment, DROT,
+    /// DFGRD0 and DFGRD1 the identity.
+    void
+    prepare_small_strain(const PointState<dim>         &old,
+                         const SymmetricTensor<2, dim> &strain_increment,
+                         Call                          &call,
+                         double                        *statev) const;
+
+    /// prepare() for the finite-strain step @p kinematics (see the class
+    /// documentation); false if det F or det Delta F is not positive.
+    bool
+    prepare_finite_strain(const PointState<dim>             &old,
+                          const FiniteStrainKinematics<dim> &kinematics,
+                          Call                              &call,
+                          double                            *statev) const;
+
     /// Call the UMAT with the properties @p props.
     void
     raw_call(Call &call, double *statev, double *props) const;
