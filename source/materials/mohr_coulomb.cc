@@ -180,6 +180,14 @@ namespace qsmpm
     const double p_trial   = (s[0] + s[1] + s[2]) / 3.;
     const double d_eps_v =
       (p_trial - c * cot_phi) / (K + H * cos_phi * cot_phi / sin_psi_a);
+    // The apex lies beyond the edges only in tension (p_trial above the
+    // apex); a trial state below it that got here (the edge return missed
+    // its checks by round-off) keeps the edge return.
+    if (!(d_eps_v > 0.))
+      {
+        s = t;
+        return 2. * cos_phi * std::max(g1 + g2, 0.);
+      }
     const double p = p_trial - K * d_eps_v;
     s              = {{p, p, p}};
     return cos_phi / sin_psi_a * d_eps_v;
