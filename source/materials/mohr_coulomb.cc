@@ -137,7 +137,7 @@ namespace qsmpm
     const double scale =
       std::abs(s[0] - s[2]) + std::abs(s[0] + s[2]) + 2. * c * cos_phi;
     if (!(phi_trial > 1e-13 * scale))
-      return 0.;
+      return -1.;
     const double tolerance = 1e-12 * scale;
     const auto   ordered   = [&](const Vector3 &t) {
       return t[0] >= t[1] - tolerance && t[1] >= t[2] - tolerance;
@@ -206,9 +206,9 @@ namespace qsmpm
     const auto                  eig   = principal(trial);
     Vector3                     s{{eig[0].first, eig[1].first, eig[2].first}};
     const double                d_alpha = principal_return(s, alpha_old);
-    r.alpha                             = alpha_old + d_alpha;
-    r.increment                         = d_alpha;
-    if (!(d_alpha > 0.))
+    r.alpha                             = alpha_old + std::max(d_alpha, 0.);
+    r.increment                         = std::max(d_alpha, 0.);
+    if (d_alpha < 0.)
       {
         r.stress         = trial;
         r.elastic_strain = trial_elastic_strain;
@@ -236,7 +236,7 @@ namespace qsmpm
     return_stress(trial_elastic_strain, alpha_old, r);
     if (!want_tangent)
       return;
-    if (!(r.increment > 0.))
+    if (r.stress == this->D * trial_elastic_strain)
       {
         r.tangent = this->D;
         return;

@@ -130,7 +130,7 @@ namespace qsmpm
     /**
      * The return in principal stresses: from the trial principal stresses
      * @p s (descending) to the returned ones; returns the increment of
-     * alpha.
+     * alpha, or -1 if the trial state is admissible (@p s unchanged).
      */
     double
     principal_return(std::array<double, 3> &s, const double alpha_old) const;
