@@ -74,9 +74,12 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/doc/ DESTINATION share/doc/qsmpm)
 install(FILES ${CMAKE_SOURCE_DIR}/README.md DESTINATION share/doc/qsmpm)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/tests/install_package/
   DESTINATION share/doc/qsmpm/user_model)
-# The example UMATs (Fortran and C) of doc/user_models.md.
+# The example UMATs (Fortran and C) of doc/user_models.md, and the one of
+# footing-umat.prm beside it.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/tests/umat/
   DESTINATION share/doc/qsmpm/umat)
+install(FILES ${CMAKE_SOURCE_DIR}/tests/umat/umat_von_mises.f
+  DESTINATION share/qsmpm/examples/footing)
 install(SCRIPT ${CMAKE_SOURCE_DIR}/cmake/install_doc_links.cmake)
 
 # The package. qsmpmConfig.cmake is the same file in the build tree and in
