@@ -3,7 +3,9 @@
 #ifndef qsmpm_tests_prm_text_h
 #define qsmpm_tests_prm_text_h
 
+#include <deal.II/base/mpi.h>
 #include <fstream>
+#include <map>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <sstream>
 #include <string>
@@ -27,6 +29,31 @@ namespace qsmpm_tests
     prm.parse_input_from_string(text);
     problem.pcout().set_condition(false);
     problem.initialize(prm);
+  }
+
+  /// The displacements of all points (of all ranks of @p communicator,
+  /// the problem's) by particle id.
+  template <int dim>
+  std::map<dealii::types::particle_index, dealii::Tensor<1, dim>>
+  point_displacements(const qsmpm::QuasiStaticProblem<dim> &problem,
+                      const MPI_Comm communicator = MPI_COMM_WORLD)
+  {
+    const auto         &offsets = problem.points().get_offsets();
+    std::vector<double> local;
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        local.push_back(particle.get_id());
+        for (unsigned int d = 0; d < dim; ++d)
+          local.push_back(particle.get_properties()[offsets.displacement + d]);
+      }
+    std::map<dealii::types::particle_index, dealii::Tensor<1, dim>> u;
+    for (const auto &part :
+         dealii::Utilities::MPI::all_gather(communicator, local))
+      for (unsigned int i = 0; i + dim + 1 <= part.size(); i += dim + 1)
+        for (unsigned int d = 0; d < dim; ++d)
+          u[static_cast<dealii::types::particle_index>(part[i])][d] =
+            part[i + 1 + d];
+    return u;
   }
 
   /// The rows of a CSV file of numbers (its header line skipped).

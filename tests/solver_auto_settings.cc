@@ -80,18 +80,7 @@ namespace
         return true;
       });
     problem.run();
-    const auto         &offsets = problem.points().get_offsets();
-    std::vector<double> local;
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        local.push_back(particle.get_id());
-        for (unsigned int d = 0; d < 2; ++d)
-          local.push_back(particle.get_properties()[offsets.displacement + d]);
-      }
-    for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
-      for (unsigned int i = 0; i + 3 <= part.size(); i += 3)
-        result.displacement[static_cast<types::particle_index>(part[i])] =
-          Tensor<1, 2>({part[i + 1], part[i + 2]});
+    result.displacement = point_displacements(problem);
     return result;
   }
 

@@ -88,18 +88,6 @@ namespace
     return prm.str();
   }
 
-  /// The points' displacements by id.
-  std::map<types::particle_index, Tensor<1, 2>>
-  displacements(const QuasiStaticProblem<2> &problem)
-  {
-    const auto &offsets = problem.points().get_offsets();
-    std::map<types::particle_index, Tensor<1, 2>> u;
-    for (const auto &particle : problem.points().get_particle_handler())
-      for (unsigned int d = 0; d < 2; ++d)
-        u[particle.get_id()][d] =
-          particle.get_properties()[offsets.displacement + d];
-    return u;
-  }
 } // namespace
 
 int
@@ -162,8 +150,9 @@ main(int argc, char **argv)
     QuasiStaticProblem<2> reference(MPI_COMM_WORLD);
     initialize_from_text(reference, strip_prm("", reports.size()));
     reference.run();
-    const auto u = displacements(problem), u_ref = displacements(reference);
-    double     largest = 0., diff = 0.;
+    const auto u     = point_displacements(problem),
+               u_ref = point_displacements(reference);
+    double largest = 0., diff = 0.;
     for (const auto &[id, v] : u_ref)
       {
         largest = std::max(largest, v.norm());

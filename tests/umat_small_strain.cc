@@ -107,26 +107,6 @@ namespace
   using Curve = std::vector<std::map<types::particle_index, Tensor<1, dim>>>;
 
   template <int dim>
-  std::map<types::particle_index, Tensor<1, dim>>
-  displacements(const QuasiStaticProblem<dim> &problem)
-  {
-    const auto         &offsets = problem.points().get_offsets();
-    std::vector<double> local;
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        local.push_back(particle.get_id());
-        for (unsigned int d = 0; d < dim; ++d)
-          local.push_back(particle.get_properties()[offsets.displacement + d]);
-      }
-    std::map<types::particle_index, Tensor<1, dim>> u;
-    for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
-      for (unsigned int i = 0; i + dim + 1 <= part.size(); i += dim + 1)
-        for (unsigned int d = 0; d < dim; ++d)
-          u[static_cast<types::particle_index>(part[i])][d] = part[i + 1 + d];
-    return u;
-  }
-
-  template <int dim>
   Curve<dim>
   run(const std::string &model)
   {
@@ -135,7 +115,7 @@ namespace
     Curve<dim> curve;
     problem.set_step_callback(
       [&](const typename QuasiStaticProblem<dim>::StepReport &) {
-        curve.push_back(displacements(problem));
+        curve.push_back(point_displacements(problem));
         return true;
       });
     problem.run();

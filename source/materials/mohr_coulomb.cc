@@ -196,7 +196,7 @@ namespace qsmpm
 
 
   template <int dim>
-  void
+  bool
   MohrCoulomb<dim>::return_stress(
     const SymmetricTensor<2, 3> &trial_elastic_strain,
     const double                 alpha_old,
@@ -212,7 +212,7 @@ namespace qsmpm
       {
         r.stress         = trial;
         r.elastic_strain = trial_elastic_strain;
-        return;
+        return false;
       }
     r.stress = SymmetricTensor<2, 3>();
     for (unsigned int a = 0; a < 3; ++a)
@@ -221,6 +221,7 @@ namespace qsmpm
     const double G = this->mu, K = this->K;
     r.elastic_strain = deviator(r.stress) / (2. * G) +
                        trace(r.stress) / (9. * K) * unit_symmetric_tensor<3>();
+    return true;
   }
 
 
@@ -233,10 +234,10 @@ namespace qsmpm
     const bool                   want_tangent,
     Return                      &r) const
   {
-    return_stress(trial_elastic_strain, alpha_old, r);
+    const bool plastic = return_stress(trial_elastic_strain, alpha_old, r);
     if (!want_tangent)
       return;
-    if (r.stress == this->D * trial_elastic_strain)
+    if (!plastic)
       {
         r.tangent = this->D;
         return;

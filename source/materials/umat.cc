@@ -402,6 +402,7 @@ namespace qsmpm
     if (dim == 2)
       new_state[stress_zz_offset] = call.stress[2];
     std::copy(call.energy, call.energy + 3, &new_state[energy_offset]);
+    new_state[noel_offset] = call.noel;
   }
 
 
@@ -430,7 +431,6 @@ namespace qsmpm
                            ArrayView<double>              new_state) const
   {
     Call call;
-    std::copy(old.state.begin(), old.state.end(), new_state.begin());
     prepare_small_strain(old, strain_increment, call, new_state.data());
 
     if (!invoke(call, new_state.data(), old))
@@ -504,7 +504,6 @@ namespace qsmpm
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double J   = determinant(kinematics.F);
     Call         call;
-    std::copy(old.state.begin(), old.state.end(), new_state.begin());
     if (!prepare_finite_strain(old, kinematics, call, new_state.data()))
       {
         tau = nan * unit_symmetric_tensor<dim>();

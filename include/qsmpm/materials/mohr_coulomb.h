@@ -121,8 +121,8 @@ namespace qsmpm
                    const double                 alpha) const override;
 
   private:
-    /// The return mapping without the tangent.
-    void
+    /// The return mapping without the tangent; whether it was plastic.
+    bool
     return_stress(const SymmetricTensor<2, 3> &trial_elastic_strain,
                   const double                 alpha_old,
                   Return                      &r) const;

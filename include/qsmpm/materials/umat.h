@@ -218,7 +218,8 @@ namespace qsmpm
     invoke(Call &call, double *statev, const PointState<dim> &old) const;
 
     /// Write the result of @p call into the model's fields @p new_state
-    /// (besides STATEV, which the UMAT wrote in place).
+    /// (STRAN, the out-of-plane stress, the energies and NOEL; STATEV the
+    /// UMAT wrote there in place, from prepare()'s copy).
     void
     store(const Call &call, ArrayView<double> new_state) const;
 
