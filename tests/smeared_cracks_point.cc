@@ -60,6 +60,15 @@
 //      sigma = E / (2 (1 - nu)) tr(eps) I, to 1e-12;
 //    - Failed points = keep cracks: the stretch along t is carried,
 //      sigma_tt = E eps_tt (the stress that locks an inclined band).
+// 9. Softening = bilinear (Petersson 1981): the uniaxial pull along 0 and
+//    30 degrees to complete failure. The opening w = L (e - sigma_nn / E')
+//    (sigma_nn = E' (e - w / L) for a crack normal to the pull) and the
+//    traction sigma_nn follow Petersson's law T(w) = tau_nf (1 - 2/3 w /
+//    w_1) up to w_1 = 0.8 G_f / tau_nf, then tau_nf / 3 (w_c - w) / (w_c -
+//    w_1) to w_c = 3.6 G_f / tau_nf, to 1e-3 tau_nf at every increment
+//    past the peak (the initial branch of the model, w_e = tau_nf / K_0 =
+//    1e-6 here, shifts the law by about w_e / w_1 = 2.5e-4); the work and
+//    the dissipation up to failure are G_f / L to 1e-3 and 1e-6 as in 1.
 // 6. Bad entries: Maximum cracks per point = 3 in 2D and Threshold angle =
 //    0 stop with a message naming the entry.
 #include "tests.h"
@@ -432,4 +441,50 @@ main()
       check_that("  " + entry + ": stops naming the entry",
                  message.find(entry) != std::string::npos);
     }
+
+  deallog << "9. Softening = bilinear" << std::endl;
+  {
+    auto p_bilinear      = parameters();
+    p_bilinear.softening = SmearedCracks<2>::Softening::bilinear;
+    const SmearedCracks<2> bilinear(p_bilinear);
+    const double           w_1 = 0.8 * G_f / tau, w_c = 3.6 * G_f / tau;
+    const auto             petersson = [&](const double w) {
+      return w < w_1 ? tau * (1. - 2. / 3. * w / w_1) :
+                                   std::max(0., tau / 3. * (w_c - w) / (w_c - w_1));
+    };
+    for (const double theta : {0., 30.})
+      {
+        MaterialPoint p      = make_point(bilinear);
+        const auto [nn, tt]  = directions(theta);
+        const double L       = h * (std::abs(std::cos(theta * M_PI / 180.)) +
+                              std::abs(std::sin(theta * M_PI / 180.)));
+        const double E_plane = E / (1. - nu * nu);
+        const double e_peak  = 1.5 * tau / E_plane;
+        const double e_end   = 1.2 * w_c / L;
+        double       worst = 0., e = 0., sigma_max = 0.;
+        for (unsigned int i = 0; i < 4000; ++i)
+          {
+            const double de =
+              i < 1000 ? e_peak / 1000. : (e_end - e_peak) / 3000.;
+            step(bilinear, p, pull(p, theta, de));
+            e += de;
+            const double sigma_nn = p.stress * nn;
+            sigma_max             = std::max(sigma_max, sigma_nn);
+            if (i >= 1000)
+              worst =
+                std::max(worst,
+                         std::abs(sigma_nn -
+                                  petersson(L * (e - sigma_nn / E_plane))));
+          }
+        const std::string at = "  theta = " + std::to_string(int(theta)) + ": ";
+        check(at + "|peak sigma_nn - tau_nf|", sigma_max - tau, 2e-3);
+        check(at + "max |sigma_nn - T_Petersson(w)| / tau_nf past the peak",
+              worst / tau,
+              1e-3);
+        check(at + "|work / (G_f / L) - 1|", p.work / (G_f / L) - 1., 1e-3);
+        check(at + "|dissipation / (G_f / L) - 1|",
+              p.dissipated / (G_f / L) - 1.,
+              1e-6);
+      }
+  }
 }

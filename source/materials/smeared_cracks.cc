@@ -81,7 +81,8 @@ namespace qsmpm
         parameters.elastic.plane_stress))
     , tau_nf(parameters.tensile_strength)
     , G_f(parameters.fracture_energy)
-    , delta_0(2. * parameters.fracture_energy / parameters.tensile_strength)
+    , delta_0((parameters.softening == Softening::bilinear ? 3.6 : 2.) *
+              parameters.fracture_energy / parameters.tensile_strength)
     , band_width(parameters.crack_band_width)
     , max_cracks(parameters.max_cracks)
     , cos_threshold(std::cos(parameters.threshold_angle * M_PI / 180.))
@@ -91,6 +92,7 @@ namespace qsmpm
     , integration(parameters.integration)
     , smearing(parameters.smearing)
     , failed_points(parameters.failed)
+    , softening(parameters.softening)
     , M(C[0][0][0][0])
     , bulk(C[0][0][1][1] + 2. * C[0][1][0][1] / dim)
     , compliance(invert(C))
@@ -119,18 +121,20 @@ namespace qsmpm
     const double L_max =
       band_width *
       (smearing == SmearingLength::projection ? std::sqrt(double(dim)) : 1.);
+    // The steepest part of the branch is its first one.
     const double slope =
-      tau_nf / (delta_0 - tau_nf / initial_stiffness(L_max)); // -dT/d delta
+      -softening_slope(tau_nf / initial_stiffness(L_max), L_max);
     if (!(slope < M / L_max))
       {
         std::ostringstream message;
         message << "smeared cracks: the softening branch is locally unstable: "
                    "the crack band width h = "
                 << band_width
-                << " must be smaller than about M delta_0 / tau_nf = "
-                << M * delta_0 / tau_nf << " (M = lambda + 2 mu = " << M
-                << ", delta_0 = 2 G_f / tau_nf = " << delta_0
-                << "). Refine the grid or check E, tau_nf, G_f.";
+                << " must be smaller than about M / |dT/d delta| = "
+                << M / slope * band_width / L_max
+                << " (M = lambda + 2 mu = " << M << ", |dT/d delta| = " << slope
+                << " the steepest softening slope). Refine the grid or check "
+                   "E, tau_nf, G_f.";
         AssertThrow(false, ExcMessage(message.str()));
       }
   }
@@ -159,8 +163,20 @@ namespace qsmpm
                       fracture_energy,
                       "G_f: the energy a crack dissipates per unit area, in "
                       "opening and in slip alike (the area under the "
-                      "softening law; delta_0 = 2 G_f / tau_nf).",
+                      "softening law; delta_0 = 2 G_f / tau_nf for the "
+                      "linear law, 3.6 G_f / tau_nf for the bilinear).",
                       Patterns::Double(0.));
+    Utils::add_selection<Softening>(
+      prm,
+      "Softening",
+      softening,
+      {{"linear", Softening::linear}, {"bilinear", Softening::bilinear}},
+      "The softening branch of the cohesive law T(delta), both with the area "
+      "G_f. linear: from tau_nf straight to zero at delta_0 = 2 G_f / "
+      "tau_nf. bilinear: Petersson's law for concrete (1981; CEB-FIP Model "
+      "Code 1990): from tau_nf to tau_nf / 3 at 0.8 G_f / tau_nf, then to "
+      "zero at 3.6 G_f / tau_nf; a steep drop and a long tail, as concrete "
+      "shows, and lower peak loads than the linear law at the same G_f.");
     prm.add_parameter("Crack band width",
                       crack_band_width,
                       "h: the cell size of the background grid (the width "
@@ -400,17 +416,57 @@ namespace qsmpm
 
 
   template <int dim>
+  unsigned int
+  SmearedCracks<dim>::softening_corners(
+    const double                          L,
+    std::array<std::array<double, 2>, 3> &corners) const
+  {
+    const double delta_e = tau_nf / initial_stiffness(L);
+    corners[0]           = {{delta_e, tau_nf}};
+    if (softening == Softening::linear)
+      {
+        corners[1] = {{delta_0, 0.}};
+        return 2;
+      }
+    // The kink of Petersson's law, moved by delta_e / 3 so that the area
+    // under T, initial branch included, is G_f exactly:
+    // 1/2 tau delta_e + 2/3 tau (delta_k - delta_e) + 1/6 tau (delta_0 -
+    // delta_k) = G_f with delta_0 = 3.6 G_f / tau.
+    corners[1] = {{0.8 * G_f / tau_nf + delta_e / 3., tau_nf / 3.}};
+    corners[2] = {{delta_0, 0.}};
+    return 3;
+  }
+
+
+
+  template <int dim>
   double
   SmearedCracks<dim>::cohesive_traction(const double delta,
                                         const double L) const
   {
-    const double K0      = initial_stiffness(L);
-    const double delta_e = tau_nf / K0;
-    if (delta <= delta_e)
-      return K0 * delta;
-    if (delta >= delta_0)
-      return 0.;
-    return tau_nf * (delta_0 - delta) / (delta_0 - delta_e);
+    std::array<std::array<double, 2>, 3> c;
+    const unsigned int                   n = softening_corners(L, c);
+    if (delta <= c[0][0])
+      return initial_stiffness(L) * delta;
+    for (unsigned int i = 1; i < n; ++i)
+      if (delta < c[i][0])
+        return c[i - 1][1] + (c[i][1] - c[i - 1][1]) * (delta - c[i - 1][0]) /
+                               (c[i][0] - c[i - 1][0]);
+    return 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  SmearedCracks<dim>::softening_slope(const double delta, const double L) const
+  {
+    std::array<std::array<double, 2>, 3> c;
+    const unsigned int                   n = softening_corners(L, c);
+    for (unsigned int i = 1; i < n; ++i)
+      if (delta < c[i][0] || i + 1 == n)
+        return (c[i][1] - c[i - 1][1]) / (c[i][0] - c[i - 1][0]);
+    return 0.;
   }
 
 
@@ -459,15 +515,21 @@ namespace qsmpm
   SmearedCracks<dim>::dissipated_energy(const double delta,
                                         const double L) const
   {
-    const double delta_e = tau_nf / initial_stiffness(L);
-    if (delta <= delta_e)
+    std::array<std::array<double, 2>, 3> c;
+    const unsigned int                   n = softening_corners(L, c);
+    if (delta <= c[0][0])
       return 0.;
-    if (delta >= delta_0)
-      return G_f;
-    const double work =
-      0.5 * tau_nf * delta_e + tau_nf / (delta_0 - delta_e) *
-                                 (delta_0 * (delta - delta_e) -
-                                  0.5 * (delta * delta - delta_e * delta_e));
+    // The work of T up to delta (trapezoids over the corners passed),
+    // minus what unloading along the secant gives back.
+    double work = 0.5 * c[0][0] * c[0][1];
+    for (unsigned int i = 1; i < n; ++i)
+      {
+        const double end = std::min(delta, c[i][0]);
+        work +=
+          0.5 * (c[i - 1][1] + cohesive_traction(end, L)) * (end - c[i - 1][0]);
+        if (delta <= c[i][0])
+          break;
+      }
     return work - 0.5 * cohesive_traction(delta, L) * delta;
   }
 
@@ -514,14 +576,15 @@ namespace qsmpm
         Tensor<2, dim>       D  = q * ((w > 0. ? 1. : 0.) * nn +
                                 b2 * (unit_symmetric_tensor<dim>() - nn)) +
                            (w < 0. ? Kc : 0.) * nn;
-        // On the softening branch while loading, q falls with delta:
-        // dq/d delta = -tau_nf delta_0 / ((delta_0 - delta_e) delta^2),
-        // d delta / du = g / delta (effective separation) or n (opening).
+        // On the softening branch while loading, q = T / delta falls with
+        // delta: dq/d delta = (T' delta - T) / delta^2, and d delta / du =
+        // g / delta (effective separation) or n (opening).
         const double delta_e = tau_nf / K0;
         if (loading && delta > delta_e && delta < delta_0)
           {
-            const double dq =
-              -tau_nf * delta_0 / ((delta_0 - delta_e) * delta * delta);
+            const double dq = (softening_slope(delta, L) * delta -
+                               cohesive_traction(delta, L)) /
+                              (delta * delta);
             D += dq * outer_product(g, by_opening ? n : g / delta);
           }
         *derivative = D;

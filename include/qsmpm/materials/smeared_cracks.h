@@ -33,10 +33,21 @@ namespace qsmpm
    *
    *   t = (T(delta*) / delta*) (<w> n + b s) + K_c min(w, 0) n,
    *
-   * T(delta) = K_0 delta up to delta_e = tau_nf / K_0, then linear
-   * softening to zero at delta_0 = 2 G_f / tau_nf: the area under T is G_f
-   * (the triangle with base delta_0 and height tau_nf). `Mixed mode`
-   * chooses delta:
+   * T(delta) = K_0 delta up to delta_e = tau_nf / K_0, then softening to
+   * zero at delta_0, the area under T being G_f. `Softening` chooses the
+   * branch:
+   *  - linear (default): a straight line from (delta_e, tau_nf) to
+   *    delta_0 = 2 G_f / tau_nf (the triangle with base delta_0 and height
+   *    tau_nf).
+   *  - bilinear: Petersson's law for concrete (Petersson 1981, the CEB-FIP
+   *    Model Code 1990 shape): from (delta_e, tau_nf) to the kink
+   *    (delta_k, tau_nf / 3), then to delta_0 = 3.6 G_f / tau_nf, with
+   *    delta_k = 0.8 G_f / tau_nf + delta_e / 3 so that the area is G_f
+   *    exactly (Petersson's 0.8 G_f / tau_nf for delta_e -> 0). The steep
+   *    first branch and the long tail are what concrete shows; at the same
+   *    G_f it gives lower peak loads than the linear law.
+   *
+   * `Mixed mode` chooses delta:
    *  - opening (default): delta = <w> (the positive part of the opening:
    *    a crack in contact does not soften) and b = 1: the shear traction
    *    is carried by the same secant stiffness, which falls with the
@@ -158,6 +169,15 @@ namespace qsmpm
       impl_ex
     };
 
+    /// The shape of the softening branch of T.
+    enum class Softening
+    {
+      /// A straight line to delta_0 = 2 G_f / tau_nf.
+      linear,
+      /// Petersson's bilinear law, delta_0 = 3.6 G_f / tau_nf.
+      bilinear
+    };
+
     enum class FailedPoints
     {
       /// A point goes on with its cracks.
@@ -181,6 +201,7 @@ namespace qsmpm
       DamageIntegration integration = DamageIntegration::implicit;
       SmearingLength    smearing    = SmearingLength::projection;
       FailedPoints      failed      = FailedPoints::no_tension;
+      Softening         softening   = Softening::linear;
       /// An expression in x, y (, z): cracking where it is > 0.5.
       std::string cracking_region = "1";
 
@@ -248,7 +269,7 @@ namespace qsmpm
       return true;
     }
 
-    /// delta_0 = 2 G_f / tau_nf.
+    /// delta_0: 2 G_f / tau_nf (linear) or 3.6 G_f / tau_nf (bilinear).
     double
     critical_separation() const;
 
@@ -323,6 +344,17 @@ namespace qsmpm
     double
     secant(const double delta_star, const double L) const;
 
+    /// The corners of T after the initial branch, (delta, T): (delta_e,
+    /// tau_nf), for the bilinear law the kink, and (delta_0, 0). Returns
+    /// their number.
+    unsigned int
+    softening_corners(const double                          L,
+                      std::array<std::array<double, 2>, 3> &corners) const;
+
+    /// dT/d delta on the softening branch (delta_e < delta < delta_0).
+    double
+    softening_slope(const double delta, const double L) const;
+
     /// b of the traction: 1 (opening) or beta^2 (effective separation).
     double
     shear_weight() const;
@@ -377,6 +409,7 @@ namespace qsmpm
     const DamageIntegration       integration;
     const SmearingLength          smearing;
     const FailedPoints            failed_points;
+    const Softening               softening;
     /// M = lambda + 2 mu.
     const double M;
     /// K = lambda + 2 mu / dim, the bulk modulus of C (plane stress: with
