@@ -17,6 +17,7 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -187,7 +188,11 @@ namespace LPanel
       double                             wall_time = 0.;
     };
 
-    explicit LShapedPanel(const std::string &parameter_file);
+    /// Reads @p parameter_file; @p adjust, if given, may change entries
+    /// of it before they are used.
+    explicit LShapedPanel(
+      const std::string                             &parameter_file,
+      const std::function<void(ParameterHandler &)> &adjust = {});
 
     /// Runs the panel to <Final deflection> and writes the output
     /// directory's files: load_deflection.csv, crack_path.csv, cracks.csv,
@@ -228,7 +233,9 @@ namespace LPanel
 
 
   template <int dim>
-  LShapedPanel<dim>::LShapedPanel(const std::string &parameter_file)
+  LShapedPanel<dim>::LShapedPanel(
+    const std::string                             &parameter_file,
+    const std::function<void(ParameterHandler &)> &adjust)
     : pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , problem(MPI_COMM_WORLD)
   {
@@ -236,6 +243,8 @@ namespace LPanel
     QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
     panel.add_parameters(prm);
     prm.parse_input(parameter_file);
+    if (adjust)
+      adjust(prm);
     AssertThrow(panel.cut > 0. && panel.cut < panel.edge,
                 ExcMessage("L panel/<Cut-out> must lie between 0 and "
                            "<Edge length>."));
