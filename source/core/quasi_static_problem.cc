@@ -515,12 +515,18 @@ namespace qsmpm
             body_loads = rigid_contact.body_loads(du);
           }
       }
+    // A body's contact force is a support's reaction: the loss is measured
+    // against it too (two tied bodies that hold a body between them apply
+    // forces that cancel, and no displacement condition need carry any).
+    double scale = run_state.load_scale;
+    for (const auto &load : body_loads)
+      scale = std::max(scale, load.force.norm());
     last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
                                 R,
                                 applied_depends_on_du ? applied : f_ext,
-                                run_state.load_scale);
+                                scale);
     run_state.reactions  = last_audit.reactions;
     run_state.load_scale = last_audit.scale;
     // Where load leaves through the grid's edge: the GIMP points whose

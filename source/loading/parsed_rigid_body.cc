@@ -54,13 +54,18 @@ namespace qsmpm
                       "pointing down), in either order.");
     prm.declare_entry("Friction",
                       "frictionless",
-                      Patterns::Selection("frictionless|coulomb|rough"),
+                      Patterns::Selection("frictionless|coulomb|rough|tied"),
                       "frictionless: normal contact only. coulomb: "
                       "tangential traction up to <Friction coefficient> "
                       "times the contact pressure (stick, then slip; "
                       "Newton then takes at least 8 steps of line search, "
                       "Nonlinear solver/Line search steps). rough: no "
-                      "slip.");
+                      "slip. tied: the points that touch the body (their "
+                      "surface within half their size of it) or lie in it "
+                      "are glued to it, in tension and compression, along "
+                      "and across the surface: a displacement condition on "
+                      "a surface off the grid's faces (a support or a grip "
+                      "that moves with <Motion>).");
     prm.declare_entry("Friction coefficient",
                       "0",
                       Patterns::Double(0.),

@@ -217,9 +217,11 @@ namespace qsmpm
       return Friction::coulomb;
     if (name == "rough")
       return Friction::rough;
+    if (name == "tied")
+      return Friction::tied;
     AssertThrow(false,
                 ExcMessage("Unknown friction <" + name +
-                           ">: frictionless, coulomb or rough."));
+                           ">: frictionless, coulomb, rough or tied."));
     return Friction::frictionless;
   }
 

@@ -125,6 +125,12 @@ namespace qsmpm
                   bodies[b].signed_distance_from_point(relative, n_corner);
                 if (gap > margin)
                   continue;
+                // A tied body holds the points whose surface touches it
+                // (within half their size) or lies in it, and no others.
+                const bool tied =
+                  bodies[b].friction == RigidBody<dim>::Friction::tied;
+                if (tied && !(gap < r))
+                  continue;
                 Candidate candidate;
                 candidate.point    = p;
                 candidate.body     = b;
@@ -133,7 +139,7 @@ namespace qsmpm
                 candidate.area     = data[offsets.volume] / (2. * r);
                 // Points that touch the body count too: a body resting on
                 // another is held only by the contact.
-                candidate.penetrates = gap <= 1e-8 * h;
+                candidate.penetrates = tied || gap <= 1e-8 * h;
                 // The grid's Q1 functions of the point's cell at the
                 // corner (extrapolated if the corner lies beyond the
                 // cell): the nodes of that cell are in the point's stencil
@@ -193,7 +199,8 @@ namespace qsmpm
   RigidContact<dim>::traction(const Candidate &c,
                               const double    *du_local,
                               Tensor<1, dim>  &n,
-                              double          &gap) const
+                              double          &gap,
+                              bool            &active) const
   {
     const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
     // The contact point's displacement in the step: sum_i N_i(x_c) du_i.
@@ -201,6 +208,16 @@ namespace qsmpm
     for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
       u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
     gap = body.signed_distance_from_point(c.relative + u, n);
+    const double *old =
+      cache->properties(c.point) + contact_offset + c.body * dim;
+    Tensor<1, dim> t_old;
+    for (unsigned int d = 0; d < dim; ++d)
+      t_old[d] = old[d];
+    // Tied: the last step's traction plus the penalty of the contact
+    // point's motion relative to the body, in every direction.
+    active = body.friction == RigidBody<dim>::Friction::tied || gap < 0.;
+    if (body.friction == RigidBody<dim>::Friction::tied)
+      return t_old - penalty[c.body] * (u - body_increment[c.body]);
     if (gap >= 0.)
       return Tensor<1, dim>();
     const double   pressure = -penalty[c.body] * gap;
@@ -209,11 +226,7 @@ namespace qsmpm
       return t;
     // Return map of the tangential traction: the last step's, plus the
     // penalty of the slip of the contact point relative to the body.
-    const double *old =
-      cache->properties(c.point) + contact_offset + c.body * dim;
-    Tensor<1, dim> tau;
-    for (unsigned int d = 0; d < dim; ++d)
-      tau[d] = old[d];
+    Tensor<1, dim> tau = t_old;
     tau -= tangential_scale * penalty[c.body] * (u - body_increment[c.body]);
     tau -= (tau * n) * n;
     if (body.friction == RigidBody<dim>::Friction::coulomb)
@@ -242,8 +255,9 @@ namespace qsmpm
       {
         Tensor<1, dim>       n;
         double               gap;
-        const Tensor<1, dim> t = traction(c, du_local, n, gap);
-        if (gap < 0.)
+        bool                 active;
+        const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
+        if (active)
           action(c, t, gap);
       }
   }
@@ -338,9 +352,11 @@ namespace qsmpm
         // sliding floor stalled at 1e-5 of its first residual).
         const Tensor<2, dim> normal_part = outer_product(n, n);
         Tensor<2, dim>       stiffness   = normal_part;
-        if (body.friction == RigidBody<dim>::Friction::rough ||
-            (body.friction == RigidBody<dim>::Friction::coulomb &&
-             !slipped(c, n)))
+        if (body.friction == RigidBody<dim>::Friction::tied)
+          stiffness = unit_symmetric_tensor<dim>();
+        else if (body.friction == RigidBody<dim>::Friction::rough ||
+                 (body.friction == RigidBody<dim>::Friction::coulomb &&
+                  !slipped(c, n)))
           stiffness +=
             tangential_scale * (unit_symmetric_tensor<dim>() - normal_part);
         stiffness *= penalty[c.body] * c.area;
@@ -368,7 +384,8 @@ namespace qsmpm
       {
         Tensor<1, dim>       n;
         double               gap;
-        const Tensor<1, dim> t = traction(c, du_local, n, gap);
+        bool                 active;
+        const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
         double              *data =
           cache->properties(c.point, points) + contact_offset + c.body * dim;
         for (unsigned int d = 0; d < dim; ++d)

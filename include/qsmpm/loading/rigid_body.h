@@ -32,7 +32,12 @@ namespace qsmpm
    *  - frictionless: the body pushes along its normal only;
    *  - coulomb: a tangential traction up to mu times the contact pressure
    *    (stick below, slip at it);
-   *  - rough: no slip at all (mu infinite).
+   *  - rough: no slip at all (mu infinite);
+   *  - tied: the points that touch the body (or lie in it) at the start
+   *    of a step are glued to it, in tension as in compression, along the
+   *    surface as across it: a displacement condition on a surface that
+   *    need not coincide with the grid's faces (the body is then a
+   *    support or a grip, which moves with its motion).
    */
   template <int dim>
   struct RigidBody
@@ -49,7 +54,8 @@ namespace qsmpm
     {
       frictionless,
       coulomb,
-      rough
+      rough,
+      tied
     };
 
     /// Names the body in reactions.csv, in the points' output (the field
@@ -128,7 +134,7 @@ namespace qsmpm
     void
     check() const;
 
-    /// Friction from its name: frictionless, coulomb or rough.
+    /// Friction from its name: frictionless, coulomb, rough or tied.
     static Friction
     parse_friction(const std::string &name);
 

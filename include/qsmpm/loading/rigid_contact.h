@@ -64,7 +64,12 @@ namespace qsmpm
    * contact traction
    * of the last step (stored on the point, contact_<name>); Coulomb
    * friction limits |tau| to mu p_N (slip), below it the point sticks;
-   * rough contact never slips. The force on the material,
+   * rough contact never slips. A tied body (RigidBody::Friction::tied)
+   * holds the candidates whose contact point is within r of its surface or
+   * inside it, in every direction and whatever the sign of g: traction
+   * t = t_old - epsilon (u_c - u_b), u_b the body's motion in the step
+   * (a penalty displacement condition; the preconditioner gets epsilon A
+   * N_i N_j I). The force on the material,
    * f = A (p_N n + tau) with the point's area A = Omega_p / (2 r), goes to
    * the nodes with the weights N_i(x_c); minus its sum over the points is
    * the force on the body. Everything depends on the increment, so it is part
@@ -161,20 +166,23 @@ namespace qsmpm
       Tensor<1, dim> relative;
       /// The point's contact area A.
       double area;
-      /// Whether the corner touches or is inside the body at du = 0.
+      /// Whether the corner touches or is inside the body at du = 0 (every
+      /// candidate of a tied body).
       bool penetrates;
     };
 
     /**
      * The contact traction on candidate @p c at the increment whose local
      * entries @p du_local holds (ghosted layout), with the body's normal
-     * @p n there and the gap @p gap.
+     * @p n there and the gap @p gap; @p active: whether the point is in
+     * contact (g < 0, or tied).
      */
     Tensor<1, dim>
     traction(const Candidate &c,
              const double    *du_local,
              Tensor<1, dim>  &n,
-             double          &gap) const;
+             double          &gap,
+             bool            &active) const;
 
     /// Call @p action(candidate, traction, gap) for every candidate in
     /// contact at the increment @p du (owned entries).
