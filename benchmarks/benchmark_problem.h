@@ -56,17 +56,20 @@ namespace Benchmarks
     }
   };
 
-  /// Set up the block with n cells per direction.
+  /// Set up the block [0, upper] with the given subdivisions: clamped at
+  /// y = 0, the face y = upper[1] moved by TopDisplacement, linear elastic,
+  /// 2^dim points per cell, one load step.
   template <int dim>
   void
-  setup_block(qsmpm::QuasiStaticProblem<dim> &problem,
-              const unsigned int              n,
-              const std::string              &preconditioner)
+  setup_block(qsmpm::QuasiStaticProblem<dim>      &problem,
+              const Point<dim>                    &upper,
+              const std::array<unsigned int, dim> &subdivisions,
+              const std::string                   &preconditioner)
   {
     problem.pcout().set_condition(false);
     // No room is needed around the body: it is compressed, so its points
     // stay inside the box.
-    make_unit_box(problem.grid(), n);
+    problem.grid().make_box(Point<dim>(), upper, subdivisions);
     problem.set_model(std::make_unique<qsmpm::LinearElastic<dim>>(1e3, 0.3));
     problem.points().fill([](const Point<dim> &) { return true; },
                           2,
@@ -87,6 +90,23 @@ namespace Benchmarks
     prm.output.directory                       = "benchmark_output";
     prm.output.interval                        = 0;
     prm.load_stepping.n_steps                  = 1;
+  }
+
+  /// Set up the unit block with n cells per direction.
+  template <int dim>
+  void
+  setup_block(qsmpm::QuasiStaticProblem<dim> &problem,
+              const unsigned int              n,
+              const std::string              &preconditioner)
+  {
+    Point<dim>                    upper;
+    std::array<unsigned int, dim> subdivisions;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        upper[d]        = 1.;
+        subdivisions[d] = n;
+      }
+    setup_block<dim>(problem, upper, subdivisions, preconditioner);
   }
 
   /// Peak resident memory of this process in bytes (VmHWM).

@@ -31,32 +31,12 @@ main(int argc, char *argv[])
 
   qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
   problem.return_large_blocks_to_system();
-  problem.pcout().set_condition(false);
   // The block n x n x n p: p4est's space-filling curve splits it along z
   // into slabs of about n^3 cells per rank.
-  problem.grid().make_box(Point<dim>(),
-                          Point<dim>(1., 1., static_cast<double>(ranks)),
-                          {{n, n, n * ranks}});
-  problem.set_model(std::make_unique<qsmpm::LinearElastic<dim>>(1e3, 0.3));
-  problem.points().fill([](const Point<dim> &) { return true; },
-                        2,
-                        qsmpm::MaterialPointSet<dim>::Placement::regular);
-  // Clamped at y = 0, the plate y = 1 moved down and sideways, the
-  // solver settings of solver_scaling.
-  const std::array<bool, dim> all_components = {{true, true, true}};
-  problem.boundary_conditions().add_dirichlet_boundary(
-    2, all_components, std::make_shared<Functions::ZeroFunction<dim>>(dim));
-  problem.boundary_conditions().add_dirichlet_boundary(
-    3, all_components, std::make_shared<Benchmarks::TopDisplacement<dim>>());
-  auto &prm                                  = problem.parameters();
-  prm.nonlinear_solver.preconditioner        = "amg";
-  prm.nonlinear_solver.tolerance             = 1e-6;
-  prm.nonlinear_solver.linear_tolerance      = 1e-3;
-  prm.nonlinear_solver.max_linear_iterations = 20000;
-  prm.nonlinear_solver.gmres_restart         = 200;
-  prm.output.directory                       = "benchmark_output";
-  prm.output.interval                        = 0;
-  prm.load_stepping.n_steps                  = 1;
+  Benchmarks::setup_block<dim>(problem,
+                               Point<dim>(1., 1., static_cast<double>(ranks)),
+                               {{n, n, n * ranks}},
+                               "amg");
   problem.run();
 
   const auto                       &grid = problem.grid();

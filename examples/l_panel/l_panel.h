@@ -418,15 +418,11 @@ namespace LPanel
     const auto         &offsets = problem.points().get_offsets();
     const unsigned int  n       = panel.cells_along_edge;
     std::vector<double> weight(n, 0.), moment(n, 0.);
-    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const auto         data  = particle.get_properties();
-        const unsigned int count = model.crack_summaries(
-          {data.data() + offsets.state, model.n_state_components()}, cracks);
-        double D = 0.;
-        for (unsigned int k = 0; k < count; ++k)
-          D += cracks[k].dissipated / model.fracture_energy();
+        const double D = model.dissipated_over_fracture_energy(
+          {particle.get_properties().data() + offsets.state,
+           model.n_state_components()});
         if (D < 0.5)
           continue;
         const Point<dim>   x = problem.points().initial_location(particle);
@@ -459,15 +455,11 @@ namespace LPanel
       dynamic_cast<const SmearedCracks<dim> &>(problem.points().get_model());
     const auto         &offsets = problem.points().get_offsets();
     std::vector<double> local;
-    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const auto         data  = particle.get_properties();
-        const unsigned int count = model.crack_summaries(
-          {data.data() + offsets.state, model.n_state_components()}, cracks);
-        double D = 0.;
-        for (unsigned int k = 0; k < count; ++k)
-          D += cracks[k].dissipated / model.fracture_energy();
+        const double D = model.dissipated_over_fracture_energy(
+          {particle.get_properties().data() + offsets.state,
+           model.n_state_components()});
         if (D > 0.)
           {
             const Point<dim> x = problem.points().initial_location(particle);

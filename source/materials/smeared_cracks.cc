@@ -993,6 +993,20 @@ namespace qsmpm
 
   template <int dim>
   double
+  SmearedCracks<dim>::dissipated_over_fracture_energy(
+    ArrayView<const double> state) const
+  {
+    const Cracks cracks = read(state);
+    double       result = 0.;
+    for (unsigned int k = 0; k < cracks.count; ++k)
+      result += dissipated_energy(cracks.history[k], cracks.length[k]);
+    return result / G_f;
+  }
+
+
+
+  template <int dim>
+  double
   SmearedCracks<dim>::fracture_energy() const
   {
     return G_f;

@@ -309,6 +309,12 @@ namespace qsmpm
     crack_summaries(ArrayView<const double>        state,
                     std::array<CrackSummary, dim> &cracks) const;
 
+    /// The energy the cracks of a point with model fields @p state have
+    /// dissipated per unit crack area, summed over its cracks, over G_f
+    /// (0 before any crack, 1 for one crack that failed completely).
+    double
+    dissipated_over_fracture_energy(ArrayView<const double> state) const;
+
     /// Names of the state fields.
     static constexpr const char *allowed_name    = "crack_allowed";
     static constexpr const char *count_name      = "crack_count";
