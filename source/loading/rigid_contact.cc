@@ -3,6 +3,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/rigid_contact.h>
+#include <sstream>
 
 namespace qsmpm
 {
@@ -70,6 +71,11 @@ namespace qsmpm
     penalty.resize(bodies.size());
     body_displacement.resize(bodies.size());
     body_increment.resize(bodies.size());
+    // At the start of a run no body may hold material: a point whose
+    // surface lies deeper in a body than the point's own size is a body
+    // placed inside the material (a tied body holds what lies in it).
+    const bool          first_step = t_old == 0.;
+    std::vector<double> overlap(bodies.size(), 0.);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         penalty[b] = bodies[b].penalty_factor * stiffness_scale / h_power;
@@ -123,6 +129,17 @@ namespace qsmpm
                 Tensor<1, dim> n_corner;
                 const double   gap =
                   bodies[b].signed_distance_from_point(relative, n_corner);
+                if (first_step &&
+                    bodies[b].friction != RigidBody<dim>::Friction::tied)
+                  {
+                    Tensor<1, dim> n_start;
+                    const double depth = -bodies[b].signed_distance_from_point(
+                      (corner - bodies[b].point) -
+                        bodies[b].displacement(t_old),
+                      n_start);
+                    if (depth > 2. * r)
+                      overlap[b] = std::max(overlap[b], depth);
+                  }
                 if (gap > margin)
                   continue;
                 // A tied body holds the points whose surface touches it
@@ -169,6 +186,24 @@ namespace qsmpm
               }
           }
       }
+    if (first_step)
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const double depth =
+            dealii::Utilities::MPI::max(overlap[b], grid.get_communicator());
+          if (depth == 0.)
+            continue;
+          std::ostringstream message;
+          message << "Rigid body <" << bodies[b].name
+                  << "> starts inside the material: at t = 0 the surface of "
+                     "a material point lies "
+                  << depth
+                  << " inside it, more than the point's size. Move the "
+                     "body's <Point> (or the material) so that they touch "
+                     "at most; a support that holds the material in it is "
+                     "<Friction = tied>.";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
     any = dealii::Utilities::MPI::logical_or(!candidates.empty(),
                                              grid.get_communicator());
     if (any)

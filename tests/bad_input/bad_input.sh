@@ -257,6 +257,15 @@ driver_case no_support "rigid-body motion" 1 \
   $'subsection Boundary conditions\n set Dirichlet boundaries =\nend'
 driver_case sliding_only "rigid-body motion" 1 \
   $'subsection Boundary conditions\n set Dirichlet boundaries = 0:x, 1:x\nend'
+# Rigid bodies: one that starts inside the block (its surface 0.3 below the
+# block's top, more than a point's size), a negative friction coefficient,
+# an unknown shape.
+driver_case rigid_body_inside "starts inside" 2 \
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Name = plate\n  set Point = 0, 0.7\n  set Normal = 0, -1\n end\nend'
+driver_case rigid_body_friction_negative "Friction coefficient" 1 \
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Point = 0, 1\n  set Normal = 0, -1\n  set Friction = coulomb\n  set Friction coefficient = -0.3\n end\nend'
+driver_case rigid_body_shape_unknown "Shape" 1 \
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = cone\n end\nend'
 # A step that cannot converge: one Newton iteration, a tolerance GMRES
 # cannot reach in one, one cut-back.
 noconv=$'subsection Nonlinear solver\n set Maximum Newton iterations = 1\n set Tolerance = 1e-14\n set Residual floor = 0\n set Linear tolerance = 1e-2\nend\nsubsection Load stepping\n set Maximum cut-backs = 1\nend'
