@@ -207,15 +207,22 @@ namespace LPanel
       return !(x[0] > panel.cut && x[1] < panel.edge - panel.cut);
     }
 
-    /// For each column of cells: the height of the crack (the mean y of
-    /// the points of the column that dissipated at least half of G_f,
-    /// weighted by their dissipation); NaN where none did.
-    std::vector<std::array<double, 2>>
-    crack_path() const;
+    /// The points of this rank that have dissipated: x, y (initial
+    /// positions) and the energy their cracks dissipated over G_f.
+    std::vector<std::array<double, 3>>
+    cracked_points() const;
 
-    /// Every point that dissipated: x, y, dissipated energy over G_f.
+    /// For each column of cells: the height of the crack (the mean y of
+    /// the @p cracked points of the column, of all ranks, that dissipated
+    /// at least half of G_f, weighted by their dissipation); NaN where none
+    /// did.
+    std::vector<std::array<double, 2>>
+    crack_path(const std::vector<std::array<double, 3>> &cracked) const;
+
+    /// The @p cracked points of all ranks into @p file (rank 0).
     void
-    write_cracks(const std::string &file) const;
+    write_cracks(const std::vector<std::array<double, 3>> &cracked,
+                 const std::string                        &file) const;
 
     void
     write_results(const Result &result) const;
@@ -334,7 +341,8 @@ namespace LPanel
     timer.stop();
     result.wall_time                 = timer.wall_time();
     result.steps                     = problem.step_reports().size();
-    result.crack_path                = crack_path();
+    const auto cracked               = cracked_points();
+    result.crack_path                = crack_path(cracked);
     result.crack_height_at_left_edge = std::numeric_limits<double>::quiet_NaN();
     for (const auto &[x, y] : result.crack_path)
       if (std::isfinite(y))
@@ -365,7 +373,7 @@ namespace LPanel
           << result.crack_height_at_left_edge
           << " m (the corner is at y = " << panel.edge - panel.cut << " m)"
           << std::endl;
-    write_cracks(panel.output_directory + "/cracks.csv");
+    write_cracks(cracked, panel.output_directory + "/cracks.csv");
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         write_results(result);
@@ -410,27 +418,44 @@ namespace LPanel
 
 
   template <int dim>
-  std::vector<std::array<double, 2>>
-  LShapedPanel<dim>::crack_path() const
+  std::vector<std::array<double, 3>>
+  LShapedPanel<dim>::cracked_points() const
   {
     const auto &model =
       dynamic_cast<const SmearedCracks<dim> &>(problem.points().get_model());
-    const auto         &offsets = problem.points().get_offsets();
-    const unsigned int  n       = panel.cells_along_edge;
-    std::vector<double> weight(n, 0.), moment(n, 0.);
+    const auto                        &offsets = problem.points().get_offsets();
+    std::vector<std::array<double, 3>> cracked;
     for (const auto &particle : problem.points().get_particle_handler())
       {
         const double D = model.dissipated_over_fracture_energy(
           {particle.get_properties().data() + offsets.state,
            model.n_state_components()});
-        if (D < 0.5)
-          continue;
-        const Point<dim>   x = problem.points().initial_location(particle);
-        const unsigned int column =
-          std::min(n - 1, static_cast<unsigned int>(x[0] / h));
-        weight[column] += D;
-        moment[column] += D * x[1];
+        if (D > 0.)
+          {
+            const Point<dim> x = problem.points().initial_location(particle);
+            cracked.push_back({{x[0], x[1], D}});
+          }
       }
+    return cracked;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::array<double, 2>>
+  LShapedPanel<dim>::crack_path(
+    const std::vector<std::array<double, 3>> &cracked) const
+  {
+    const unsigned int  n = panel.cells_along_edge;
+    std::vector<double> weight(n, 0.), moment(n, 0.);
+    for (const auto &[x, y, D] : cracked)
+      if (D >= 0.5)
+        {
+          const unsigned int column =
+            std::min(n - 1, static_cast<unsigned int>(x / h));
+          weight[column] += D;
+          moment[column] += D * y;
+        }
     Utilities::MPI::sum(make_array_view(std::as_const(weight)),
                         MPI_COMM_WORLD,
                         make_array_view(weight));
@@ -449,24 +474,11 @@ namespace LPanel
 
   template <int dim>
   void
-  LShapedPanel<dim>::write_cracks(const std::string &file) const
+  LShapedPanel<dim>::write_cracks(
+    const std::vector<std::array<double, 3>> &cracked,
+    const std::string                        &file) const
   {
-    const auto &model =
-      dynamic_cast<const SmearedCracks<dim> &>(problem.points().get_model());
-    const auto         &offsets = problem.points().get_offsets();
-    std::vector<double> local;
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const double D = model.dissipated_over_fracture_energy(
-          {particle.get_properties().data() + offsets.state,
-           model.n_state_components()});
-        if (D > 0.)
-          {
-            const Point<dim> x = problem.points().initial_location(particle);
-            local.insert(local.end(), {x[0], x[1], D});
-          }
-      }
-    const auto all = Utilities::MPI::gather(MPI_COMM_WORLD, local, 0);
+    const auto all = Utilities::MPI::gather(MPI_COMM_WORLD, cracked, 0);
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
     std::filesystem::create_directories(
@@ -475,8 +487,8 @@ namespace LPanel
     AssertThrow(out, ExcMessage("Cannot write <" + file + ">."));
     out << "x,y,dissipated_over_Gf\n" << std::setprecision(6);
     for (const auto &part : all)
-      for (unsigned int i = 0; i + 2 < part.size(); i += 3)
-        out << part[i] << ',' << part[i + 1] << ',' << part[i + 2] << '\n';
+      for (const auto &[x, y, D] : part)
+        out << x << ',' << y << ',' << D << '\n';
   }
 
 

@@ -242,7 +242,15 @@ namespace qsmpm
     Tensor<1, dim> u;
     for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
       u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-    gap = body.signed_distance_from_point(c.relative + u, n);
+    gap             = body.signed_distance_from_point(c.relative + u, n);
+    const bool tied = body.friction == RigidBody<dim>::Friction::tied;
+    active          = tied || gap < 0.;
+    if (!active)
+      return Tensor<1, dim>();
+    const double pressure = -penalty[c.body] * gap;
+    if (body.friction == RigidBody<dim>::Friction::frictionless)
+      return pressure * n;
+    // The traction of the last step, stored on the point.
     const double *old =
       cache->properties(c.point) + contact_offset + c.body * dim;
     Tensor<1, dim> t_old;
@@ -250,15 +258,9 @@ namespace qsmpm
       t_old[d] = old[d];
     // Tied: the last step's traction plus the penalty of the contact
     // point's motion relative to the body, in every direction.
-    active = body.friction == RigidBody<dim>::Friction::tied || gap < 0.;
-    if (body.friction == RigidBody<dim>::Friction::tied)
+    if (tied)
       return t_old - penalty[c.body] * (u - body_increment[c.body]);
-    if (gap >= 0.)
-      return Tensor<1, dim>();
-    const double   pressure = -penalty[c.body] * gap;
-    Tensor<1, dim> t        = pressure * n;
-    if (body.friction == RigidBody<dim>::Friction::frictionless)
-      return t;
+    Tensor<1, dim> t = pressure * n;
     // Return map of the tangential traction: the last step's, plus the
     // penalty of the slip of the contact point relative to the body.
     Tensor<1, dim> tau = t_old;
