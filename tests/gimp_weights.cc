@@ -107,9 +107,13 @@ namespace
           Tensor<1, dim>    l;
           for (unsigned int d = 0; d < dim; ++d)
             l[d] = cache.properties(p)[o.initial_half_length + d];
-          double                sum = 0;
-          Tensor<1, dim>        gradient_sum;
-          const unsigned short *nodes = cache.nodes(p);
+          double                                   sum = 0;
+          Tensor<1, dim>                           gradient_sum;
+          const unsigned short                    *nodes = cache.nodes(p);
+          typename ShapeCache<dim>::ValueBuffer    value_buffer;
+          typename ShapeCache<dim>::GradientBuffer gradient_buffer;
+          const double         *N      = cache.values(c, p, value_buffer);
+          const Tensor<1, dim> *grad_N = cache.gradients(c, p, gradient_buffer);
           for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
             {
               const Point<dim> &X =
@@ -128,15 +132,13 @@ namespace
                     G[e] *=
                       (e == d) ? ds1d(dist, l[d], 1.) : s1d(dist, l[d], 1.);
                 }
-              value_error =
-                std::max(value_error, std::abs(S - cache.values(p)[k]));
-              gradient_error =
-                std::max(gradient_error, (G - cache.gradients(p)[k]).norm());
+              value_error    = std::max(value_error, std::abs(S - N[k]));
+              gradient_error = std::max(gradient_error, (G - grad_N[k]).norm());
               for (unsigned int d = 0; d < dim; ++d)
                 nodal_volume[cache.global_dofs(c)[nodes[k] * dim + d]] +=
                   cache.properties(p)[o.volume] * S;
-              sum += cache.values(p)[k];
-              gradient_sum += cache.gradients(p)[k];
+              sum += N[k];
+              gradient_sum += grad_N[k];
             }
           unity_error = std::max(unity_error, std::abs(sum - 1.));
           gradient_sum_error =

@@ -296,9 +296,9 @@ namespace qsmpm
         else if (affine)
           affine_cell_kinematics<false>(*affine, du_cell, range);
         else if (kind.vertex_stencil)
-          cell_gradients<true>(du_cell, range);
+          cell_gradients<true>(du_cell, c);
         else
-          cell_gradients<false>(du_cell, range);
+          cell_gradients<false>(du_cell, c);
         const double mean_volume_change =
           kind.fbar ? cell_mean_volume_change(range, kind.finite_strain) : 0.;
         if (kind.finite_strain)
@@ -398,9 +398,9 @@ namespace qsmpm
         else if (affine)
           add_affine_cell_forces(*affine, range, f_cell);
         else if (kind.vertex_stencil)
-          add_cell_forces<true>(range, f_cell);
+          add_cell_forces<true>(c, f_cell);
         else
-          add_cell_forces<false>(range, f_cell);
+          add_cell_forces<false>(c, f_cell);
         const int *dofs = cache.local_dofs(c);
         for (unsigned int i = 0; i < n_dofs; ++i)
           force[dofs[i]] += f_cell[i];
@@ -412,13 +412,14 @@ namespace qsmpm
   template <int dim>
   template <bool vertex_stencil>
   void
-  QuasiStaticResidual<dim>::cell_gradients(
-    const double                              *du_cell,
-    const typename ShapeCache<dim>::CellRange &range) const
+  QuasiStaticResidual<dim>::cell_gradients(const double      *du_cell,
+                                           const unsigned int c) const
   {
+    const auto                              &range = cache.cell(c);
+    typename ShapeCache<dim>::GradientBuffer unused;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const Tensor<1, dim> *grad_N  = cache.gradients(p);
+        const Tensor<1, dim> *grad_N  = cache.gradients(c, p, unused);
         const unsigned short *nodes   = cache.nodes(p);
         const unsigned int    stencil = vertex_stencil ?
                                           GeometryInfo<dim>::vertices_per_cell :
@@ -522,10 +523,11 @@ namespace qsmpm
   template <int dim>
   template <bool vertex_stencil>
   void
-  QuasiStaticResidual<dim>::add_cell_forces(
-    const typename ShapeCache<dim>::CellRange &range,
-    double                                    *f_cell) const
+  QuasiStaticResidual<dim>::add_cell_forces(const unsigned int c,
+                                            double            *f_cell) const
   {
+    const auto                              &range = cache.cell(c);
+    typename ShapeCache<dim>::GradientBuffer unused;
     // (2.25): f_int_i = Omega_p sigma_p . grad N_i (the paper's f^int with
     // the opposite sign), or its finite-strain form Omega_0 P grad_n N_i;
     // subtracted, since R = f_ext - f_int.
@@ -538,7 +540,7 @@ namespace qsmpm
         Tensor<1, dim> f[n_vertices];
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const Tensor<1, dim> *grad_N = cache.gradients(c, p, unused);
             const Tensor<2, dim> &S =
               scratch.force_stress[p - scratch.block_first];
             for (unsigned int k = 0; k < n_vertices; ++k)
@@ -551,7 +553,7 @@ namespace qsmpm
       }
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const Tensor<1, dim> *grad_N  = cache.gradients(p);
+        const Tensor<1, dim> *grad_N  = cache.gradients(c, p, unused);
         const unsigned short *nodes   = cache.nodes(p);
         const unsigned int    stencil = cache.stencil_size(p);
         const Tensor<2, dim> &S = scratch.force_stress[p - scratch.block_first];

@@ -139,11 +139,17 @@ namespace qsmpm
     if (gimp)
       return;
 
-    // Linear shape functions: the cell couplings serve every step.
+    // Linear shape functions: the cell couplings serve every step. A row
+    // couples the dim components of the 3^dim nodes around its node (more
+    // only across periodic faces, where Epetra lets a row grow): with room
+    // for as many from the start, no row is reallocated while the pattern
+    // is built.
     TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
                                               writable_rows,
-                                              grid.get_communicator());
+                                              grid.get_communicator(),
+                                              dim *
+                                                Utilities::fixed_power<dim>(3));
     DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
                                     pattern,
                                     periodicity,
@@ -153,6 +159,9 @@ namespace qsmpm
     pattern.compress();
     K.reinit(pattern);
     ++n_patterns;
+    // The rows of the pattern as it was built are freed now that K holds
+    // them in one array.
+    Utils::release_free_heap();
   }
 
 
@@ -207,8 +216,9 @@ namespace qsmpm
     if (pattern_per_step || ghost_penalty != nullptr)
       make_step_pattern(grid, cache, ghost_penalty);
     K = 0;
-    FullMatrix<double>                   K_cell;
-    std::vector<types::global_dof_index> dofs;
+    FullMatrix<double>                       K_cell;
+    std::vector<types::global_dof_index>     dofs;
+    typename ShapeCache<dim>::GradientBuffer buffer;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const unsigned int n_dofs = cache.n_dofs(c);
@@ -217,7 +227,7 @@ namespace qsmpm
         cell_tangents.reinit(cache, c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Tensor<1, dim> *grad_N  = cache.gradients(p);
+            const Tensor<1, dim> *grad_N  = cache.gradients(c, p, buffer);
             const unsigned int    stencil = cache.stencil_size(p);
             const unsigned short *nodes   = cache.nodes(p);
             const Tensor<4, dim> &C = cell_tangents.C(p - range.first_point);
@@ -278,6 +288,7 @@ namespace qsmpm
 
     diagonal = 0.;
     std::vector<double> cell_diagonal(ShapeCache<dim>::max_dofs_per_group);
+    typename ShapeCache<dim>::GradientBuffer buffer;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         std::fill(cell_diagonal.begin(),
@@ -287,7 +298,7 @@ namespace qsmpm
         cell_tangents.reinit(cache, c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Tensor<1, dim> *grad_N = cache.gradients(p);
+            const Tensor<1, dim> *grad_N = cache.gradients(c, p, buffer);
             const unsigned short *nodes  = cache.nodes(p);
             const Tensor<4, dim> &C = cell_tangents.C(p - range.first_point);
             const double volume = cell_tangents.volume(p - range.first_point);

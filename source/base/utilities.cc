@@ -307,5 +307,15 @@ namespace qsmpm
       (void)smallest_block;
 #endif
     }
+
+
+
+    void
+    release_free_heap()
+    {
+#ifdef __GLIBC__
+      malloc_trim(0);
+#endif
+    }
   } // namespace Utils
 } // namespace qsmpm

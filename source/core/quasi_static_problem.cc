@@ -5,6 +5,7 @@
 #include <sstream>
 #include <utility>
 
+
 namespace qsmpm
 {
   template <int dim>
@@ -106,12 +107,21 @@ namespace qsmpm
     // A load or a prescribed displacement that is NaN or infinite somewhere
     // (sqrt(-1), 1/x at x = 0) would only show as a residual that is not a
     // number, after every cut-back of the first step. Check the functions at
-    // the vertices of the coarse grid, which every rank holds (so that all
-    // ranks stop together), at most 10^4 of them (a few milliseconds of
-    // muParser), at the start and at the end of the loading.
-    parsed_conditions.check_functions(
-      background_grid.coarse_vertices(10000),
-      {0., prm_values.load_stepping.final_load_factor});
+    // the vertices of each rank's cells, at most 10^4 of them per rank (a
+    // few milliseconds of muParser), at the start and at the end of the
+    // loading; all ranks stop together with the message of the first.
+    std::string error;
+    try
+      {
+        parsed_conditions.check_functions(
+          background_grid.local_vertices(10000),
+          {0., prm_values.load_stepping.final_load_factor});
+      }
+    catch (const std::exception &exc)
+      {
+        error = Utils::error_message(exc);
+      }
+    Utils::throw_if_any_rank(error, communicator);
   }
 
 
@@ -189,7 +199,8 @@ namespace qsmpm
                    "direct" :
                    "amg";
         preconditioner =
-          Preconditioner<dim>(Preconditioner<dim>::parse_type(type));
+          Preconditioner<dim>(Preconditioner<dim>::parse_type(type),
+                              solver_prm.amg_null_space == "rigid body modes");
         preconditioner_reuse.reset();
         last_load_increment = 0.;
         if (preconditioner.needs_matrix())

@@ -23,7 +23,13 @@ namespace qsmpm
                         Patterns::List(Patterns::Double(), dim, dim));
       prm.add_parameter("Subdivisions",
                         subdivisions,
-                        "Number of grid cells in each coordinate direction.",
+                        "Number of grid cells in each coordinate direction. "
+                        "The box is made of n_d / 2^k coarse cells refined "
+                        "k times, with k as large as all n_d allow; each "
+                        "MPI rank holds the coarse cells and its share of "
+                        "the fine ones, so numbers with a common factor "
+                        "2^k (e.g. 96 or 108 rather than 101) keep the "
+                        "memory of every rank in proportion to its share.",
                         Patterns::List(Patterns::Integer(1), dim, dim));
       prm.add_parameter("Periodic directions",
                         periodic,
@@ -108,10 +114,59 @@ namespace qsmpm
     box_upper        = upper_corner;
     box_subdivisions = subdivisions;
     periodic.clear();
+    build();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::build()
+  {
+    // Every rank of a parallel::distributed::Triangulation holds the whole
+    // coarse mesh (and p4est its connectivity), so a box made of its n^dim
+    // cells directly costs every rank about a kilobyte per cell of the
+    // whole grid: more than the points of a rank at 10^7 points on two
+    // ranks, and all of a rank's memory on a large machine. The box is
+    // therefore made of as few coarse cells as the subdivisions allow,
+    // n_d / 2^k in direction d, refined k times: the same cells, vertices
+    // and boundary ids, each rank holding only its share. A periodic
+    // direction keeps at least two coarse cells, so that no coarse cell is
+    // its own periodic neighbour.
+    const auto halves = [this](const unsigned int k) {
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int n = box_subdivisions[d] >> k;
+          const bool         periodic_d =
+            std::find(periodic.begin(), periodic.end(), d) != periodic.end();
+          if (n % 2 != 0 || (periodic_d && n < 4))
+            return false;
+        }
+      return true;
+    };
+    unsigned int k = 0;
+    while (halves(k))
+      ++k;
+    std::vector<unsigned int> coarse(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      coarse[d] = box_subdivisions[d] >> k;
+
     triangulation.clear();
-    const std::vector<unsigned int> n(subdivisions.begin(), subdivisions.end());
     GridGenerator::subdivided_hyper_rectangle(
-      triangulation, n, lower_corner, upper_corner, /*colorize=*/true);
+      triangulation, coarse, box_lower, box_upper, /*colorize=*/true);
+    // Periodic faces are identified in the coarse mesh, before refinement
+    // (p4est's connectivity).
+    if (!periodic.empty())
+      {
+        std::vector<GridTools::PeriodicFacePair<
+          typename Triangulation<dim>::cell_iterator>>
+          pairs;
+        for (const unsigned int d : periodic)
+          GridTools::collect_periodic_faces(
+            triangulation, 2 * d, 2 * d + 1, d, pairs);
+        triangulation.add_periodicity(pairs);
+      }
+    triangulation.refine_global(k);
     distribute_dofs();
   }
 
@@ -138,9 +193,6 @@ namespace qsmpm
     AssertThrow(triangulation.n_active_cells() > 0,
                 ExcMessage("Create the grid (make_box) before making it "
                            "periodic."));
-    std::vector<
-      GridTools::PeriodicFacePair<typename Triangulation<dim>::cell_iterator>>
-      pairs;
     for (const unsigned int d : directions)
       {
         AssertThrow(d < dim,
@@ -157,13 +209,12 @@ namespace qsmpm
                                " needs at least two cells across the box "
                                "(<Subdivisions>), got " +
                                std::to_string(box_subdivisions[d]) + "."));
-        GridTools::collect_periodic_faces(
-          triangulation, 2 * d, 2 * d + 1, d, pairs);
         periodic.push_back(d);
       }
     std::sort(periodic.begin(), periodic.end());
-    triangulation.add_periodicity(pairs);
-    distribute_dofs();
+    // The same box again, with the periodic faces identified in its coarse
+    // mesh (see build()).
+    build();
   }
 
 
@@ -336,17 +387,18 @@ namespace qsmpm
 
   template <int dim>
   std::vector<Point<dim>>
-  BackgroundGrid<dim>::coarse_vertices(const std::size_t max_count) const
+  BackgroundGrid<dim>::local_vertices(const std::size_t max_count) const
   {
     std::vector<bool>       seen(triangulation.n_vertices(), false);
     std::vector<Point<dim>> vertices;
-    for (const auto &cell : triangulation.cell_iterators_on_level(0))
-      for (const unsigned int v : cell->vertex_indices())
-        if (!seen[cell->vertex_index(v)])
-          {
-            seen[cell->vertex_index(v)] = true;
-            vertices.push_back(cell->vertex(v));
-          }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (!seen[cell->vertex_index(v)])
+            {
+              seen[cell->vertex_index(v)] = true;
+              vertices.push_back(cell->vertex(v));
+            }
     const std::size_t stride = 1 + vertices.size() / max_count;
     if (stride > 1)
       {

@@ -47,9 +47,10 @@ namespace qsmpm
   {
     Function<dim> &body_force = *boundary.body_force();
     body_force.set_time(t);
-    Vector<double>                       b(dim);
-    std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  cell_force;
+    Vector<double>                        b(dim);
+    std::vector<types::global_dof_index>  dofs;
+    std::vector<double>                   cell_force;
+    typename ShapeCache<dim>::ValueBuffer buffer;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         cell_force.assign(cache.n_dofs(c), 0.);
@@ -58,7 +59,7 @@ namespace qsmpm
           {
             body_force.vector_value(cache.position(p), b);
             const double          volume = cache.properties(p)[volume_offset];
-            const double         *N      = cache.values(p);
+            const double         *N      = cache.values(c, p, buffer);
             const unsigned short *nodes  = cache.nodes(p);
             for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
               for (unsigned int d = 0; d < dim; ++d)

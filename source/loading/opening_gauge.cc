@@ -128,9 +128,10 @@ namespace qsmpm
         unsigned int c = 0;
         while (p >= cache.cell(c).end_point)
           ++c;
-        const types::global_dof_index *dofs  = cache.global_dofs(c);
-        const unsigned short          *nodes = cache.nodes(p);
-        const double                  *N     = cache.values(p);
+        const types::global_dof_index        *dofs  = cache.global_dofs(c);
+        const unsigned short                 *nodes = cache.nodes(p);
+        typename ShapeCache<dim>::ValueBuffer buffer;
+        const double                         *N = cache.values(c, p, buffer);
         for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
           for (unsigned int d = 0; d < dim; ++d)
             if (N[k] * e[d] != 0.)

@@ -467,10 +467,11 @@ namespace qsmpm
     if (!finite_strain)
       return a;
     // Delta F = I + sum_i du_i (x) grad N_i(x_p).
-    Tensor<2, dim>        delta_F   = unit_symmetric_tensor<dim>();
-    const int            *dofs      = cache->local_dofs(c);
-    const unsigned short *nodes     = cache->nodes(p);
-    const Tensor<1, dim> *gradients = cache->gradients(p);
+    Tensor<2, dim>        delta_F = unit_symmetric_tensor<dim>();
+    const int            *dofs    = cache->local_dofs(c);
+    const unsigned short *nodes   = cache->nodes(p);
+    typename ShapeCache<dim>::GradientBuffer buffer;
+    const Tensor<1, dim> *gradients = cache->gradients(c, p, buffer);
     for (unsigned int n = 0; n < cache->stencil_size(p); ++n)
       for (unsigned int i = 0; i < dim; ++i)
         {

@@ -391,6 +391,8 @@ namespace qsmpm
       }
     Utils::throw_if_any_rank(error, grid.get_communicator());
 
+    particle_handler.reserve(particle_handler.n_locally_owned_particles() +
+                             n_local);
     std::vector<double> properties(layout.size(), 0.);
     for (types::particle_index i = 0; i < n_local; ++i)
       {

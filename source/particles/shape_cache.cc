@@ -97,9 +97,12 @@ namespace qsmpm
     dof_offsets.assign(1, 0);
     cell_local_dofs.clear();
     cell_global_dofs.clear();
-    stencil_nodes.resize(n_local_points * stencil);
-    shape_values.resize(n_local_points * stencil);
-    shape_gradients.resize(n_local_points * stencil);
+    shape_offsets.clear();
+    // GIMP stores every point's stencil; with linear shape functions only
+    // the points of cells that are not affine are stored (add_linear_cell()).
+    stencil_nodes.resize(gimp ? n_local_points * stencil : 0);
+    shape_values.resize(gimp ? n_local_points * stencil : 0);
+    shape_gradients.resize(gimp ? n_local_points * stencil : 0);
     point_stencil_sizes.assign(n_local_points, stencil);
     point_properties.resize(n_local_points);
     point_positions.resize(n_local_points);
@@ -118,6 +121,7 @@ namespace qsmpm
           const unsigned int first = p;
           if (gimp)
             {
+              shape_offsets.push_back(first);
               add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
               affine_cells.emplace_back();
               cell_is_affine.push_back(false);
@@ -147,6 +151,7 @@ namespace qsmpm
     std::vector<unsigned char>().swap(cell_is_affine);
     affine_cell_count = 0;
     std::vector<unsigned int>().swap(dof_offsets);
+    std::vector<unsigned int>().swap(shape_offsets);
     std::vector<int>().swap(cell_local_dofs);
     std::vector<types::global_dof_index>().swap(cell_global_dofs);
     std::vector<unsigned short>().swap(stencil_nodes);
@@ -182,45 +187,60 @@ namespace qsmpm
           cell_global_dofs.push_back(dof);
         }
 
-    // deal.II's FE_Q(1) evaluated at the points' reference locations, all
-    // shape functions in one call of its polynomial space (FE_Poly's
-    // shape_value(v, xi) is that space's v-th polynomial); shape function
-    // v belongs to vertex v.
+    // On a cell that is not affine: deal.II's FE_Q(1) evaluated at the
+    // points' reference locations, all shape functions in one call of its
+    // polynomial space (FE_Poly's shape_value(v, xi) is that space's v-th
+    // polynomial); shape function v belongs to vertex v.
     const auto &q1 =
       dynamic_cast<const FE_Poly<dim> &>(grid.get_fe().base_element(0));
     const ScalarPolynomialsBase<dim> &polynomials = q1.get_poly_space();
     q1_values.resize(n_vertices);
     q1_gradients.resize(n_vertices);
     // On an affine cell (every cell of a Cartesian grid) the Jacobian of
-    // the Q1 map is the same at all points: inverted once per cell.
-    Tensor<2, dim>       affine_jacobian;
-    const bool           affine = grid.affine_map(cell, affine_jacobian);
-    const Tensor<2, dim> affine_inverse_transpose =
-      affine ? transpose(invert(affine_jacobian)) : Tensor<2, dim>();
-    affine_cells.push_back({transpose(affine_inverse_transpose)});
+    // the Q1 map is the same at all points: inverted once per cell, and
+    // kept for AffineQ1Cell.
+    Tensor<2, dim> affine_jacobian;
+    const bool     affine = grid.affine_map(cell, affine_jacobian);
+    affine_cells.push_back(
+      {affine ? invert(affine_jacobian) : Tensor<2, dim>()});
     cell_is_affine.push_back(affine);
+    // On an affine cell only the reference locations are kept (see
+    // values()); otherwise the values and gradients, appended.
+    const unsigned int first  = p;
+    const unsigned int offset = shape_values.size() / stencil;
+    if (affine)
+      shape_offsets.push_back(numbers::invalid_unsigned_int);
+    else
+      {
+        shape_offsets.push_back(offset);
+        const unsigned int n = particle_handler.n_particles_in_cell(cell);
+        shape_values.resize((offset + n) * stencil);
+        shape_gradients.resize((offset + n) * stencil);
+      }
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         const Point<dim> xi = particle.get_reference_location();
-        polynomials.evaluate(
-          xi, q1_values, q1_gradients, q1_unused_2, q1_unused_3, q1_unused_4);
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          shape_values[p * stencil + v] = q1_values[v];
-        // Otherwise the Jacobian of the Q1 map at the point: exact for any
-        // (bi/tri)linear cell.
-        Tensor<2, dim> inverse_transpose = affine_inverse_transpose;
         if (!affine)
           {
+            const unsigned int i = (offset + p - first) * stencil;
+            polynomials.evaluate(xi,
+                                 q1_values,
+                                 q1_gradients,
+                                 q1_unused_2,
+                                 q1_unused_3,
+                                 q1_unused_4);
+            // The Jacobian of the Q1 map at the point: exact for any
+            // (bi/tri)linear cell.
             Tensor<2, dim> jacobian;
             for (unsigned int v = 0; v < n_vertices; ++v)
               jacobian += outer_product(cell->vertex(v), q1_gradients[v]);
-            inverse_transpose = transpose(invert(jacobian));
-          }
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            shape_gradients[p * stencil + v] =
-              inverse_transpose * q1_gradients[v];
-            stencil_nodes[p * stencil + v] = v;
+            const Tensor<2, dim> inverse_transpose =
+              transpose(invert(jacobian));
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              {
+                shape_values[i + v]    = q1_values[v];
+                shape_gradients[i + v] = inverse_transpose * q1_gradients[v];
+              }
           }
         // ParticleAccessor::get_properties() is not const, but the
         // pointer stays valid until particles are added or sorted.
@@ -401,6 +421,7 @@ namespace qsmpm
     if (min_nodal_volume > 0.)
       {
         std::vector<double> volume(max_dofs_per_group);
+        ValueBuffer         buffer;
         for (unsigned int c = 0; c < n_cells(); ++c)
           {
             std::fill(volume.begin(), volume.begin() + n_dofs(c), 0.);
@@ -408,7 +429,7 @@ namespace qsmpm
             for (unsigned int p = range.first_point; p < range.end_point; ++p)
               {
                 const double          omega = properties(p)[volume_offset];
-                const double         *N     = values(p);
+                const double         *N     = values(c, p, buffer);
                 const unsigned short *node  = nodes(p);
                 for (unsigned int k = 0; k < stencil_size(p); ++k)
                   for (unsigned int d = 0; d < dim; ++d)
@@ -435,8 +456,9 @@ namespace qsmpm
                                const unsigned int p,
                                const double      *local_values) const
   {
+    ValueBuffer           buffer;
     const int            *dofs  = local_dofs(c);
-    const double         *N     = values(p);
+    const double         *N     = values(c, p, buffer);
     const unsigned short *nodes = this->nodes(p);
     Tensor<1, dim>        result;
     for (unsigned int k = 0; k < stencil_size(p); ++k)

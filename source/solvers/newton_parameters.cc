@@ -54,6 +54,17 @@ namespace qsmpm
                         "dofs), or auto (direct up to <Direct solver "
                         "threshold> dofs, amg above).",
                         Patterns::Selection("none|jacobi|amg|direct|auto"));
+      prm.add_parameter(
+        "AMG near null space",
+        amg_null_space,
+        "The modes AMG's coarse levels represent exactly: rigid body modes "
+        "(the dim translations and the rotations, the near-null space of "
+        "elasticity: few GMRES iterations for any body, also a slender one "
+        "in bending) or translations (the dim translations only: in 3D "
+        "half the coarse unknowns, so about half the memory and set-up "
+        "time of AMG, which suits compact 3D bodies; a slender body in "
+        "bending then needs many more GMRES iterations).",
+        Patterns::Selection("rigid body modes|translations"));
       prm.add_parameter("Direct solver threshold",
                         direct_threshold,
                         "With <Preconditioner> = auto: the largest number of "

@@ -78,8 +78,9 @@ namespace qsmpm
 
 
   template <int dim>
-  Preconditioner<dim>::Preconditioner(const Type type)
+  Preconditioner<dim>::Preconditioner(const Type type, const bool rotations)
     : preconditioner_type(type)
+    , with_rotations(rotations)
   {
   }
 
@@ -135,7 +136,10 @@ namespace qsmpm
         const Epetra_Map &map = K.trilinos_matrix().DomainMap();
         rigid_body_modes      = make_rigid_body_modes(grid, map);
         parameters.set("null space: type", "pre-computed");
-        parameters.set("null space: dimension", rigid_body_modes->NumVectors());
+        // The translations are the first dim vectors of the modes.
+        parameters.set("null space: dimension",
+                       with_rotations ? rigid_body_modes->NumVectors() :
+                                        static_cast<int>(dim));
         parameters.set("null space: vectors", rigid_body_modes->Values());
         // The dim dofs of a node (consecutive in the grid's numbering, see
         // make_rigid_body_modes()) form one block: ML aggregates nodes

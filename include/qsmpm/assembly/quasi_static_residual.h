@@ -250,16 +250,15 @@ namespace qsmpm
                  double            *force) const;
 
     /**
-     * grad du at the points of the cell @p range into Scratch::grad_du,
-     * from the cell's values
-     * @p du_cell. With @p vertex_stencil (linear shape functions) every
-     * stencil is the cell's vertices in their order, and the loops have
-     * fixed bounds.
+     * grad du at the points of the cache's cell @p c into Scratch::grad_du,
+     * from the cell's values @p du_cell, with the stored shape-function
+     * gradients (GIMP, or a cell that is not affine). With
+     * @p vertex_stencil (linear shape functions) every stencil is the
+     * cell's vertices in their order, and the loops have fixed bounds.
      */
     template <bool vertex_stencil>
     void
-    cell_gradients(const double                              *du_cell,
-                   const typename ShapeCache<dim>::CellRange &range) const;
+    cell_gradients(const double *du_cell, const unsigned int c) const;
 
     /**
      * cell_gradients() on an affine cell with linear shape functions, from
@@ -294,14 +293,13 @@ namespace qsmpm
                            double *f_cell) const;
 
     /**
-     * Subtract the internal forces of the points of the cell @p range, from
-     * their stress measures in Scratch::force_stress, from the cell's forces
-     * @p f_cell.
+     * Subtract the internal forces of the points of the cache's cell @p c,
+     * from their stress measures in Scratch::force_stress, from the cell's
+     * forces @p f_cell (stored gradients, as cell_gradients()).
      */
     template <bool vertex_stencil>
     void
-    add_cell_forces(const typename ShapeCache<dim>::CellRange &range,
-                    double                                    *f_cell) const;
+    add_cell_forces(const unsigned int c, double *f_cell) const;
 
     /**
      * Small strain: from the strain increments in Scratch::strain_increment

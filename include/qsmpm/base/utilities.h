@@ -151,6 +151,16 @@ namespace qsmpm
     return_large_blocks_to_system(const std::size_t smallest_block);
 
     /**
+     * Give the free pages inside the heap back to the system (glibc's
+     * malloc_trim; nothing elsewhere). For after a phase that made and freed
+     * many small blocks, such as the rows of a sparsity pattern that grow
+     * while it is built: freed, they stay resident and are not reused by
+     * the large arrays that follow, which come from mmap.
+     */
+    void
+    release_free_heap();
+
+    /**
      * Run gnuplot on the script @p script (a file name) if gnuplot is
      * installed (Debian: gnuplot-nox). Returns whether it ran and succeeded;
      * the example programs write their plots' scripts in any case and

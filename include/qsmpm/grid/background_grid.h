@@ -176,12 +176,12 @@ namespace qsmpm
     min_cell_size() const;
 
     /**
-     * The vertices of the coarse grid, which every rank holds, each once:
-     * all of them, or, if there are more than @p max_count, every k-th of
-     * them (in the same order on every rank), at most @p max_count.
+     * The vertices of this rank's cells, each once: all of them, or, if
+     * there are more than @p max_count, every k-th of them, at most
+     * @p max_count.
      */
     std::vector<Point<dim>>
-    coarse_vertices(const std::size_t max_count) const;
+    local_vertices(const std::size_t max_count) const;
 
     /**
      * Whether the (bi/tri)linear map of @p cell is affine,
@@ -196,6 +196,15 @@ namespace qsmpm
                Tensor<2, dim>                                   &jacobian);
 
   private:
+    /**
+     * Make the box of box_lower, box_upper, box_subdivisions, periodic in
+     * the directions of periodic: a coarse mesh of as few cells as the
+     * subdivisions allow, refined globally (see the .cc file for why), and
+     * distribute the degrees of freedom.
+     */
+    void
+    build();
+
     MPI_Comm                                  communicator;
     parallel::distributed::Triangulation<dim> triangulation;
     FESystem<dim>                             fe;

@@ -78,10 +78,9 @@ namespace qsmpm
      * expression, the point and t if one of them gives a value that is not
      * a finite number (e.g. sqrt(-1), 1/0). Without this check a NaN in a
      * load only shows up as a residual that is not a number, after every
-     * cut-back of the first load step. The caller passes the same points on
-     * every MPI rank (e.g. the vertices of the coarse grid, which every rank
-     * holds), so that all ranks stop together. Does nothing before
-     * parse_parameters().
+     * cut-back of the first load step. Each rank may check points of its
+     * own; the caller then makes all ranks stop together
+     * (Utils::throw_if_any_rank()). Does nothing before parse_parameters().
      */
     void
     check_functions(const std::vector<Point<dim>> &points,

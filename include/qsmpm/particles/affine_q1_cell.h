@@ -75,6 +75,52 @@ namespace qsmpm
     /// J^{-1}, J with the columns vertex(2^d) - vertex(0).
     Tensor<2, dim> inverse_jacobian;
 
+    /**
+     * The Q1 shape functions at reference location @p xi: N_v(xi) =
+     * prod_d (xi_d if bit d of v is set, else 1 - xi_d), vertex v in
+     * deal.II's order, into @p N, and their gradients in x, J^{-T}
+     * grad_xi N_v, into @p grad_N (either may be null). The values of
+     * deal.II's FE_Q(1) to round-off.
+     */
+    void
+    shape_functions(const Point<dim> &xi,
+                    double           *N,
+                    Tensor<1, dim>   *grad_N) const
+    {
+#pragma GCC unroll 64
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          double         value = 1.;
+          Tensor<1, dim> reference_gradient;
+#pragma GCC unroll 64
+          for (unsigned int e = 0; e < dim; ++e)
+            reference_gradient[e] = 1.;
+#pragma GCC unroll 64
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const bool   bit   = (v >> d) & 1U;
+              const double f     = bit ? xi[d] : 1. - xi[d];
+              const double slope = bit ? 1. : -1.;
+              value *= f;
+#pragma GCC unroll 64
+              for (unsigned int e = 0; e < dim; ++e)
+                reference_gradient[e] *= (e == d) ? slope : f;
+            }
+          if (N != nullptr)
+            N[v] = value;
+          if (grad_N != nullptr)
+            {
+              Tensor<1, dim> g;
+#pragma GCC unroll 64
+              for (unsigned int b = 0; b < dim; ++b)
+#pragma GCC unroll 64
+                for (unsigned int d = 0; d < dim; ++d)
+                  g[b] += inverse_jacobian[d][b] * reference_gradient[d];
+              grad_N[v] = g;
+            }
+        }
+    }
+
     /// m_w(xi) for w = 0..n_terms-1.
     static void
     monomials(const Point<dim> &xi, Monomials &m)

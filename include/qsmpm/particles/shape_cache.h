@@ -2,6 +2,7 @@
 #define qsmpm_particles_shape_cache_h
 
 #include <Epetra_BlockMap.h>
+#include <array>
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -165,25 +166,61 @@ namespace qsmpm
       return &cell_global_dofs[dof_offsets[c]];
     }
 
-    /// The stencil of point @p p: indices into its group's node list.
+    /**
+     * The stencil of point @p p: indices into its group's node list (with
+     * linear shape functions the cell's vertices 0..2^dim-1).
+     */
     const unsigned short *
     nodes(const unsigned int p) const
     {
-      return &stencil_nodes[p * stencil];
+      return stencil == n_vertices ? vertex_nodes.data() :
+                                     &stencil_nodes[p * stencil];
     }
 
-    /// N_k(x_p) for the stencil nodes k = 0..stencil_size()-1.
+    /// Room for the values of one point's stencil (see values()).
+    using ValueBuffer = std::array<double, max_stencil_size>;
+    /// Room for the gradients of one point's stencil (see gradients()).
+    using GradientBuffer = std::array<Tensor<1, dim>, max_stencil_size>;
+
+    /**
+     * N_k(x_p) for the stencil nodes k = 0..stencil_size(p)-1 of point @p p
+     * of cell @p c. They are stored for GIMP and for cells that are not
+     * affine. On an affine cell with linear shape functions (every cell of
+     * a box grid) nothing is stored per point, which halves the cache's
+     * memory in 2D and takes two thirds off it in 3D: the values are
+     * computed from the point's reference location into @p buffer
+     * (AffineQ1Cell::shape_functions(), a few dozen flops), and the pointer
+     * returned points there.
+     */
     const double *
-    values(const unsigned int p) const
+    values(const unsigned int c,
+           const unsigned int p,
+           ValueBuffer       &buffer) const
     {
-      return &shape_values[p * stencil];
+      if (shape_offsets[c] == numbers::invalid_unsigned_int)
+        {
+          affine_cells[c].shape_functions(point_reference_locations[p],
+                                          buffer.data(),
+                                          nullptr);
+          return buffer.data();
+        }
+      return &shape_values[stored_index(c, p) * stencil];
     }
 
-    /// grad N_k(x_p) for the stencil nodes k = 0..stencil_size()-1.
+    /// grad N_k(x_p), as values().
     const Tensor<1, dim> *
-    gradients(const unsigned int p) const
+    gradients(const unsigned int c,
+              const unsigned int p,
+              GradientBuffer    &buffer) const
     {
-      return &shape_gradients[p * stencil];
+      if (shape_offsets[c] == numbers::invalid_unsigned_int)
+        {
+          affine_cells[c].shape_functions(point_reference_locations[p],
+                                          nullptr,
+                                          buffer.data());
+          return buffer.data();
+        }
+      return &shape_gradients[stored_index(c, p) * stencil];
     }
 
     /// Position x_p of point @p p at the start of the step.
@@ -289,6 +326,13 @@ namespace qsmpm
                 const double      *local_values) const;
 
   private:
+    /// The place of point @p p of cell @p c in the stored values.
+    unsigned int
+    stored_index(const unsigned int c, const unsigned int p) const
+    {
+      return shape_offsets[c] + (p - cells[c].first_point);
+    }
+
     /// Linear shape functions of the point's cell.
     void
     add_linear_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -318,11 +362,22 @@ namespace qsmpm
     std::vector<unsigned int>            dof_offsets;
     std::vector<int>                     cell_local_dofs;
     std::vector<types::global_dof_index> cell_global_dofs;
-    std::vector<unsigned short>          stencil_nodes;
-    std::vector<unsigned char>           point_stencil_sizes;
-    std::vector<double>                  shape_values;
-    std::vector<Tensor<1, dim>>          shape_gradients;
-    std::vector<double *>                point_properties;
+    /// Per cell: the stored index of its first point (stored_index()),
+    /// or invalid if its points' shape functions are not stored.
+    std::vector<unsigned int>   shape_offsets;
+    std::vector<unsigned short> stencil_nodes;
+    /// 0, 1, ..., 2^dim - 1: the stencil of every point with linear shape
+    /// functions.
+    static constexpr std::array<unsigned short, n_vertices> vertex_nodes = [] {
+      std::array<unsigned short, n_vertices> v{};
+      for (unsigned int i = 0; i < n_vertices; ++i)
+        v[i] = i;
+      return v;
+    }();
+    std::vector<unsigned char>  point_stencil_sizes;
+    std::vector<double>         shape_values;
+    std::vector<Tensor<1, dim>> shape_gradients;
+    std::vector<double *>       point_properties;
     /// The point set of the last reinit(), whose properties these are.
     const MaterialPointSet<dim> *point_set = nullptr;
     std::vector<Point<dim>>      point_positions;

@@ -34,6 +34,9 @@ namespace qsmpm
     std::string preconditioner = "amg";
     /// With preconditioner = auto: the largest number of dofs for direct.
     unsigned int direct_threshold = 20000;
+    /// AMG's near-null space: "rigid body modes" (translations and
+    /// rotations) or "translations" (see Preconditioner).
+    std::string amg_null_space = "rigid body modes";
     /// Load steps a preconditioner may serve before it is rebuilt (1 = a
     /// new one every step, as in the paper's runs; 0 = auto, see
     /// resolve()).

@@ -35,7 +35,8 @@ namespace qsmpm
    *
    * Types: "none" (the paper's unpreconditioned GMRES), "jacobi" (diagonal
    * of K), "amg" (Trilinos ML smoothed aggregation with the rigid-body
-   * near-null space, one W-cycle per application) and "direct" (a sparse LU
+   * near-null space, or its translations only, one W-cycle per
+   * application) and "direct" (a sparse LU
    * factorization of K by Amesos KLU, once per step, then two triangular
    * solves per application). KLU gathers the matrix on one rank and its
    * cost grows faster than linearly with the size, so "direct" is for small
@@ -57,7 +58,13 @@ namespace qsmpm
     static Type
     parse_type(const std::string &name);
 
-    explicit Preconditioner(const Type type = Type::amg);
+    /**
+     * With @p rotations (the default) AMG's near-null space holds the
+     * rigid-body rotations besides the translations (see
+     * make_rigid_body_modes()); without, only the translations.
+     */
+    explicit Preconditioner(const Type type      = Type::amg,
+                            const bool rotations = true);
 
     Type
     type() const;
@@ -86,6 +93,7 @@ namespace qsmpm
 
   private:
     Type                                 preconditioner_type;
+    bool                                 with_rotations;
     TrilinosWrappers::PreconditionJacobi jacobi;
     TrilinosWrappers::PreconditionAMG    amg;
     std::unique_ptr<Epetra_MultiVector>  rigid_body_modes;
