@@ -139,17 +139,11 @@ namespace qsmpm
     if (gimp)
       return;
 
-    // Linear shape functions: the cell couplings serve every step. A row
-    // couples the dim components of the 3^dim nodes around its node (more
-    // only across periodic faces, where Epetra lets a row grow): with room
-    // for as many from the start, no row is reallocated while the pattern
-    // is built.
+    // Linear shape functions: the cell couplings serve every step.
     TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
                                               writable_rows,
-                                              grid.get_communicator(),
-                                              dim *
-                                                Utilities::fixed_power<dim>(3));
+                                              grid.get_communicator());
     DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
                                     pattern,
                                     periodicity,
@@ -159,8 +153,8 @@ namespace qsmpm
     pattern.compress();
     K.reinit(pattern);
     ++n_patterns;
-    // The rows of the pattern as it was built are freed now that K holds
-    // them in one array.
+    // The rows of the pattern, which grew one by one while it was built,
+    // are freed now that K holds them in one array.
     Utils::release_free_heap();
   }
 
