@@ -71,10 +71,10 @@ namespace qsmpm
      * advect()), the values describe positions they no longer have, and
      * sorting them into their new cells moves their properties in memory,
      * so the property pointers would dangle: the cache is of no further use
-     * until the next reinit(). Releasing its memory (about 130 bytes per
-     * point with linear shape functions, more with GIMP) before the points
-     * are sorted lowers the peak memory of a run, since deal.II's sorting
-     * makes a copy of all particle data for a moment.
+     * until the next reinit(). Releasing its memory (about 40 bytes per
+     * point in 2D and 60 in 3D on affine cells, more with GIMP) before the
+     * points are sorted lowers the peak memory of a run, since deal.II's
+     * sorting makes a copy of all particle data for a moment.
      */
     void
     clear();
