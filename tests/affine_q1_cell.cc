@@ -14,6 +14,9 @@
 //      add_nodal_forces() of H_w = sum_p m_w S_p, against
 //      f_v = sum_p S_p grad N_v(x_p) from FEValues, and of symmetric ones
 //      through unfold_symmetric_terms().
+//    - the shape functions N_v and grad N_v of shape_functions() (which
+//      the ShapeCache computes instead of storing on affine cells) against
+//      FEValues' shape values and gradients;
 //    Tolerance 1e-12 relative: the two differ by round-off only (measured
 //    below 1e-14), while a wrong sign, monomial or transposed J^{-1} is
 //    off by O(1).
@@ -28,6 +31,7 @@
 //    return NaN strains from operator[] instead of plausible values.
 #include "tests.h"
 
+#include <algorithm>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -96,7 +100,8 @@ namespace
     const MappingQ1<dim> mapping;
     const FE_Q<dim>      fe(1);
     double grad_error = 0., grad_scale = 0., sym_error = 0., force_error = 0.,
-           force_scale = 0., sym_force_error = 0.;
+           force_scale = 0., sym_force_error = 0., shape_error = 0.,
+           shape_scale = 0.;
     double K[n_terms][dim * dim], K_sym[n_terms][n_sym];
     affine.gradient_terms(u, K);
     AffineQ1Cell<dim>::symmetrize_terms(K, K_sym);
@@ -116,8 +121,20 @@ namespace
         FEValues<dim> fe_values(mapping,
                                 fe,
                                 Quadrature<dim>(std::vector<Point<dim>>{xi}),
-                                update_gradients);
+                                update_values | update_gradients);
         fe_values.reinit(cell);
+        double         N[n_vertices];
+        Tensor<1, dim> grad_N[n_vertices];
+        affine.shape_functions(xi, N, grad_N);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            shape_error =
+              std::max({shape_error,
+                        std::abs(N[v] - fe_values.shape_value(v, 0)),
+                        (grad_N[v] - fe_values.shape_grad(v, 0)).norm()});
+            shape_scale =
+              std::max({shape_scale, 1., fe_values.shape_grad(v, 0).norm()});
+          }
         // FE_Q(1)'s shape function v belongs to vertex v.
         Tensor<2, dim> grad_ref;
         for (unsigned int v = 0; v < n_vertices; ++v)
@@ -163,6 +180,9 @@ namespace
 
     const double tolerance = 1e-12;
     deallog << "dim = " << dim << std::endl;
+    deallog << "  N and grad N against FEValues <= 1e-12 relative: "
+            << (shape_error <= tolerance * shape_scale ? "PASS" : "FAIL")
+            << std::endl;
     deallog << "  grad u against FEValues <= 1e-12 relative: "
             << (grad_error <= tolerance * grad_scale ? "PASS" : "FAIL")
             << std::endl;
