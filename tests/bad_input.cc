@@ -146,6 +146,65 @@ main(int argc, char *argv[])
             "end\n",
             /*run=*/true);
 
+  // A saturated body (Pore fluid): impossible values and combinations.
+  const std::string pore_fluid  = "subsection Pore fluid\n"
+                                  "  set Enabled = true\n"
+                                  "  set Drained boundaries = 3\n";
+  const std::string run_briefly = "subsection Boundary conditions\n"
+                                  "  set Dirichlet boundaries = 2:xy\n"
+                                  "end\n"
+                                  "subsection Output\n"
+                                  "  set Interval = 0\n"
+                                  "  set Directory = bad-input-out\n"
+                                  "end\n"
+                                  "subsection Load stepping\n"
+                                  "  set Number of steps = 1\n";
+  try_input("negative mobility",
+            "Mobility",
+            pore_fluid + "  set Mobility = -1\nend\n");
+  try_input("zero mobility",
+            "Mobility",
+            pore_fluid + "  set Mobility = 0\nend\n");
+  try_input("Biot coefficient above 1",
+            "Biot coefficient",
+            pore_fluid + "  set Biot coefficient = 1.5\nend\n");
+  try_input("drained boundary id that does not exist",
+            "Drained boundaries",
+            pore_fluid + "  set Drained boundaries = 3, 7\nend\n");
+  try_input("pore fluid at finite strain",
+            "Kinematics",
+            pore_fluid + "end\n"
+                         "subsection Material points\n"
+                         "  set Kinematics = finite strain\n"
+                         "end\n"
+                         "subsection Material\n"
+                         "  set Model = hencky\n"
+                         "end\n");
+  try_input("pore fluid with GIMP",
+            "Shape functions",
+            pore_fluid +
+              "end\n"
+              "subsection Material points\n"
+              "  set Shape functions = cpGIMP\n"
+              "end\n" +
+              run_briefly + "end\n",
+            /*run=*/true);
+  try_input("time that runs backwards",
+            "time",
+            pore_fluid + "end\n" + run_briefly +
+              "  set Final load factor = -1\nend\n",
+            /*run=*/true);
+  try_input("drained boundary that no material touches",
+            "Drained boundaries",
+            pore_fluid +
+              "end\n"
+              "subsection Material points\n"
+              "  set Region lower corner = 0, 0\n"
+              "  set Region upper corner = 1, 0.5\n"
+              "end\n" +
+              run_briefly + "end\n",
+            /*run=*/true);
+
   // A missing file: deal.II's message names it.
   try
     {

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <iomanip>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
@@ -20,6 +21,7 @@ namespace qsmpm
     NewtonParameters::declare_parameters(prm);
     EquilibriumAudit<dim>::Parameters::declare_parameters(prm);
     OutputWriter<dim>::Parameters::declare_parameters(prm);
+    PorePressureSolver<dim>::Parameters::declare_parameters(prm);
   }
 
 
@@ -34,6 +36,7 @@ namespace qsmpm
     nonlinear_solver.parse_parameters(prm);
     equilibrium_check.parse_parameters(prm);
     output.parse_parameters(prm);
+    pore_fluid.parse_parameters(prm);
   }
 
 
@@ -133,7 +136,24 @@ namespace qsmpm
   {
     residual.reset();
     material_points.reset();
-    model           = std::move(new_model);
+    pore_pressure.reset();
+    model = std::move(new_model);
+    // A saturated body: the model given is the skeleton's, the points
+    // carry the total stress and the pore pressure.
+    const auto &pore_fluid = prm_values.pore_fluid;
+    if (pore_fluid.enabled)
+      {
+        pore_fluid.check();
+        AssertThrow(!prm_values.material_points.formulation.finite_strain(),
+                    ExcMessage("Pore fluid: only at small strain so far "
+                               "(Kinematics = small strain)."));
+        model =
+          std::make_unique<PoroelasticModel<dim>>(std::move(model),
+                                                  pore_fluid.biot_coefficient,
+                                                  pore_fluid.initial_pressure);
+        pore_pressure =
+          std::make_unique<PorePressureSolver<dim>>(pore_fluid, communicator);
+      }
     material_points = std::make_unique<MaterialPointSet<dim>>(
       background_grid,
       *model,
@@ -361,7 +381,7 @@ namespace qsmpm
       }
     step_constraints.distribute(du);
 
-    {
+    const auto solve = [&](NewtonReport &solve_report) {
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
       const StepOperator<dim> op(*residual,
                                  step_constraints,
@@ -372,10 +392,37 @@ namespace qsmpm
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
-      report = newton.solve(op, du, R, evaluation);
-      op.reject_inverted_points(evaluation, report);
-      preconditioner_reuse.count_use(report, solver_parameters());
-    }
+      solve_report = newton.solve(op, du, R, evaluation);
+      op.reject_inverted_points(evaluation, solve_report);
+      preconditioner_reuse.count_use(solve_report, solver_parameters());
+    };
+    coupling_iterations = 0;
+    if (pore_pressure)
+      {
+        // The flow matrix of the step; the points' pressure iterate starts
+        // from their committed pressure (also after a cut-back).
+        TimerOutput::Scope scope(timer_output, "pore pressure");
+        pore_pressure->begin_step(background_grid,
+                                  cache,
+                                  points(),
+                                  dynamic_cast<const PoroelasticModel<dim> &>(
+                                    *model),
+                                  t_new - t_old);
+        residual->point_state_changed();
+        // The step's load may not change at all (consolidation under a
+        // constant load): what moves the body is the change of the pore
+        // pressure. Its solves stop at 1e-2 of the coupling tolerance times
+        // the forces in the body (PorePressureSolver::force_scale()) instead
+        // of relative to a residual that is then round-off; the pressure
+        // change that the coupling measures is then not blurred by the
+        // displacement solves.
+        newton_parameters.residual_floor =
+          std::max(newton_parameters.residual_floor,
+                   pore_pressure->force_scale() * coupling_floor_factor());
+      }
+    solve(report);
+    if (pore_pressure && report.converged)
+      couple_pore_pressure(newton_parameters, solve, report);
     // A step that failed (and is tried again with a smaller increment, or
     // a new preconditioner) starts from the linear predictor.
     last_load_increment = 0.;
@@ -391,6 +438,77 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  QuasiStaticProblem<dim>::coupling_floor_factor() const
+  {
+    // The stopping target is Tolerance times the floor.
+    return 1e-2 * prm_values.pore_fluid.coupling_tolerance /
+           prm_values.nonlinear_solver.tolerance;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::couple_pore_pressure(
+    NewtonParameters                          &newton_parameters,
+    const std::function<void(NewtonReport &)> &solve,
+    NewtonReport                              &report)
+  {
+    // Fixed-stress split: flow with the volume change of the last
+    // displacement, then the displacement with the new pressure, until the
+    // pressure stops changing. Each solve starts from the last increment.
+    const auto &parameters = prm_values.pore_fluid;
+    newton_parameters.initial_guess =
+      NewtonParameters::InitialGuess::extrapolation;
+    // In the first step of a load the forces in the body are those of the
+    // load increment.
+    newton_parameters.residual_floor =
+      std::max(newton_parameters.residual_floor,
+               std::max(report.force_level, pore_pressure->force_scale()) *
+                 coupling_floor_factor());
+    VectorType du_ghosted(residual->ghosted_layout());
+    for (;;)
+      {
+        double change = 0.;
+        {
+          TimerOutput::Scope scope(timer_output, "pore pressure");
+          du_ghosted = du;
+          change     = pore_pressure->update(cache, points(), du_ghosted);
+          residual->point_state_changed();
+        }
+        ++coupling_iterations;
+        NewtonReport next;
+        solve(next);
+        report.converged = next.converged;
+        report.failure   = next.failure;
+        report.newton_iterations += next.newton_iterations;
+        report.linear_iterations += next.linear_iterations;
+        report.inexact_linear_solves += next.inexact_linear_solves;
+        report.line_search_steps += next.line_search_steps;
+        report.final_residual = next.final_residual;
+        if (!report.converged || change <= parameters.coupling_tolerance)
+          return;
+        if (coupling_iterations >= parameters.max_coupling_iterations)
+          {
+            std::ostringstream message;
+            message << "the fixed-stress iteration of the pore pressure did "
+                       "not converge in "
+                    << coupling_iterations
+                    << " iterations (Pore fluid/Maximum coupling iterations; "
+                       "the last changed the pressure by "
+                    << std::setprecision(3) << change
+                    << " of its largest value)";
+            report.converged = false;
+            report.failure   = message.str();
+            return;
+          }
+      }
+  }
+
+
+
+  template <int dim>
   bool
   QuasiStaticProblem<dim>::advance_path_following(const LoadStepper &stepper,
                                                   NewtonReport      &report,
@@ -398,6 +516,10 @@ namespace qsmpm
                                                   double            &force_new)
   {
     const double t_old = stepper.current();
+    AssertThrow(!pore_pressure,
+                ExcMessage("Pore fluid: path following (Load stepping/"
+                           "Control) is not available with a pore fluid; "
+                           "the load factor is the time."));
     PathFollowingSetup<dim>::check_problem(stepper, bcs, *model);
 
     // The constraints of a unit load-factor increment: their
@@ -713,8 +835,12 @@ namespace qsmpm
     last_step        = stepper.step();
     last_load_factor = t_new;
     wall_timer.stop();
-    run_state.reports.push_back(
-      {stepper.step(), t_new, cut_backs, newton, wall_timer.wall_time()});
+    run_state.reports.push_back({stepper.step(),
+                                 t_new,
+                                 cut_backs,
+                                 newton,
+                                 wall_timer.wall_time(),
+                                 coupling_iterations});
     progress << run_state.reports.back().progress_line(last_audit.imbalance())
              << std::endl;
     const bool stop = step_callback && !step_callback(run_state.reports.back());

@@ -16,6 +16,8 @@ namespace qsmpm
          << newton.final_residual << "  lost " << std::setprecision(1) << lost
          << std::defaultfloat << "  " << std::fixed << std::setprecision(3)
          << wall_time << " s";
+    if (coupling_iterations > 0)
+      line << "  coupling " << coupling_iterations;
     if (cut_backs > 0)
       line << "  cut-backs " << cut_backs;
     if (newton.line_search_steps > 0)

@@ -134,6 +134,17 @@ namespace qsmpm
     void
     commit(const TrilinosWrappers::MPI::Vector &du_ghosted);
 
+    /**
+     * Say that the committed fields of the points changed within the step
+     * (PorePressureSolver writes the pressure iterate into them): the
+     * residual's packed copy of them is made anew at the next evaluate().
+     */
+    void
+    point_state_changed()
+    {
+      packed_generation = std::numeric_limits<unsigned long>::max();
+    }
+
     /// A vector with the locally relevant layout (for ShapeCache::reinit).
     const TrilinosWrappers::MPI::Vector &
     ghosted_layout() const;

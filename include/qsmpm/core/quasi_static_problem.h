@@ -30,6 +30,7 @@
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
+#include <qsmpm/porous/pore_pressure_solver.h>
 #include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
 #include <qsmpm/solvers/preconditioner_reuse.h>
@@ -76,12 +77,13 @@ namespace qsmpm
      */
     struct Parameters
     {
-      typename BackgroundGrid<dim>::Parameters   geometry;
-      typename MaterialPointSet<dim>::Parameters material_points;
-      LoadStepper::Parameters                    load_stepping;
-      NewtonParameters                           nonlinear_solver;
-      typename EquilibriumAudit<dim>::Parameters equilibrium_check;
-      typename OutputWriter<dim>::Parameters     output;
+      typename BackgroundGrid<dim>::Parameters     geometry;
+      typename MaterialPointSet<dim>::Parameters   material_points;
+      LoadStepper::Parameters                      load_stepping;
+      NewtonParameters                             nonlinear_solver;
+      typename EquilibriumAudit<dim>::Parameters   equilibrium_check;
+      typename OutputWriter<dim>::Parameters       output;
+      typename PorePressureSolver<dim>::Parameters pore_fluid;
 
       /// Declare every subsection, including "Material" and "Boundary
       /// conditions" with all registered models.
@@ -273,6 +275,24 @@ namespace qsmpm
     void
     audit_equilibrium(const double t_new);
 
+    /**
+     * The fixed-stress iteration of a step with a pore fluid, after the
+     * first displacement @p solve: flow and displacement in turn until the
+     * pressure changes by less than Pore fluid/Coupling tolerance. Adds the
+     * iterations to @p report; not converged if a solve fails or the
+     * iteration does not converge.
+     */
+    void
+    couple_pore_pressure(NewtonParameters &newton_parameters,
+                         const std::function<void(NewtonReport &)> &solve,
+                         NewtonReport                              &report);
+
+    /// With a pore fluid: the displacement solves stop at 1e-2 Coupling
+    /// tolerance of the forces in the body; the residual floor is this
+    /// factor times those forces.
+    double
+    coupling_floor_factor() const;
+
     /// Commit du: point state, positions.
     void
     commit_step();
@@ -329,12 +349,16 @@ namespace qsmpm
     Parameters                              prm_values;
     BackgroundGrid<dim>                     background_grid;
     std::unique_ptr<ConstitutiveModel<dim>> model;
-    std::unique_ptr<MaterialPointSet<dim>>  material_points;
-    BoundaryDescriptor<dim>                 bcs;
-    DisplacementConstraints<dim>            displacement_constraints;
-    ExternalForceAssembler<dim>             external_force;
-    SurfaceTractions<dim>                   surface_tractions;
-    RigidContact<dim>                       rigid_contact;
+    /// With a pore fluid: the pressure on the grid (set_model() makes it).
+    std::unique_ptr<PorePressureSolver<dim>> pore_pressure;
+    /// Fixed-stress iterations of the last step advance() took.
+    unsigned int                           coupling_iterations = 0;
+    std::unique_ptr<MaterialPointSet<dim>> material_points;
+    BoundaryDescriptor<dim>                bcs;
+    DisplacementConstraints<dim>           displacement_constraints;
+    ExternalForceAssembler<dim>            external_force;
+    SurfaceTractions<dim>                  surface_tractions;
+    RigidContact<dim>                      rigid_contact;
     /// The material's force on each rigid body in the last accepted step.
     std::vector<typename RigidContact<dim>::BodyLoad> body_loads;
     /// The names of the rigid bodies.

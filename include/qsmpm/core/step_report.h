@@ -17,6 +17,8 @@ namespace qsmpm
     unsigned int cut_backs;
     NewtonReport newton;
     double       wall_time;
+    /// Fixed-stress iterations of a step with a pore fluid (0: none).
+    unsigned int coupling_iterations = 0;
 
     /**
      * The progress line of the step: load factor, Newton and GMRES

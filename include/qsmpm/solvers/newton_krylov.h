@@ -36,6 +36,9 @@ namespace qsmpm
     std::vector<double> residual_history;
     /// Why the solve failed (empty if it converged).
     std::string failure;
+    /// The force level of the stopping test (internal::stopping_target())
+    /// at the first iterate: ||R|| there.
+    double force_level = 0.;
   };
 
 
@@ -277,6 +280,7 @@ namespace qsmpm
           force_level = R.l2_norm();
         }
       report.initial_residual = reference;
+      report.force_level      = force_level;
       report.residual_history.push_back(norm);
       const double target =
         internal::stopping_target(parameters, reference, force_level);

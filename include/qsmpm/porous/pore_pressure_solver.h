@@ -1,0 +1,174 @@
+#ifndef qsmpm_porous_pore_pressure_solver_h
+#define qsmpm_porous_pore_pressure_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/base/parameter_struct.h>
+#include <qsmpm/grid/background_grid.h>
+#include <qsmpm/particles/material_point_set.h>
+#include <qsmpm/particles/shape_cache.h>
+#include <qsmpm/porous/poroelastic_model.h>
+#include <vector>
+
+namespace qsmpm
+{
+  /**
+   * The pore pressure of a saturated porous body (Biot consolidation) on
+   * the background grid, coupled to the displacement by the fixed-stress
+   * split.
+   *
+   * <h3>Equations</h3>
+   * Mass balance of the pore fluid, with Darcy's law q = -kappa grad p
+   * (kappa = k / mu_f, the hydraulic conductivity over the unit weight of
+   * the fluid), in the implicit Euler form of a load step of length dt
+   * (the load factor is the time):
+   *
+   *   b d(eps_v) + (p - p_n) / M + dt div q = 0,
+   *
+   * b the Biot coefficient, M the Biot modulus (1/M = 0: incompressible
+   * grains and fluid), d(eps_v) = tr d(eps) the volume change of the step.
+   * Its weak form is integrated with the material points as quadrature
+   * points, with the grid's Q1 functions N_i for the pressure: row i,
+   *
+   *   sum_p Omega_p [ N_i (b d(eps_v) + (p - p_n) / M)
+   *                  + dt kappa grad N_i . grad p
+   *                  + beta_p grad N_i . (grad p - grad p_n) ] = 0,
+   *
+   * where the last term is the stabilization of the equal-order (Q1-Q1)
+   * pair of Rodrigo, Gaspar, Hu and Zikatanov (2016), beta_p = f h^2 / M_c
+   * with M_c the constrained modulus of the point's skeleton (lambda + 2 mu
+   * for isotropic elasticity) and f the entry "Stabilization factor" (1/4
+   * by default: on Terzaghi's column it removes the overshoot of 32 % after
+   * a sudden load, test terzaghi_consolidation). The point
+   * carries p_n and grad p_n (PoroelasticModel); nodes whose support holds
+   * no point have p = 0 (a free surface inside the grid drains, within a
+   * cell), and so do the nodes on the "Drained boundaries". Other boundaries
+   * are impermeable.
+   *
+   * <h3>Fixed-stress split</h3>
+   * Within a load step the mechanical problem (with p as data) and the
+   * flow problem are solved in turn (Kim, Tchelepi and Juanes 2011;
+   * Mikelic and Wheeler 2013): the flow problem of iteration k + 1 takes
+   * the volume change from the displacement of iteration k and adds
+   * L_p (p^{k+1} - p^k) to the storage term, L_p = b^2 / K_p with K_p the
+   * drained bulk modulus of the point's skeleton (its tangent, 2D: plane
+   * strain). The iteration converges for any such L; the flow matrix is
+   * the same for all iterations of a step and is assembled, with its AMG,
+   * once per step.
+   */
+  template <int dim>
+  class PorePressureSolver
+  {
+  public:
+    /// The subsection "Pore fluid".
+    struct Parameters : ParameterStruct<Parameters>
+    {
+      bool                      enabled          = false;
+      double                    biot_coefficient = 1.;
+      double                    biot_modulus     = 0.;
+      double                    mobility         = 1.;
+      double                    initial_pressure = 0.;
+      std::vector<unsigned int> drained_boundaries;
+      double                    stabilization_factor    = 0.25;
+      double                    coupling_tolerance      = 1e-5;
+      unsigned int              max_coupling_iterations = 100;
+
+      /// Declare the entries, bound to the members.
+      void
+      add_parameters(ParameterHandler &prm);
+
+      /// Stop with a message naming the entry if a value is impossible.
+      void
+      check() const;
+    };
+
+    PorePressureSolver(const Parameters &parameters, const MPI_Comm comm);
+
+    /**
+     * Set up the flow problem of a load step of length @p dt on the points
+     * of @p cache: constraints, the matrix and its AMG. The points' pressure
+     * iterate starts from their committed pressure.
+     */
+    void
+    begin_step(const BackgroundGrid<dim>   &grid,
+               const ShapeCache<dim>       &cache,
+               MaterialPointSet<dim>       &points,
+               const PoroelasticModel<dim> &model,
+               const double                 dt);
+
+    /**
+     * One flow solve of the fixed-stress iteration with the displacement
+     * increment @p du_ghosted (ghosted layout of the grid): writes the new
+     * pressure iterate and its gradient into the points, and returns the
+     * largest change of a nodal pressure over the larger of the largest
+     * nodal pressure and the largest stress component of the points at the
+     * start of the step (0 if all are 0).
+     */
+    double
+    update(const ShapeCache<dim>               &cache,
+           MaterialPointSet<dim>               &points,
+           const TrilinosWrappers::MPI::Vector &du_ghosted);
+
+    /// The nodal pressures of the last update() (ghosted).
+    const TrilinosWrappers::MPI::Vector &
+    pressure() const
+    {
+      return p_ghosted;
+    }
+
+    /// The pressure's degrees of freedom.
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /**
+     * The size of the nodal forces in the body at the start of the step:
+     * the largest stress component or pore pressure of the points times
+     * the area of a cell face, at every degree of freedom of the grid,
+     * h^(dim-1) sqrt(n_dofs) max |sigma| (0 before any load). The
+     * displacement solves of the fixed-stress iteration stop relative to
+     * it.
+     */
+    double
+    force_scale() const
+    {
+      return forces;
+    }
+
+    /// CG iterations of the last update().
+    unsigned int
+    last_linear_iterations() const
+    {
+      return linear_iterations;
+    }
+
+  private:
+    const Parameters                  parameters;
+    MPI_Comm                          communicator;
+    FE_Q<dim>                         fe;
+    DoFHandler<dim>                   dof_handler;
+    IndexSet                          owned, relevant;
+    AffineConstraints<double>         constraints;
+    TrilinosWrappers::SparseMatrix    matrix;
+    TrilinosWrappers::PreconditionAMG amg;
+    TrilinosWrappers::MPI::Vector     p_owned, p_ghosted, rhs;
+    /// Per point of the cache: Omega_p, L_p and beta_p of the step.
+    std::vector<double> volume, fixed_stress, stabilization;
+    unsigned int        state_offset      = 0;
+    double              b                 = 1.;
+    unsigned int        linear_iterations = 0;
+    /// The largest stress component of the points at the start of the step.
+    double stress_scale = 0.;
+    /// force_scale().
+    double forces = 0.;
+  };
+} // namespace qsmpm
+
+#endif

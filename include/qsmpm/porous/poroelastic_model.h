@@ -1,0 +1,115 @@
+#ifndef qsmpm_porous_poroelastic_model_h
+#define qsmpm_porous_poroelastic_model_h
+
+#include <memory>
+#include <qsmpm/materials/constitutive_model.h>
+
+namespace qsmpm
+{
+  /**
+   * A saturated porous solid: Terzaghi-Biot effective stress around any
+   * model of the skeleton,
+   *
+   *   sigma = sigma' - b p I,
+   *
+   * with sigma' the skeleton's (effective) stress and p the pore pressure.
+   * The point's stress field holds the total stress sigma, which is what
+   * the residual integrates and the equilibrium check audits; the skeleton
+   * model sees its own effective stress, sigma + b p_n I.
+   *
+   * Within a load step the pore pressure is data: PorePressureSolver writes
+   * the current iterate p_k (and its gradient) into each point's fields
+   * (pressure_offset() and following), the residual and the tangent then
+   * see a fixed p, and the Jacobian is the skeleton's. Committing the step
+   * makes p_k the committed pressure p_n of the next step.
+   *
+   * The fields after the skeleton's own: p_n, p_k, grad p_n (dim), grad
+   * p_k (dim). Output: the skeleton's fields and "pore_pressure" (the
+   * committed p); the effective stress is the output stress plus b p I.
+   */
+  template <int dim>
+  class PoroelasticModel : public ConstitutiveModel<dim>
+  {
+  public:
+    /// Wrap @p skeleton, with Biot coefficient @p biot_coefficient.
+    PoroelasticModel(std::unique_ptr<ConstitutiveModel<dim>> skeleton,
+                     const double                            biot_coefficient,
+                     const double initial_pore_pressure);
+
+    /// The skeleton model.
+    const ConstitutiveModel<dim> &
+    skeleton() const
+    {
+      return *skeleton_model;
+    }
+
+    /// Offset of p_n among the model's fields; p_k follows, then grad p_n
+    /// and grad p_k.
+    unsigned int
+    pressure_offset() const
+    {
+      return n_skeleton;
+    }
+
+    double
+    biot_coefficient() const
+    {
+      return b;
+    }
+
+    std::vector<StateField>
+    state_fields() const override;
+
+    void
+    initialize_point_state(const Point<dim>           &x,
+                           const unsigned int          material_id,
+                           const types::particle_index id,
+                           ArrayView<double>           state) const override;
+
+    std::vector<StateField>
+    output_fields() const override;
+
+    void
+    compute_output_fields(const PointState<dim> &point,
+                          ArrayView<double>      values) const override;
+
+    void
+    update_stress(const PointState<dim>         &old,
+                  const SymmetricTensor<2, dim> &strain_increment,
+                  SymmetricTensor<2, dim>       &stress,
+                  ArrayView<double>              new_state) const override;
+
+    SymmetricTensor<4, dim>
+    tangent(const PointState<dim> &old) const override;
+
+    SymmetricTensor<4, dim>
+    consistent_tangent(
+      const PointState<dim>         &old,
+      const SymmetricTensor<2, dim> &strain_increment) const override;
+
+    double
+    dissipation(const PointState<dim>  &old,
+                ArrayView<const double> new_state) const override;
+
+    bool
+    computes_dissipation() const override;
+
+    bool
+    is_elastic() const override;
+
+    std::string
+    name() const override;
+
+  private:
+    /// The skeleton's view of a point: effective stress, its own fields.
+    PointState<dim>
+    skeleton_state(const PointState<dim> &point) const;
+
+    std::unique_ptr<ConstitutiveModel<dim>> skeleton_model;
+    const double                            b;
+    const double                            p_initial;
+    const unsigned int                      n_skeleton;
+  };
+} // namespace qsmpm
+
+#endif

@@ -1,0 +1,433 @@
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <qsmpm/porous/pore_pressure_solver.h>
+
+namespace qsmpm
+{
+  template <int dim>
+  void
+  PorePressureSolver<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Pore fluid");
+    {
+      prm.add_parameter("Enabled",
+                        enabled,
+                        "Saturated porous body: a pore pressure p on the "
+                        "grid, Darcy flow, effective stress sigma = sigma' - "
+                        "b p I (the material model is the skeleton's). The "
+                        "load factor is the time (s): each load step is a "
+                        "time step of implicit Euler. Small strain and "
+                        "linear shape functions only.",
+                        Patterns::Bool());
+      prm.add_parameter("Biot coefficient",
+                        biot_coefficient,
+                        "b in (0, 1]; 1 for incompressible grains.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Biot modulus",
+                        biot_modulus,
+                        "M (stress): 1/M = n/K_f + (b - n)/K_s, the storage "
+                        "of the pore space per unit pressure. 0: "
+                        "incompressible grains and fluid (1/M = 0).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Mobility",
+                        mobility,
+                        "kappa = k / mu_f (area / (stress time)): the "
+                        "permeability over the fluid's viscosity, or the "
+                        "hydraulic conductivity over the fluid's unit "
+                        "weight; Darcy flux q = -kappa grad p.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Initial pore pressure",
+                        initial_pressure,
+                        "p of every point at the start (stress units).",
+                        Patterns::Double());
+      prm.add_parameter("Drained boundaries",
+                        drained_boundaries,
+                        "Boundary ids of the grid where p = 0 (box: 0/1 = "
+                        "x min/max, 2/3 = y, 4/5 = z). The other boundaries "
+                        "are impermeable; nodes of the grid without material "
+                        "have p = 0.",
+                        Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Stabilization factor",
+                        stabilization_factor,
+                        "f of the stabilization beta = f h^2 / M_c of the "
+                        "equal-order pressure (Rodrigo et al. 2016; M_c the "
+                        "constrained modulus of the skeleton, h the cell "
+                        "size); 1/4 removes the overshoot of the pressure "
+                        "after a sudden load on Terzaghi's column; 0 "
+                        "switches it off.",
+                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Coupling tolerance",
+        coupling_tolerance,
+        "The fixed-stress iteration of a step stops when no "
+        "nodal pressure changes by more than this times the "
+        "largest nodal pressure or stress component at the "
+        "start of the step, whichever is larger. The displacement solves "
+        "stop at Nonlinear solver/Tolerance (1e-6) of the "
+        "forces, which blurs the pressure at about that "
+        "level: keep this ten times larger.",
+        Patterns::Double(0.));
+      prm.add_parameter("Maximum coupling iterations",
+                        max_coupling_iterations,
+                        "Fixed-stress iterations of a step before it counts "
+                        "as not converged (and is cut back).",
+                        Patterns::Integer(1));
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::Parameters::check() const
+  {
+    if (!enabled)
+      return;
+    AssertThrow(biot_coefficient > 0. && biot_coefficient <= 1.,
+                ExcMessage("Pore fluid: <Biot coefficient> must lie in (0, "
+                           "1]."));
+    AssertThrow(mobility > 0.,
+                ExcMessage("Pore fluid: <Mobility> must be positive (an "
+                           "impermeable body is undrained: give a small "
+                           "mobility or no pore fluid)."));
+    AssertThrow(coupling_tolerance > 0.,
+                ExcMessage("Pore fluid: <Coupling tolerance> must be "
+                           "positive."));
+    for (const unsigned int id : drained_boundaries)
+      AssertThrow(id < 2 * dim,
+                  ExcMessage("Pore fluid: <Drained boundaries> lists " +
+                             std::to_string(id) + ", but a box in " +
+                             std::to_string(dim) +
+                             "D has the boundary ids 0 "
+                             "to " +
+                             std::to_string(2 * dim - 1) + "."));
+  }
+
+
+
+  template <int dim>
+  PorePressureSolver<dim>::PorePressureSolver(const Parameters &parameters,
+                                              const MPI_Comm    comm)
+    : parameters(parameters)
+    , communicator(comm)
+    , fe(1)
+  {
+  }
+
+
+
+  namespace
+  {
+    /// sum_ij C_iijj / dim^2: the drained bulk modulus of the tangent (in 2D
+    /// the plane-strain one, lambda + mu).
+    template <int dim>
+    double
+    bulk_modulus(const SymmetricTensor<4, dim> &C)
+    {
+      double K = 0.;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          K += C[i][i][j][j];
+      return K / (dim * dim);
+    }
+
+    /// The mean of C_dddd: the constrained modulus (lambda + 2 mu).
+    template <int dim>
+    double
+    constrained_modulus(const SymmetricTensor<4, dim> &C)
+    {
+      double M = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        M += C[d][d][d][d];
+      return M / dim;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::begin_step(const BackgroundGrid<dim>   &grid,
+                                      const ShapeCache<dim>       &cache,
+                                      MaterialPointSet<dim>       &points,
+                                      const PoroelasticModel<dim> &model,
+                                      const double                 dt)
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    AssertThrow(cache.stencil_size() == n_vertices,
+                ExcMessage("Pore fluid: needs <Shape functions> = linear."));
+    AssertThrow(dt >= 0.,
+                ExcMessage("Pore fluid: the load factor is the time and must "
+                           "not decrease."));
+    b            = model.biot_coefficient();
+    state_offset = points.get_offsets().state + model.pressure_offset();
+
+    const auto &tria = grid.get_triangulation();
+    dof_handler.reinit(tria);
+    dof_handler.distribute_dofs(fe);
+    owned    = dof_handler.locally_owned_dofs();
+    relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    // The nodes whose support holds material on some rank.
+    TrilinosWrappers::MPI::Vector        has_material(owned, communicator);
+    std::vector<types::global_dof_index> dofs(n_vertices);
+    const unsigned int                   n_points = cache.n_points();
+    volume.resize(n_points);
+    fixed_stress.resize(n_points);
+    stabilization.resize(n_points);
+    const double h = grid.min_cell_size();
+    stress_scale   = 0.;
+    const double inverse_M =
+      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+    const auto                                 &offsets = points.get_offsets();
+    const typename PointStateBatch<dim>::Layout layout{
+      offsets.strain,
+      offsets.stress,
+      offsets.volume,
+      offsets.material_id,
+      offsets.state,
+      model.n_state_components()};
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto                &range = cache.cell(c);
+        const PointStateBatch<dim> batch(layout,
+                                         cache.property_arrays(
+                                           range.first_point),
+                                         &cache.position(range.first_point),
+                                         range.end_point - range.first_point);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            double                       *data = cache.properties(p, points);
+            const SymmetricTensor<4, dim> C =
+              model.tangent(batch[p - range.first_point]);
+            const double K  = bulk_modulus(C);
+            const double Mc = constrained_modulus(C);
+            AssertThrow(K > 0. && Mc > 0.,
+                        ExcMessage("Pore fluid: the skeleton's tangent has no "
+                                   "positive bulk modulus."));
+            for (unsigned int k = 0;
+                 k < SymmetricTensor<2, dim>::n_independent_components;
+                 ++k)
+              stress_scale =
+                std::max(stress_scale, std::abs(data[offsets.stress + k]));
+            stress_scale = std::max(stress_scale, std::abs(data[state_offset]));
+            volume[p]    = data[offsets.volume];
+            fixed_stress[p]  = b * b / K;
+            stabilization[p] = parameters.stabilization_factor * h * h / Mc;
+            // The iteration starts from the committed pressure (also after
+            // a cut-back).
+            double *state = data + state_offset;
+            state[1]      = state[0];
+            for (unsigned int d = 0; d < dim; ++d)
+              state[2 + dim + d] = state[2 + d];
+          }
+      }
+    stress_scale = Utilities::MPI::max(stress_scale, communicator);
+    forces       = stress_scale * std::pow(h, dim - 1) *
+             std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
+    // Ghost nodes of other ranks' cells reach the owner by the sum.
+    {
+      TrilinosWrappers::MPI::Vector sums;
+      sums.reinit(owned, relevant, communicator, true);
+      for (unsigned int c = 0; c < cache.n_cells(); ++c)
+        {
+          const auto &range = cache.cell(c);
+          const typename DoFHandler<dim>::active_cell_iterator cell(
+            &tria, range.cell->level(), range.cell->index(), &dof_handler);
+          cell->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            sums(dof) += 1.;
+        }
+      sums.compress(VectorOperation::add);
+      has_material = sums;
+    }
+    TrilinosWrappers::MPI::Vector material_ghosted(owned,
+                                                   relevant,
+                                                   communicator);
+    material_ghosted = has_material;
+
+    constraints.clear();
+    constraints.reinit(relevant);
+    for (const auto dof : relevant)
+      if (material_ghosted(dof) == 0.)
+        constraints.add_line(dof);
+    for (const unsigned int id : parameters.drained_boundaries)
+      {
+        // A drained boundary that no material touches drains nothing: a
+        // wrong id, or a body that has left that side of the grid.
+        std::map<types::global_dof_index, double> values;
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 id,
+                                                 Functions::ZeroFunction<dim>(),
+                                                 values);
+        double touched = 0.;
+        for (const auto &[dof, value] : values)
+          {
+            (void)value;
+            if (material_ghosted(dof) > 0.)
+              touched = 1.;
+            if (!constraints.is_constrained(dof))
+              constraints.add_line(dof);
+          }
+        AssertThrow(Utilities::MPI::max(touched, communicator) > 0.,
+                    ExcMessage("Pore fluid: <Drained boundaries> lists " +
+                               std::to_string(id) +
+                               ", but no material touches that boundary of "
+                               "the grid."));
+      }
+    constraints.close();
+
+    TrilinosWrappers::SparsityPattern pattern(owned,
+                                              owned,
+                                              relevant,
+                                              communicator);
+    DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
+    pattern.compress();
+    matrix.reinit(pattern);
+
+    // The matrix of the step: storage, fixed-stress and stabilization terms
+    // and the conductance.
+    FullMatrix<double>                    cell_matrix(n_vertices, n_vertices);
+    typename ShapeCache<dim>::ValueBuffer N_buffer;
+    typename ShapeCache<dim>::GradientBuffer grad_buffer;
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto &range = cache.cell(c);
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &tria, range.cell->level(), range.cell->index(), &dof_handler);
+        cell->get_dof_indices(dofs);
+        cell_matrix = 0.;
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double         *N     = cache.values(c, p, N_buffer);
+            const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+            const double storage = volume[p] * (inverse_M + fixed_stress[p]);
+            const double conductance =
+              volume[p] * (dt * parameters.mobility + stabilization[p]);
+            for (unsigned int i = 0; i < n_vertices; ++i)
+              for (unsigned int j = 0; j < n_vertices; ++j)
+                cell_matrix(i, j) +=
+                  storage * N[i] * N[j] + conductance * (gradN[i] * gradN[j]);
+          }
+        constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+      }
+    matrix.compress(VectorOperation::add);
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = false;
+    data.smoother_sweeps       = 2;
+    amg.initialize(matrix, data);
+
+    p_owned.reinit(owned, communicator);
+    rhs.reinit(owned, communicator);
+    p_ghosted.reinit(owned, relevant, communicator);
+  }
+
+
+
+  template <int dim>
+  double
+  PorePressureSolver<dim>::update(
+    const ShapeCache<dim>               &cache,
+    MaterialPointSet<dim>               &points,
+    const TrilinosWrappers::MPI::Vector &du_ghosted)
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const auto            &tria       = dof_handler.get_triangulation();
+    const double           inverse_M =
+      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+    std::vector<types::global_dof_index>     dofs(n_vertices);
+    Vector<double>                           cell_rhs(n_vertices);
+    typename ShapeCache<dim>::ValueBuffer    N_buffer;
+    typename ShapeCache<dim>::GradientBuffer grad_buffer;
+    const double *du = du_ghosted.trilinos_vector()[0];
+
+    rhs = 0.;
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto &range = cache.cell(c);
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &tria, range.cell->level(), range.cell->index(), &dof_handler);
+        cell->get_dof_indices(dofs);
+        const int *local = cache.local_dofs(c);
+        cell_rhs         = 0.;
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double         *N     = cache.values(c, p, N_buffer);
+            const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+            double                eps_v = 0.;
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              for (unsigned int d = 0; d < dim; ++d)
+                eps_v += gradN[k][d] * du[local[k * dim + d]];
+            const double  *state = cache.properties(p) + state_offset;
+            Tensor<1, dim> grad_p_n;
+            for (unsigned int d = 0; d < dim; ++d)
+              grad_p_n[d] = state[2 + d];
+            const double source =
+              volume[p] *
+              (inverse_M * state[0] + fixed_stress[p] * state[1] - b * eps_v);
+            for (unsigned int i = 0; i < n_vertices; ++i)
+              cell_rhs(i) += source * N[i] + volume[p] * stabilization[p] *
+                                               (gradN[i] * grad_p_n);
+          }
+        constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
+      }
+    rhs.compress(VectorOperation::add);
+
+    // The previous iterate, for the change.
+    TrilinosWrappers::MPI::Vector previous(p_owned);
+    SolverControl control(1000, 1e-12 * rhs.l2_norm(), false, false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    if (rhs.l2_norm() > 0.)
+      cg.solve(matrix, p_owned, rhs, amg);
+    else
+      p_owned = 0.;
+    linear_iterations = control.last_step();
+    constraints.distribute(p_owned);
+    p_ghosted = p_owned;
+
+    // The new iterate at the points.
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto &range = cache.cell(c);
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &tria, range.cell->level(), range.cell->index(), &dof_handler);
+        cell->get_dof_indices(dofs);
+        double nodal[n_vertices];
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          nodal[k] = p_ghosted(dofs[k]);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double         *N     = cache.values(c, p, N_buffer);
+            const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+            double                value = 0.;
+            Tensor<1, dim>        gradient;
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              {
+                value += N[k] * nodal[k];
+                gradient += nodal[k] * gradN[k];
+              }
+            double *state = cache.properties(p, points) + state_offset;
+            state[1]      = value;
+            for (unsigned int d = 0; d < dim; ++d)
+              state[2 + dim + d] = gradient[d];
+          }
+      }
+
+    previous -= p_owned;
+    const double change  = previous.linfty_norm();
+    const double largest = std::max(p_owned.linfty_norm(), stress_scale);
+    return largest > 0. ? change / largest : (change > 0. ? 1. : 0.);
+  }
+
+
+
+  template class PorePressureSolver<2>;
+  template class PorePressureSolver<3>;
+} // namespace qsmpm

@@ -1,0 +1,179 @@
+#include <qsmpm/porous/poroelastic_model.h>
+
+namespace qsmpm
+{
+  template <int dim>
+  PoroelasticModel<dim>::PoroelasticModel(
+    std::unique_ptr<ConstitutiveModel<dim>> skeleton,
+    const double                            biot_coefficient,
+    const double                            initial_pore_pressure)
+    : skeleton_model(std::move(skeleton))
+    , b(biot_coefficient)
+    , p_initial(initial_pore_pressure)
+    , n_skeleton(skeleton_model->n_state_components())
+  {
+    AssertThrow(biot_coefficient > 0. && biot_coefficient <= 1.,
+                ExcMessage("Pore fluid: the Biot coefficient must lie in "
+                           "(0, 1]."));
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  PoroelasticModel<dim>::state_fields() const
+  {
+    auto fields = skeleton_model->state_fields();
+    fields.push_back({"pore_pressure", 1});
+    fields.push_back({"pore_pressure_iterate", 1});
+    fields.push_back({"pore_pressure_gradient", dim});
+    fields.push_back({"pore_pressure_gradient_iterate", dim});
+    return fields;
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::initialize_point_state(const Point<dim>  &x,
+                                                const unsigned int material_id,
+                                                const types::particle_index id,
+                                                ArrayView<double> state) const
+  {
+    skeleton_model->initialize_point_state(
+      x, material_id, id, ArrayView<double>(state.data(), n_skeleton));
+    for (unsigned int k = n_skeleton; k < state.size(); ++k)
+      state[k] = 0.;
+    state[n_skeleton]     = p_initial;
+    state[n_skeleton + 1] = p_initial;
+  }
+
+
+
+  template <int dim>
+  std::vector<StateField>
+  PoroelasticModel<dim>::output_fields() const
+  {
+    auto fields = skeleton_model->output_fields();
+    fields.push_back({"pore_pressure", 1});
+    return fields;
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::compute_output_fields(const PointState<dim> &point,
+                                               ArrayView<double> values) const
+  {
+    const unsigned int n = values.size() - 1;
+    skeleton_model->compute_output_fields(skeleton_state(point),
+                                          ArrayView<double>(values.data(), n));
+    values[n] = point.state[n_skeleton];
+  }
+
+
+
+  template <int dim>
+  PointState<dim>
+  PoroelasticModel<dim>::skeleton_state(const PointState<dim> &point) const
+  {
+    PointState<dim> s = point;
+    s.stress += b * point.state[n_skeleton] * unit_symmetric_tensor<dim>();
+    s.state = ArrayView<const double>(point.state.data(), n_skeleton);
+    return s;
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::update_stress(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    ArrayView<double>              new_state) const
+  {
+    skeleton_model->update_stress(skeleton_state(old),
+                                  strain_increment,
+                                  stress,
+                                  ArrayView<double>(new_state.data(),
+                                                    n_skeleton));
+    // The pressure of the current iterate acts on the new total stress, and
+    // becomes the committed one: p_n <- p_k, grad p_n <- grad p_k.
+    const double *p = old.state.data() + n_skeleton;
+    stress -= b * p[1] * unit_symmetric_tensor<dim>();
+    new_state[n_skeleton]     = p[1];
+    new_state[n_skeleton + 1] = p[1];
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        new_state[n_skeleton + 2 + d]       = p[2 + dim + d];
+        new_state[n_skeleton + 2 + dim + d] = p[2 + dim + d];
+      }
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  PoroelasticModel<dim>::tangent(const PointState<dim> &old) const
+  {
+    return skeleton_model->tangent(skeleton_state(old));
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  PoroelasticModel<dim>::consistent_tangent(
+    const PointState<dim>         &old,
+    const SymmetricTensor<2, dim> &strain_increment) const
+  {
+    return skeleton_model->consistent_tangent(skeleton_state(old),
+                                              strain_increment);
+  }
+
+
+
+  template <int dim>
+  double
+  PoroelasticModel<dim>::dissipation(const PointState<dim>  &old,
+                                     ArrayView<const double> new_state) const
+  {
+    return skeleton_model->dissipation(skeleton_state(old),
+                                       ArrayView<const double>(new_state.data(),
+                                                               n_skeleton));
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::computes_dissipation() const
+  {
+    return skeleton_model->computes_dissipation();
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::is_elastic() const
+  {
+    return skeleton_model->is_elastic();
+  }
+
+
+
+  template <int dim>
+  std::string
+  PoroelasticModel<dim>::name() const
+  {
+    return "poroelastic (" + skeleton_model->name() + ")";
+  }
+
+
+
+  template class PoroelasticModel<2>;
+  template class PoroelasticModel<3>;
+} // namespace qsmpm
