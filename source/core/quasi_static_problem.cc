@@ -388,7 +388,10 @@ namespace qsmpm
                                  preconditioner,
                                  stabilization(),
                                  pressure_loads(),
-                                 contact_loads());
+                                 contact_loads(),
+                                 pore_pressure ?
+                                   1e-6 * residual->typical_increment_norm() :
+                                   0.);
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;

@@ -49,8 +49,9 @@ namespace qsmpm
         probe_points,
         "Positions in the initial configuration, separated by semicolons "
         "(\"10,0.5; 5,1\"): after every step, probes.csv gets the "
-        "current position, the displacement and the stress (stress_xx, "
-        "...) of the material point nearest to each. Empty: no probes.",
+        "current position, the displacement, the stress (stress_xx, "
+        "...) and the model's output fields (e.g. pore_pressure) of the "
+        "material point nearest to each. Empty: no probes.",
         Patterns::Anything());
     }
     prm.leave_subsection();

@@ -80,6 +80,8 @@ namespace qsmpm
               SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
             *file << ',' << probe << "stress_" << axes[ij[0]] << axes[ij[1]];
           }
+        for (const auto &name : points.output_layout().component_names(dim))
+          *file << ',' << probe << name;
       }
     *file << '\n';
   }
@@ -94,8 +96,10 @@ namespace qsmpm
   {
     // Each probe's values on the rank that owns its point, zeros
     // elsewhere: one sum over the ranks gathers them.
-    constexpr unsigned int n_values =
+    // Position, displacement, stress and the model's output fields.
+    constexpr unsigned int n_kinematic =
       2 * dim + Utils::n_symmetric_components<dim>;
+    const unsigned int  n_values = n_kinematic + points.output_layout().size();
     std::vector<double> values(ids.size() * n_values, 0.);
     const auto         &offsets = points.get_offsets();
     for (const auto &particle : points.get_particle_handler())
@@ -113,6 +117,9 @@ namespace qsmpm
             for (unsigned int c = 0; c < Utils::n_symmetric_components<dim>;
                  ++c)
               out[2 * dim + c] = data[offsets.stress + c];
+            points.compute_output_fields(
+              particle,
+              ArrayView<double>(out + n_kinematic, n_values - n_kinematic));
           }
     dealii::Utilities::MPI::sum(values, communicator, values);
     if (!file)

@@ -36,15 +36,17 @@ namespace qsmpm
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
                  const Preconditioner<dim>      &preconditioner,
-                 const GhostPenalty<dim>        *ghost_penalty = nullptr,
-                 const SurfaceTractions<dim>    *pressures     = nullptr,
-                 const RigidContact<dim>        *contact       = nullptr)
+                 const GhostPenalty<dim>        *ghost_penalty   = nullptr,
+                 const SurfaceTractions<dim>    *pressures       = nullptr,
+                 const RigidContact<dim>        *contact         = nullptr,
+                 const double                    increment_floor = 0.)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
       , ghost_penalty(ghost_penalty)
       , pressures(pressures)
       , contact(contact)
+      , increment_floor(increment_floor)
     {
     }
 
@@ -95,13 +97,18 @@ namespace qsmpm
     /**
      * The smallest size of the increments of interest for the
      * Jacobian-free products (JacobianFreeOperator): with rigid bodies,
-     * their motion in the step at every degree of freedom; else 0.
+     * their motion in the step at every degree of freedom; else the
+     * constructor's @p increment_floor (0 by default). A step of a
+     * consolidating body under a constant load moves it by a tiny amount
+     * while its stresses are large: finite differences relative to that
+     * increment would be round-off (QuasiStaticProblem gives a floor of
+     * 1e-6 of typical_increment_norm() with a pore fluid).
      */
     double
     increment_scale_floor() const
     {
       if (contact == nullptr)
-        return 0.;
+        return increment_floor;
       // A motion of round-off size (a body that starts to move at the end
       // of the step) is none.
       const double motion =
@@ -160,6 +167,8 @@ namespace qsmpm
     const GhostPenalty<dim>        *ghost_penalty;
     const SurfaceTractions<dim>    *pressures;
     const RigidContact<dim>        *contact;
+    /// increment_scale_floor() without rigid bodies.
+    const double increment_floor;
   };
 } // namespace qsmpm
 
