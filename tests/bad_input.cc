@@ -171,6 +171,15 @@ main(int argc, char *argv[])
   try_input("drained boundary id that does not exist",
             "Drained boundaries",
             pore_fluid + "  set Drained boundaries = 3, 7\nend\n");
+  try_input("flux boundary id that does not exist",
+            "Flux boundaries",
+            pore_fluid + "  set Flux boundaries = 9\nend\n");
+  try_input("boundary both drained and with a flux",
+            "Flux boundaries",
+            pore_fluid + "  set Flux boundaries = 3\nend\n");
+  try_input("boundary pore pressure that is no expression",
+            "Boundary pore pressure",
+            pore_fluid + "  set Boundary pore pressure = 1 +* y\nend\n");
   try_input("pore fluid at finite strain",
             "Kinematics",
             pore_fluid + "end\n"

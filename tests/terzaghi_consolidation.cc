@@ -113,18 +113,25 @@ namespace
 
   struct Result
   {
-    bool         completed = false;
-    double       l2 = 0, max_pressure = 0, bottom_pressure = 0;
-    double       settlement   = 0;
+    bool   completed = false;
+    double l2 = 0, max_pressure = 0, bottom_pressure = 0;
+    double settlement = 0;
+    /// L2 of p - 100 (1 - y / H) over the points, relative to 100.
+    double       seepage      = 0;
     unsigned int min_coupling = 1000, max_coupling = 0;
   };
 
-  /// A run interrupted and resumed (section 3).
-  struct Restart
+  /// Variants of a run: interrupted and resumed (section 3), other pore
+  /// fluid entries and growing steps (section 5).
+  struct Options
   {
     unsigned int checkpoint_interval = 0;
     unsigned int stop_after          = 0;
     bool         resume              = false;
+    std::string  pore_fluid;
+    double       growth_factor = 1.;
+    /// Without the load q.
+    bool unloaded = false;
   };
 
   template <int dim = 2>
@@ -133,27 +140,36 @@ namespace
       const double       Tv,
       const unsigned int steps,
       const double       stabilization = 0.25,
-      const Restart     &restart       = Restart())
+      const Options     &options       = Options())
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
     QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
     prm.parse_input_from_string(
-      column_prm<dim>(cells, Tv, steps, stabilization));
+      column_prm<dim>(cells, Tv, steps, stabilization) +
+      "subsection Pore fluid\n" + options.pore_fluid +
+      "end\nsubsection Load stepping\n  set Increment growth factor = " +
+      std::to_string(options.growth_factor) + "\nend\n" +
+      (options.unloaded ? "subsection Boundary conditions\n"
+                          "  subsection Traction\n"
+                          "    set Function expression = 0; 0\n"
+                          "  end\n"
+                          "end\n" :
+                          ""));
     QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
     problem.pcout().set_condition(false);
     problem.initialize(prm);
     problem.parameters().output.checkpoint_interval =
-      restart.checkpoint_interval;
+      options.checkpoint_interval;
     Result result;
     try
       {
-        if (restart.resume)
+        if (options.resume)
           problem.resume();
-        if (restart.stop_after > 0)
+        if (options.stop_after > 0)
           problem.set_step_callback(
             [&](const typename QuasiStaticProblem<dim>::StepReport &report) {
-              return report.step < restart.stop_after;
+              return report.step < options.stop_after;
             });
         problem.run();
         result.completed = true;
@@ -182,6 +198,7 @@ namespace
     const unsigned int p_offset = offsets.state + model.pressure_offset();
     double             sum = 0, volume = 0, top = 0, top_volume = 0;
     double             largest = 0, bottom = 0, bottom_volume = 0;
+    double             seepage = 0;
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();
@@ -191,6 +208,8 @@ namespace
         const double p     = data[p_offset];
         const double error = p - exact_pressure(H - Y, Tv);
         sum += V * error * error;
+        const double seepage_error = p - 100. * (1. - Y / H);
+        seepage += V * seepage_error * seepage_error;
         volume += V;
         largest = std::max(largest, p);
         const double u_error =
@@ -207,7 +226,10 @@ namespace
     result.l2           = std::sqrt(Utilities::MPI::sum(sum, comm) /
                           Utilities::MPI::sum(volume, comm)) /
                 q;
-    result.max_pressure    = Utilities::MPI::max(largest, comm) / q;
+    result.max_pressure = Utilities::MPI::max(largest, comm) / q;
+    result.seepage      = std::sqrt(Utilities::MPI::sum(seepage, comm) /
+                               Utilities::MPI::sum(volume, comm)) /
+                     100.;
     result.bottom_pressure = Utilities::MPI::sum(bottom, comm) /
                              Utilities::MPI::sum(bottom_volume, comm) / q;
     // The L2 error of the displacement over the points, relative to the
@@ -297,11 +319,11 @@ main(int argc, char **argv)
           << std::endl;
   {
     const Result whole = run(16, 0.5, 32);
-    Restart      first;
+    Options      first;
     first.checkpoint_interval = 8;
     first.stop_after          = 16;
     run(16, 0.5, 32, 0.25, first);
-    Restart second;
+    Options second;
     second.resume    = true;
     const Result end = run(16, 0.5, 32, 0.25, second);
     if (verbose())
@@ -337,6 +359,40 @@ main(int argc, char **argv)
     check("  pressure and displacement errors equal to 2D's within 2e-4",
           std::abs(solid.l2 - plane.l2) < 2e-4 &&
             std::abs(solid.settlement - plane.settlement) < 2e-4);
+  }
+
+  deallog << "5. Steady seepage without load, 16 cells, to t = 1000 s "
+             "(T_v = 18) in steps growing by 30 %"
+          << std::endl;
+  {
+    // Exact steady state of both: p = 100 (1 - y / H) Pa, linear, which
+    // the Q1 pressure represents exactly; what remains of the transient at
+    // T_v = 18 is about exp(-pi^2 / 4 18) ~ 1e-19.
+    Options prescribed;
+    prescribed.pore_fluid =
+      "  set Drained boundaries = 2, 3\n"
+      "  set Boundary pore pressure = 100 * (1 - y / 10)\n";
+    prescribed.growth_factor = 1.3;
+    prescribed.unloaded      = true;
+    // An inflow v through the base, drained top: kappa dp/dy = -v, p = v
+    // (H - y) / kappa = 100 (1 - y / H) with v = 1e-5 m/s.
+    Options inflow;
+    inflow.pore_fluid    = "  set Flux boundaries = 2\n"
+                           "  set Boundary flux = -1e-5\n";
+    inflow.growth_factor = 1.3;
+    inflow.unloaded      = true;
+    const double Tv      = 1000. * c_v / (H * H);
+    const Result a       = run(16, Tv, 1000, 0.25, prescribed);
+    const Result b       = run(16, Tv, 1000, 0.25, inflow);
+    if (verbose())
+      std::cout << "seepage: prescribed p error " << a.seepage
+                << ", inflow error " << b.seepage << std::endl;
+    // The fixed-stress iteration stops at 1e-5 of the largest pressure or
+    // stress, 1e-5 of p(0); the points move by p / E_oed ~ 5e-5 of H.
+    check("  prescribed pressures on base and top: L2 error < 1e-4 of p(0)",
+          a.completed && a.seepage < 1e-4);
+    check("  inflow through the base: L2 error < 1e-4 of p(0)",
+          b.completed && b.seepage < 1e-4);
   }
   return 0;
 }

@@ -410,7 +410,8 @@ namespace qsmpm
                                   points(),
                                   dynamic_cast<const PoroelasticModel<dim> &>(
                                     *model),
-                                  t_new - t_old);
+                                  t_old,
+                                  t_new);
         residual->point_state_changed();
         // The step's load may not change at all (consolidation under a
         // constant load): what moves the body is the change of the pore

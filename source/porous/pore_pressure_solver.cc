@@ -1,10 +1,14 @@
 #include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/porous/pore_pressure_solver.h>
+#include <tuple>
 
 namespace qsmpm
 {
@@ -46,11 +50,28 @@ namespace qsmpm
                         Patterns::Double());
       prm.add_parameter("Drained boundaries",
                         drained_boundaries,
-                        "Boundary ids of the grid where p = 0 (box: 0/1 = "
-                        "x min/max, 2/3 = y, 4/5 = z). The other boundaries "
-                        "are impermeable; nodes of the grid without material "
-                        "have p = 0.",
+                        "Boundary ids of the grid where p is prescribed, as "
+                        "<Boundary pore pressure> (box: 0/1 = x min/max, 2/3 "
+                        "= y, 4/5 = z). Boundaries that are neither drained "
+                        "nor in <Flux boundaries> are impermeable; nodes of "
+                        "the grid without material have p = 0.",
                         Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Boundary pore pressure",
+                        boundary_pressure,
+                        "p on the drained boundaries: an expression in x, y "
+                        "(z) and the time t.",
+                        Patterns::Anything());
+      prm.add_parameter("Flux boundaries",
+                        flux_boundaries,
+                        "Boundary ids of the grid through which the fluid "
+                        "flows at the rate <Boundary flux>.",
+                        Patterns::List(Patterns::Integer(0)));
+      prm.add_parameter("Boundary flux",
+                        boundary_flux,
+                        "q.n on the flux boundaries, the volume of fluid "
+                        "that leaves per unit area and time (negative: "
+                        "inflow): an expression in x, y (z) and t.",
+                        Patterns::Anything());
       prm.add_parameter("Stabilization factor",
                         stabilization_factor,
                         "f of the stabilization beta = f h^2 / M_c of the "
@@ -98,6 +119,21 @@ namespace qsmpm
     AssertThrow(coupling_tolerance > 0.,
                 ExcMessage("Pore fluid: <Coupling tolerance> must be "
                            "positive."));
+    for (const unsigned int id : flux_boundaries)
+      {
+        AssertThrow(id < 2 * dim,
+                    ExcMessage("Pore fluid: <Flux boundaries> lists " +
+                               std::to_string(id) + ", but a box in " +
+                               std::to_string(dim) +
+                               "D has the boundary ids 0 to " +
+                               std::to_string(2 * dim - 1) + "."));
+        AssertThrow(std::find(drained_boundaries.begin(),
+                              drained_boundaries.end(),
+                              id) == drained_boundaries.end(),
+                    ExcMessage("Pore fluid: boundary " + std::to_string(id) +
+                               " is in both <Drained boundaries> and <Flux "
+                               "boundaries>."));
+      }
     for (const unsigned int id : drained_boundaries)
       AssertThrow(id < 2 * dim,
                   ExcMessage("Pore fluid: <Drained boundaries> lists " +
@@ -117,6 +153,26 @@ namespace qsmpm
     , communicator(comm)
     , fe(1)
   {
+    const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+    for (const auto &[function, expression, entry] :
+         {std::make_tuple(&boundary_pressure,
+                          parameters.boundary_pressure,
+                          "Boundary pore pressure"),
+          std::make_tuple(&boundary_flux,
+                          parameters.boundary_flux,
+                          "Boundary flux")})
+      try
+        {
+          function->initialize(variables, expression, {}, true);
+          function->value(Point<dim>());
+        }
+      catch (const std::exception &exc)
+        {
+          AssertThrow(false,
+                      ExcMessage(std::string("Pore fluid: <") + entry +
+                                 "> = <" + expression +
+                                 ">: " + Utils::error_message(exc)));
+        }
   }
 
 
@@ -156,9 +212,13 @@ namespace qsmpm
                                       const ShapeCache<dim>       &cache,
                                       MaterialPointSet<dim>       &points,
                                       const PoroelasticModel<dim> &model,
-                                      const double                 dt)
+                                      const double                 t_old,
+                                      const double                 t_new)
   {
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+
+    dt   = t_new - t_old;
+    time = t_new;
     AssertThrow(cache.stencil_size() == n_vertices,
                 ExcMessage("Pore fluid: needs <Shape functions> = linear."));
     AssertThrow(dt >= 0.,
@@ -182,8 +242,7 @@ namespace qsmpm
     stabilization.resize(n_points);
     const double h = grid.min_cell_size();
     stress_scale   = 0.;
-    const double inverse_M =
-      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+
     const auto                                 &offsets = points.get_offsets();
     const typename PointStateBatch<dim>::Layout layout{
       offsets.strain,
@@ -261,19 +320,22 @@ namespace qsmpm
         // A drained boundary that no material touches drains nothing: a
         // wrong id, or a body that has left that side of the grid.
         std::map<types::global_dof_index, double> values;
+        boundary_pressure.set_time(t_new);
         VectorTools::interpolate_boundary_values(dof_handler,
                                                  id,
-                                                 Functions::ZeroFunction<dim>(),
+                                                 boundary_pressure,
                                                  values);
         double touched = 0.;
         for (const auto &[dof, value] : values)
-          {
-            (void)value;
-            if (material_ghosted(dof) > 0.)
+          if (material_ghosted(dof) > 0.)
+            {
               touched = 1.;
-            if (!constraints.is_constrained(dof))
-              constraints.add_line(dof);
-          }
+              if (!constraints.is_constrained(dof))
+                {
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof, value);
+                }
+            }
         AssertThrow(Utilities::MPI::max(touched, communicator) > 0.,
                     ExcMessage("Pore fluid: <Drained boundaries> lists " +
                                std::to_string(id) +
@@ -292,29 +354,15 @@ namespace qsmpm
 
     // The matrix of the step: storage, fixed-stress and stabilization terms
     // and the conductance.
-    FullMatrix<double>                    cell_matrix(n_vertices, n_vertices);
-    typename ShapeCache<dim>::ValueBuffer N_buffer;
-    typename ShapeCache<dim>::GradientBuffer grad_buffer;
+    FullMatrix<double> local_matrix(n_vertices, n_vertices);
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
         const typename DoFHandler<dim>::active_cell_iterator cell(
           &tria, range.cell->level(), range.cell->index(), &dof_handler);
         cell->get_dof_indices(dofs);
-        cell_matrix = 0.;
-        for (unsigned int p = range.first_point; p < range.end_point; ++p)
-          {
-            const double         *N     = cache.values(c, p, N_buffer);
-            const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
-            const double storage = volume[p] * (inverse_M + fixed_stress[p]);
-            const double conductance =
-              volume[p] * (dt * parameters.mobility + stabilization[p]);
-            for (unsigned int i = 0; i < n_vertices; ++i)
-              for (unsigned int j = 0; j < n_vertices; ++j)
-                cell_matrix(i, j) +=
-                  storage * N[i] * N[j] + conductance * (gradN[i] * gradN[j]);
-          }
-        constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+        cell_matrix(cache, c, local_matrix);
+        constraints.distribute_local_to_global(local_matrix, dofs, matrix);
       }
     matrix.compress(VectorOperation::add);
 
@@ -332,6 +380,69 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  PorePressureSolver<dim>::cell_matrix(const ShapeCache<dim> &cache,
+                                       const unsigned int     c,
+                                       FullMatrix<double>    &matrix) const
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const double           inverse_M =
+      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+    typename ShapeCache<dim>::ValueBuffer    N_buffer;
+    typename ShapeCache<dim>::GradientBuffer grad_buffer;
+    const auto                              &range = cache.cell(c);
+    matrix                                         = 0.;
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const double         *N     = cache.values(c, p, N_buffer);
+        const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+        const double storage        = volume[p] * (inverse_M + fixed_stress[p]);
+        const double conductance =
+          volume[p] * (dt * parameters.mobility + stabilization[p]);
+        for (unsigned int i = 0; i < n_vertices; ++i)
+          for (unsigned int j = 0; j < n_vertices; ++j)
+            matrix(i, j) +=
+              storage * N[i] * N[j] + conductance * (gradN[i] * gradN[j]);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::add_boundary_flux(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    Vector<double>                                       &cell_rhs)
+  {
+    if (parameters.flux_boundaries.empty() || !cell->at_boundary())
+      return;
+    boundary_flux.set_time(time);
+    const QGauss<dim - 1> quadrature(2);
+    FEFaceValues<dim>     face_values(fe,
+                                  quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->at_boundary(f) && std::find(parameters.flux_boundaries.begin(),
+                                            parameters.flux_boundaries.end(),
+                                            cell->face(f)->boundary_id()) !=
+                                    parameters.flux_boundaries.end())
+        {
+          face_values.reinit(cell, f);
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            {
+              const double flux =
+                boundary_flux.value(face_values.quadrature_point(q));
+              for (unsigned int i = 0; i < cell_rhs.size(); ++i)
+                cell_rhs(i) -= dt * flux * face_values.shape_value(i, q) *
+                               face_values.JxW(q);
+            }
+        }
+  }
+
+
+
+  template <int dim>
   double
   PorePressureSolver<dim>::update(
     const ShapeCache<dim>               &cache,
@@ -342,9 +453,10 @@ namespace qsmpm
     const auto            &tria       = dof_handler.get_triangulation();
     const double           inverse_M =
       parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
-    std::vector<types::global_dof_index>     dofs(n_vertices);
-    Vector<double>                           cell_rhs(n_vertices);
-    typename ShapeCache<dim>::ValueBuffer    N_buffer;
+    std::vector<types::global_dof_index>  dofs(n_vertices);
+    Vector<double>                        cell_rhs(n_vertices);
+    FullMatrix<double>                    local_matrix(n_vertices, n_vertices);
+    typename ShapeCache<dim>::ValueBuffer N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const double *du = du_ghosted.trilinos_vector()[0];
 
@@ -376,7 +488,14 @@ namespace qsmpm
               cell_rhs(i) += source * N[i] + volume[p] * stabilization[p] *
                                                (gradN[i] * grad_p_n);
           }
-        constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
+        add_boundary_flux(cell, cell_rhs);
+        // The prescribed pressures act on the free rows through the cell's
+        // matrix.
+        cell_matrix(cache, c, local_matrix);
+        constraints.distribute_local_to_global(cell_rhs,
+                                               dofs,
+                                               rhs,
+                                               local_matrix);
       }
     rhs.compress(VectorOperation::add);
 

@@ -1,13 +1,16 @@
 #ifndef qsmpm_porous_pore_pressure_solver_h
 #define qsmpm_porous_pore_pressure_solver_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -74,6 +77,9 @@ namespace qsmpm
       double                    mobility         = 1.;
       double                    initial_pressure = 0.;
       std::vector<unsigned int> drained_boundaries;
+      std::string               boundary_pressure = "0";
+      std::vector<unsigned int> flux_boundaries;
+      std::string               boundary_flux           = "0";
       double                    stabilization_factor    = 0.25;
       double                    coupling_tolerance      = 1e-5;
       unsigned int              max_coupling_iterations = 100;
@@ -99,7 +105,8 @@ namespace qsmpm
                const ShapeCache<dim>       &cache,
                MaterialPointSet<dim>       &points,
                const PoroelasticModel<dim> &model,
-               const double                 dt);
+               const double                 t_old,
+               const double                 t_new);
 
     /**
      * One flow solve of the fixed-stress iteration with the displacement
@@ -150,7 +157,23 @@ namespace qsmpm
     }
 
   private:
-    const Parameters                  parameters;
+    /// The matrix of the flow problem on cell @p c of the cache.
+    void
+    cell_matrix(const ShapeCache<dim> &cache,
+                const unsigned int     c,
+                FullMatrix<double>    &matrix) const;
+
+    /// Add -dt int N_i q.n over the faces of @p cell on the flux boundaries.
+    void
+    add_boundary_flux(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      Vector<double>                                       &cell_rhs);
+
+    const Parameters parameters;
+    /// The pressure on the drained boundaries and the outward flux on the
+    /// flux boundaries, functions of x and t.
+    FunctionParser<dim>               boundary_pressure, boundary_flux;
+    double                            dt = 0., time = 0.;
     MPI_Comm                          communicator;
     FE_Q<dim>                         fe;
     DoFHandler<dim>                   dof_handler;
