@@ -217,8 +217,7 @@ namespace qsmpm
   {
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
-    dt   = t_new - t_old;
-    time = t_new;
+    dt = t_new - t_old;
     AssertThrow(cache.stencil_size() == n_vertices,
                 ExcMessage("Pore fluid: needs <Shape functions> = linear."));
     AssertThrow(dt >= 0.,
@@ -289,19 +288,22 @@ namespace qsmpm
     stress_scale = Utilities::MPI::max(stress_scale, communicator);
     forces       = stress_scale * std::pow(h, dim - 1) *
              std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
+    // The pressure dofs of the cells with points, once per step.
+    cell_dofs.resize(cache.n_cells() * n_vertices);
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto &range = cache.cell(c);
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &tria, range.cell->level(), range.cell->index(), &dof_handler);
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(), dofs.end(), &cell_dofs[c * n_vertices]);
+      }
     // Ghost nodes of other ranks' cells reach the owner by the sum.
     {
       TrilinosWrappers::MPI::Vector sums;
       sums.reinit(owned, relevant, communicator, true);
-      for (unsigned int c = 0; c < cache.n_cells(); ++c)
-        {
-          const auto &range = cache.cell(c);
-          const typename DoFHandler<dim>::active_cell_iterator cell(
-            &tria, range.cell->level(), range.cell->index(), &dof_handler);
-          cell->get_dof_indices(dofs);
-          for (const auto dof : dofs)
-            sums(dof) += 1.;
-        }
+      for (const auto dof : cell_dofs)
+        sums(dof) += 1.;
       sums.compress(VectorOperation::add);
       has_material = sums;
     }
@@ -352,19 +354,33 @@ namespace qsmpm
     pattern.compress();
     matrix.reinit(pattern);
 
-    // The matrix of the step: storage, fixed-stress and stabilization terms
-    // and the conductance.
-    FullMatrix<double> local_matrix(n_vertices, n_vertices);
+    // The matrix of the step (storage, fixed-stress and stabilization terms
+    // and the conductance) and the part of the right-hand side that stays
+    // the same in all its iterations: the fluxes and, through the matrix,
+    // the prescribed pressures.
+    boundary_rhs.reinit(owned, communicator);
+    FullMatrix<double>    local_matrix(n_vertices, n_vertices);
+    Vector<double>        local_rhs(n_vertices);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEFaceValues<dim>     face_values(fe,
+                                  face_quadrature,
+                                  update_values | update_quadrature_points |
+                                    update_JxW_values);
+    boundary_flux.set_time(t_new);
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
         const typename DoFHandler<dim>::active_cell_iterator cell(
           &tria, range.cell->level(), range.cell->index(), &dof_handler);
-        cell->get_dof_indices(dofs);
+        std::copy_n(&cell_dofs[c * n_vertices], n_vertices, dofs.begin());
         cell_matrix(cache, c, local_matrix);
-        constraints.distribute_local_to_global(local_matrix, dofs, matrix);
+        local_rhs = 0.;
+        add_boundary_flux(cell, face_values, local_rhs);
+        constraints.distribute_local_to_global(
+          local_matrix, local_rhs, dofs, matrix, boundary_rhs);
       }
     matrix.compress(VectorOperation::add);
+    boundary_rhs.compress(VectorOperation::add);
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -412,16 +428,11 @@ namespace qsmpm
   void
   PorePressureSolver<dim>::add_boundary_flux(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    Vector<double>                                       &cell_rhs)
+    FEFaceValues<dim>                                    &face_values,
+    Vector<double>                                       &cell_rhs) const
   {
     if (parameters.flux_boundaries.empty() || !cell->at_boundary())
       return;
-    boundary_flux.set_time(time);
-    const QGauss<dim - 1> quadrature(2);
-    FEFaceValues<dim>     face_values(fe,
-                                  quadrature,
-                                  update_values | update_quadrature_points |
-                                    update_JxW_values);
     for (const unsigned int f : cell->face_indices())
       if (cell->at_boundary(f) && std::find(parameters.flux_boundaries.begin(),
                                             parameters.flux_boundaries.end(),
@@ -450,13 +461,11 @@ namespace qsmpm
     const TrilinosWrappers::MPI::Vector &du_ghosted)
   {
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const auto            &tria       = dof_handler.get_triangulation();
     const double           inverse_M =
       parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
-    std::vector<types::global_dof_index>  dofs(n_vertices);
-    Vector<double>                        cell_rhs(n_vertices);
-    FullMatrix<double>                    local_matrix(n_vertices, n_vertices);
-    typename ShapeCache<dim>::ValueBuffer N_buffer;
+    std::vector<types::global_dof_index>     dofs(n_vertices);
+    Vector<double>                           cell_rhs(n_vertices);
+    typename ShapeCache<dim>::ValueBuffer    N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const double *du = du_ghosted.trilinos_vector()[0];
 
@@ -464,9 +473,7 @@ namespace qsmpm
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          &tria, range.cell->level(), range.cell->index(), &dof_handler);
-        cell->get_dof_indices(dofs);
+        std::copy_n(&cell_dofs[c * n_vertices], n_vertices, dofs.begin());
         const int *local = cache.local_dofs(c);
         cell_rhs         = 0.;
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
@@ -488,16 +495,10 @@ namespace qsmpm
               cell_rhs(i) += source * N[i] + volume[p] * stabilization[p] *
                                                (gradN[i] * grad_p_n);
           }
-        add_boundary_flux(cell, cell_rhs);
-        // The prescribed pressures act on the free rows through the cell's
-        // matrix.
-        cell_matrix(cache, c, local_matrix);
-        constraints.distribute_local_to_global(cell_rhs,
-                                               dofs,
-                                               rhs,
-                                               local_matrix);
+        constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
       }
     rhs.compress(VectorOperation::add);
+    rhs += boundary_rhs;
 
     // The previous iterate, for the change.
     TrilinosWrappers::MPI::Vector previous(p_owned);
@@ -515,12 +516,9 @@ namespace qsmpm
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          &tria, range.cell->level(), range.cell->index(), &dof_handler);
-        cell->get_dof_indices(dofs);
-        double nodal[n_vertices];
+        double      nodal[n_vertices];
         for (unsigned int k = 0; k < n_vertices; ++k)
-          nodal[k] = p_ghosted(dofs[k]);
+          nodal[k] = p_ghosted(cell_dofs[c * n_vertices + k]);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *N     = cache.values(c, p, N_buffer);

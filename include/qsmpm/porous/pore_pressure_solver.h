@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -167,13 +168,15 @@ namespace qsmpm
     void
     add_boundary_flux(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
-      Vector<double>                                       &cell_rhs);
+      FEFaceValues<dim>                                    &face_values,
+      Vector<double>                                       &cell_rhs) const;
 
     const Parameters parameters;
     /// The pressure on the drained boundaries and the outward flux on the
     /// flux boundaries, functions of x and t.
-    FunctionParser<dim>               boundary_pressure, boundary_flux;
-    double                            dt = 0., time = 0.;
+    FunctionParser<dim> boundary_pressure, boundary_flux;
+    /// The length of the step (the load factor is the time).
+    double                            dt = 0.;
     MPI_Comm                          communicator;
     FE_Q<dim>                         fe;
     DoFHandler<dim>                   dof_handler;
@@ -182,6 +185,11 @@ namespace qsmpm
     TrilinosWrappers::SparseMatrix    matrix;
     TrilinosWrappers::PreconditionAMG amg;
     TrilinosWrappers::MPI::Vector     p_owned, p_ghosted, rhs;
+    /// The part of the right-hand side that is the same for all iterations
+    /// of a step: the fluxes and the prescribed pressures.
+    TrilinosWrappers::MPI::Vector boundary_rhs;
+    /// The pressure dofs of the cells of the cache, 2^dim per cell.
+    std::vector<types::global_dof_index> cell_dofs;
     /// Per point of the cache: Omega_p, L_p and beta_p of the step.
     std::vector<double> volume, fixed_stress, stabilization;
     unsigned int        state_offset      = 0;
