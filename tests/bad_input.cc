@@ -214,6 +214,40 @@ main(int argc, char *argv[])
               run_briefly + "end\n",
             /*run=*/true);
 
+  // Rigid plates (Boundary conditions/Rigid plate boundaries).
+  try_input("rigid plate on a boundary a box does not have",
+            "rigid plate",
+            "subsection Boundary conditions\n"
+            "  set Rigid plate boundaries = 9\n"
+            "end\n");
+  try_input("rigid plate that a displacement condition holds along its "
+            "normal",
+            "rigid plate",
+            "subsection Boundary conditions\n"
+            "  set Rigid plate boundaries = 3\n"
+            "  set Traction boundaries = 3\n"
+            "  subsection Traction\n"
+            "    set Function expression = 0; -1\n"
+            "  end\n"
+            "end\n" +
+              run_briefly + "end\n" +
+              "subsection Boundary conditions\n"
+              "  set Dirichlet boundaries = 2:xy, 3:n\n"
+              "end\n",
+            /*run=*/true);
+  try_input("rigid plate that no material touches",
+            "rigid plate",
+            "subsection Boundary conditions\n"
+            "  set Rigid plate boundaries = 3\n"
+            "  set Traction boundaries = 3\n"
+            "end\n"
+            "subsection Material points\n"
+            "  set Region lower corner = 0, 0\n"
+            "  set Region upper corner = 1, 0.5\n"
+            "end\n" +
+              run_briefly + "end\n",
+            /*run=*/true);
+
   // A missing file: deal.II's message names it.
   try
     {

@@ -58,6 +58,7 @@ namespace qsmpm
     , external_force(bcs)
     , surface_tractions(bcs)
     , rigid_contact(bcs)
+    , rigid_plates(bcs)
     , constraint_maker(background_grid,
                        bcs,
                        displacement_constraints,
@@ -267,6 +268,10 @@ namespace qsmpm
       step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
                               communicator);
+      if (!rigid_plates.empty())
+        rigid_plates.reinit_step(background_grid,
+                                 step_constraints.get(),
+                                 constraint_maker.mean_stiffness(points()));
       // At finite strain a body force is per unit initial volume (rho_0 b),
       // so that the load of a point does not change with its volume.
       const auto &offsets = points().get_offsets();
@@ -391,7 +396,8 @@ namespace qsmpm
                                  contact_loads(),
                                  pore_pressure ?
                                    1e-6 * residual->typical_increment_norm() :
-                                   0.);
+                                   0.,
+                                 plates());
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
@@ -482,6 +488,10 @@ namespace qsmpm
           residual->point_state_changed();
         }
         ++coupling_iterations;
+        // Each solve starts from the last converged increment: it is the
+        // pressure change that it must resolve, to the floor, not the
+        // step's load.
+        newton_parameters.relative_to_load = false;
         NewtonReport next;
         solve(next);
         report.converged = next.converged;
@@ -556,7 +566,9 @@ namespace qsmpm
                                  preconditioner,
                                  stabilization(),
                                  pressure_loads(),
-                                 contact_loads());
+                                 contact_loads(),
+                                 0.,
+                                 plates());
       const typename PathFollowingSetup<dim>::Solver newton(solver_parameters(),
                                                             &progress);
       const auto                                     constraint =

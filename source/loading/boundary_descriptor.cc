@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 
@@ -217,6 +218,35 @@ namespace qsmpm
   BoundaryDescriptor<dim>::rigid_bodies() const
   {
     return rigid_body_list;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundaryDescriptor<dim>::add_rigid_plate(const types::boundary_id id)
+  {
+    AssertThrow(id < 2 * dim,
+                ExcMessage("Boundary conditions: a rigid plate on boundary " +
+                           std::to_string(id) +
+                           ", which a box does not "
+                           "have; its ids are 0 to " +
+                           std::to_string(2 * dim - 1) + "."));
+    AssertThrow(std::find(plate_ids.begin(), plate_ids.end(), id) ==
+                  plate_ids.end(),
+                ExcMessage("Boundary conditions: boundary " +
+                           std::to_string(id) +
+                           " is given twice as a rigid plate."));
+    plate_ids.push_back(id);
+  }
+
+
+
+  template <int dim>
+  const std::vector<types::boundary_id> &
+  BoundaryDescriptor<dim>::rigid_plates() const
+  {
+    return plate_ids;
   }
 
 

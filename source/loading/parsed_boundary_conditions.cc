@@ -189,6 +189,16 @@ namespace qsmpm
                         "face would lose the load (the equilibrium check "
                         "stops the run); use <Surface traction region>.");
       prm.declare_entry(
+        "Rigid plate boundaries",
+        "",
+        Patterns::List(Patterns::Integer(0)),
+        "Boundary ids whose nodes move as one rigid, frictionless plate "
+        "along the boundary's normal, by what the load on them makes them "
+        "(the traction of <Traction boundaries> on the same id is the "
+        "plate's load; its other components stay free): a plate pressed "
+        "onto the body by a given force. A displacement condition may not "
+        "hold the same boundary along its normal.");
+      prm.declare_entry(
         "Surface traction region",
         "",
         Patterns::Anything(),
@@ -239,6 +249,7 @@ namespace qsmpm
     prm.enter_subsection("Boundary conditions");
     dirichlet            = prm.get("Dirichlet boundaries");
     traction             = prm.get("Traction boundaries");
+    rigid_plates         = prm.get("Rigid plate boundaries");
     macroscopic_gradient = prm.get("Macroscopic displacement gradient");
     surface_region       = prm.get("Surface traction region");
     surface_type         = prm.get("Surface traction type");
@@ -276,6 +287,8 @@ namespace qsmpm
       }
     for (const auto &entry : Utils::split(parameters.traction, ','))
       boundary.add_traction(parse_traction_id<dim>(entry), traction);
+    for (const auto &entry : Utils::split(parameters.rigid_plates, ','))
+      boundary.add_rigid_plate(dealii::Utilities::string_to_int(entry));
     if (!parameters.surface_region.empty())
       add_surface_traction(parameters, surface_traction, boundary);
     if (expressions[3] != zero_expression<dim>())

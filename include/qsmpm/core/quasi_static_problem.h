@@ -25,6 +25,7 @@
 #include <qsmpm/loading/external_force_assembler.h>
 #include <qsmpm/loading/load_stepper.h>
 #include <qsmpm/loading/rigid_contact.h>
+#include <qsmpm/loading/rigid_plates.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/materials/constitutive_model.h>
@@ -359,6 +360,7 @@ namespace qsmpm
     ExternalForceAssembler<dim>            external_force;
     SurfaceTractions<dim>                  surface_tractions;
     RigidContact<dim>                      rigid_contact;
+    RigidPlates<dim>                       rigid_plates;
     /// The material's force on each rigid body in the last accepted step.
     std::vector<typename RigidContact<dim>::BodyLoad> body_loads;
     /// The names of the rigid bodies.
@@ -369,6 +371,12 @@ namespace qsmpm
     contact_loads() const
     {
       return rigid_contact.empty() ? nullptr : &rigid_contact;
+    }
+    /// The rigid plates if there are any, else null.
+    const RigidPlates<dim> *
+    plates() const
+    {
+      return rigid_plates.empty() ? nullptr : &rigid_plates;
     }
     EquilibriumAudit<dim>                  audit;
     typename EquilibriumAudit<dim>::Result last_audit;

@@ -7,6 +7,7 @@
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/rigid_contact.h>
+#include <qsmpm/loading/rigid_plates.h>
 #include <qsmpm/loading/step_constraints.h>
 #include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/solvers/newton_krylov.h>
@@ -32,14 +33,16 @@ namespace qsmpm
     /// The step's operator; @p ghost_penalty, if given, stabilizes the
     /// nodes of cut cells; @p pressures, if given, add the pressures on
     /// the body's surface, which follow the increment; @p contact, if
-    /// given, the contact forces of rigid bodies.
+    /// given, the contact forces of rigid bodies; @p plates, if given,
+    /// ties the nodes of rigid plates.
     StepOperator(const QuasiStaticResidual<dim> &residual,
                  const StepConstraints          &constraints,
                  const Preconditioner<dim>      &preconditioner,
                  const GhostPenalty<dim>        *ghost_penalty   = nullptr,
                  const SurfaceTractions<dim>    *pressures       = nullptr,
                  const RigidContact<dim>        *contact         = nullptr,
-                 const double                    increment_floor = 0.)
+                 const double                    increment_floor = 0.,
+                 const RigidPlates<dim>         *plates          = nullptr)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
@@ -47,24 +50,27 @@ namespace qsmpm
       , pressures(pressures)
       , contact(contact)
       , increment_floor(increment_floor)
+      , plates(plates)
     {
     }
 
     /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
     /// penalty, if any) + f_p(du) (the pressures, if any) + f_c(du) (the
-    /// contact forces, if any), with coupled rows added to their masters;
-    /// returns what the evaluation found on this rank's points.
+    /// contact forces, if any), with coupled rows added to their masters,
+    /// and with rigid plates (if any) evaluated at P du with their rows
+    /// tied (RigidPlates); returns what the evaluation found on this
+    /// rank's points.
     Evaluation
     residual(const VectorType &du, VectorType &R) const
     {
-      const Evaluation evaluation = residual_evaluator.evaluate(du, R);
-      if (ghost_penalty != nullptr)
-        ghost_penalty->subtract_forces(du, R);
-      if (pressures != nullptr)
-        pressures->add_pressure_forces(du, R);
-      if (contact != nullptr)
-        contact->add_contact_forces(du, R);
-      constraints.condense(R);
+      if (plates == nullptr)
+        return residual_of(du, R);
+      // With rigid plates: the residual of the increment in which each
+      // plate moves as one, with the plates' rows tied (RigidPlates).
+      projected.reinit(du, /*omit_zeroing_entries=*/true);
+      plates->project(du, projected);
+      const Evaluation evaluation = residual_of(projected, R);
+      plates->tie(du, R);
       return evaluation;
     }
 
@@ -161,6 +167,21 @@ namespace qsmpm
     }
 
   private:
+    /// The residual of all the terms above but the plates' tie.
+    Evaluation
+    residual_of(const VectorType &du, VectorType &R) const
+    {
+      const Evaluation evaluation = residual_evaluator.evaluate(du, R);
+      if (ghost_penalty != nullptr)
+        ghost_penalty->subtract_forces(du, R);
+      if (pressures != nullptr)
+        pressures->add_pressure_forces(du, R);
+      if (contact != nullptr)
+        contact->add_contact_forces(du, R);
+      constraints.condense(R);
+      return evaluation;
+    }
+
     const QuasiStaticResidual<dim> &residual_evaluator;
     const StepConstraints          &constraints;
     const Preconditioner<dim>      &preconditioner;
@@ -168,7 +189,10 @@ namespace qsmpm
     const SurfaceTractions<dim>    *pressures;
     const RigidContact<dim>        *contact;
     /// increment_scale_floor() without rigid bodies.
-    const double increment_floor;
+    const double            increment_floor;
+    const RigidPlates<dim> *plates;
+    /// The increment with the plates moved as one (scratch of residual()).
+    mutable VectorType projected;
   };
 } // namespace qsmpm
 

@@ -158,9 +158,24 @@ namespace qsmpm
     void
     add_rigid_body(const RigidBody<dim> &body);
 
+    /**
+     * Make boundary @p id of the box (BackgroundGrid::make_box(): 2d and
+     * 2d + 1 are normal to direction d) a rigid, frictionless plate: its
+     * nodes move as one along its normal, by what the traction on it
+     * (add_traction()) makes them (RigidPlates), while their other
+     * components stay free. A displacement condition may not hold the same
+     * boundary along its normal.
+     */
+    void
+    add_rigid_plate(const types::boundary_id id);
+
     /// The displacement conditions, in the order they were added.
     const std::vector<DirichletCondition> &
     dirichlet_conditions() const;
+
+    /// The boundary ids of the rigid plates.
+    const std::vector<types::boundary_id> &
+    rigid_plates() const;
 
     /// The traction of each loaded boundary id.
     const std::vector<
@@ -206,6 +221,7 @@ namespace qsmpm
                                                        traction_functions;
     std::vector<SurfaceTraction>                       surface_traction_list;
     std::vector<RigidBody<dim>>                        rigid_body_list;
+    std::vector<types::boundary_id>                    plate_ids;
     std::shared_ptr<Function<dim>>                     body_force_function;
     std::vector<std::pair<Point<dim>, Tensor<1, dim>>> nodal_loads;
     std::function<Tensor<2, dim>(const double)>        gradient;

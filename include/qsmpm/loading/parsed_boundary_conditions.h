@@ -47,6 +47,8 @@ namespace qsmpm
       std::string dirichlet;
       /// Boundary ids that carry the traction function.
       std::string traction;
+      /// <Rigid plate boundaries>.
+      std::string rigid_plates;
       /// H (dim x dim numbers, row by row) of a periodic grid, or empty.
       std::string macroscopic_gradient;
       /// Where the body's surface carries the function of "Surface

@@ -85,7 +85,8 @@ namespace qsmpm
      * du_0 has the residual norm @p reference on the free degrees of
      * freedom and @p force_level on all of them (the rows of the supports
      * hold their reactions, so this is the size of the forces in the
-     * body): gamma max(floor, ||R(du_0)||, 1e-6 force_level). The last
+     * body): gamma max(floor, ||R(du_0)||, 1e-6 force_level), without the
+     * second term if not NewtonParameters::relative_to_load. The last
      * term keeps a step whose load hardly changes from asking for a
      * residual below round-off; like the first two it is measured in the
      * units of the forces, so the test gives the same iterates whatever
@@ -97,8 +98,9 @@ namespace qsmpm
                     const double            force_level)
     {
       return parameters.tolerance *
-             std::max(
-               {parameters.residual_floor, reference, 1e-6 * force_level});
+             std::max({parameters.residual_floor,
+                       parameters.relative_to_load ? reference : 0.,
+                       1e-6 * force_level});
     }
 
     /// What one GMRES solve did.

@@ -21,8 +21,16 @@ namespace qsmpm
     double tolerance = 1e-6;
     /// An absolute floor of that test, in the units of the forces (the
     /// paper's 1); 0, the default, makes the test independent of the units.
-    double       residual_floor = 0.;
-    unsigned int max_iterations = 20;
+    double residual_floor = 0.;
+    /// Whether the stopping test counts ||R_0||, the residual of the
+    /// step's prescribed increments (true, the paper). The fixed-stress
+    /// iterations of a pore fluid set it false after their first solve:
+    /// each later solve restarts from a converged increment after a small
+    /// change of the pore pressure, which a test relative to the step's
+    /// load would not resolve (the solve would return at once, and the
+    /// pressure would stop changing by the same amount in every iteration).
+    bool         relative_to_load = true;
+    unsigned int max_iterations   = 20;
     /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
     double       linear_tolerance      = 1e-3;
     unsigned int max_linear_iterations = 1000;
