@@ -235,6 +235,17 @@ main(int argc, char *argv[])
               "  set Dirichlet boundaries = 2:xy, 3:n\n"
               "end\n",
             /*run=*/true);
+  try_input("rigid plate with path following",
+            "rigid plate",
+            "subsection Boundary conditions\n"
+            "  set Rigid plate boundaries = 3\n"
+            "  set Traction boundaries = 3\n"
+            "end\n" +
+              run_briefly +
+              "  set Control = dissipation\n"
+              "  set Dissipation increment = 1\n"
+              "end\n",
+            /*run=*/true);
   try_input("rigid plate that no material touches",
             "rigid plate",
             "subsection Boundary conditions\n"

@@ -534,6 +534,11 @@ namespace qsmpm
                 ExcMessage("Pore fluid: path following (Load stepping/"
                            "Control) is not available with a pore fluid; "
                            "the load factor is the time."));
+    AssertThrow(rigid_plates.empty(),
+                ExcMessage("Boundary conditions: path following (Load "
+                           "stepping/Control) does not take rigid plates "
+                           "(Rigid plate boundaries); the load factor "
+                           "scales their load."));
     PathFollowingSetup<dim>::check_problem(stepper, bcs, *model);
 
     // The constraints of a unit load-factor increment: their
@@ -566,9 +571,7 @@ namespace qsmpm
                                  preconditioner,
                                  stabilization(),
                                  pressure_loads(),
-                                 contact_loads(),
-                                 0.,
-                                 plates());
+                                 contact_loads());
       const typename PathFollowingSetup<dim>::Solver newton(solver_parameters(),
                                                             &progress);
       const auto                                     constraint =
@@ -623,6 +626,13 @@ namespace qsmpm
       surface_tractions.commit(points(), du_ghosted);
     if (!rigid_contact.empty())
       rigid_contact.commit(points(), du_ghosted);
+    if (!rigid_plates.empty())
+      {
+        const std::vector<double> motion = rigid_plates.means(du);
+        run_state.plate_displacements.resize(motion.size(), 0.);
+        for (unsigned int k = 0; k < motion.size(); ++k)
+          run_state.plate_displacements[k] += motion[k];
+      }
     const double moved = points().advect(cache, du_ghosted);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
@@ -783,6 +793,8 @@ namespace qsmpm
     for (const auto &name : rigid_body_names())
       condition_names.push_back(name);
     body_loads.assign(bcs.rigid_bodies().size(), {});
+    if (!from_checkpoint)
+      run_state.plate_displacements.assign(bcs.rigid_plates().size(), 0.);
     condition_names.push_back("applied");
     condition_names.push_back("held");
 
@@ -929,8 +941,13 @@ namespace qsmpm
       forces.push_back(load.force);
     forces.push_back(last_audit.applied);
     forces.push_back(last_audit.held);
-    writer.write_reactions(
-      stepper.step(), t_new, condition_names, forces, last_audit.imbalance());
+    writer.write_reactions(stepper.step(),
+                           t_new,
+                           condition_names,
+                           forces,
+                           bcs.rigid_plates(),
+                           run_state.plate_displacements,
+                           last_audit.imbalance());
     if (!probes.empty())
       probes.write(points(), stepper.step(), t_new);
     if (writer.fields_due(stepper.step()) ||

@@ -22,6 +22,9 @@ namespace qsmpm
       for (unsigned int d = 0; d < dim; ++d)
         state << ' ' << reaction[d];
     state << "\nload_scale " << load_scale;
+    state << "\nplates " << plate_displacements.size();
+    for (const double u : plate_displacements)
+      state << ' ' << u;
     state << "\nreports " << reports.size() << '\n';
     for (const auto &r : reports)
       state << r.step << ' ' << r.load_factor << ' ' << r.cut_backs << ' '
@@ -67,6 +70,11 @@ namespace qsmpm
         in >> reaction[d];
     expect("load_scale");
     in >> load_scale;
+    expect("plates");
+    in >> n;
+    plate_displacements.assign(n, 0.);
+    for (double &u : plate_displacements)
+      in >> u;
     expect("reports");
     in >> n;
     reports.assign(n, StepReport());

@@ -225,6 +225,14 @@ namespace qsmpm
     const std::vector<Tensor<1, dim>> &
     reactions() const;
 
+    /// The displacement of each rigid plate along its normal so far
+    /// (BoundaryDescriptor::add_rigid_plate(), in that order).
+    const std::vector<double> &
+    rigid_plate_displacements() const
+    {
+      return run_state.plate_displacements;
+    }
+
     /// The material's force on each rigid body in the last accepted step,
     /// the number of points in contact and the deepest penetration.
     const std::vector<typename RigidContact<dim>::BodyLoad> &

@@ -69,15 +69,19 @@ namespace qsmpm
 
     /**
      * One line of reactions.csv (the header is written with the first):
-     * the force vector of each name (columns <name>_Fx, ...) and the
-     * step's lost load, a fraction (column imbalance).
+     * the force vector of each name (columns <name>_Fx, ...), the
+     * displacement of each rigid plate along its normal (columns
+     * plate_<boundary id>_u; none without plates) and the step's lost
+     * load, a fraction (column imbalance).
      */
     void
-    write_reactions(const unsigned int                 step,
-                    const double                       load_factor,
-                    const std::vector<std::string>    &names,
-                    const std::vector<Tensor<1, dim>> &forces,
-                    const double                       imbalance);
+    write_reactions(const unsigned int                     step,
+                    const double                           load_factor,
+                    const std::vector<std::string>        &names,
+                    const std::vector<Tensor<1, dim>>     &forces,
+                    const std::vector<types::boundary_id> &plates,
+                    const std::vector<double>             &plate_displacements,
+                    const double                           imbalance);
 
     const Parameters &
     get_parameters() const;

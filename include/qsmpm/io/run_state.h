@@ -38,6 +38,9 @@ namespace qsmpm
     /// The largest scale of the loads of the steps so far (see
     /// EquilibriumAudit::evaluate()).
     double load_scale = 0.;
+    /// The displacement of each rigid plate along its normal so far
+    /// (BoundaryDescriptor::add_rigid_plate(), in that order).
+    std::vector<double> plate_displacements;
     /// Reports of the accepted steps.
     std::vector<StepReport> reports;
 

@@ -75,11 +75,12 @@ namespace qsmpm
     void
     tie(const VectorType &du, VectorType &R) const;
 
-  private:
-    /// The mean of @p v over each plate's dofs (all ranks).
+    /// The mean of @p v over each plate's dofs (all ranks): of a converged
+    /// increment, each plate's motion in the step. Collective.
     std::vector<double>
     means(const VectorType &v) const;
 
+  private:
     const BoundaryDescriptor<dim> &boundary;
     MPI_Comm                       communicator = MPI_COMM_NULL;
     /// Per plate: its dofs owned here, and their number on all ranks.
