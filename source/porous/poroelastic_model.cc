@@ -1,3 +1,4 @@
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/porous/poroelastic_model.h>
 
 namespace qsmpm
@@ -56,6 +57,8 @@ namespace qsmpm
   {
     auto fields = skeleton_model->output_fields();
     fields.push_back({"pore_pressure", 1});
+    for (const auto &component : Utils::symmetric_component_names<dim>())
+      fields.push_back({"effective_stress_" + component, 1});
     return fields;
   }
 
@@ -66,10 +69,16 @@ namespace qsmpm
   PoroelasticModel<dim>::compute_output_fields(const PointState<dim> &point,
                                                ArrayView<double> values) const
   {
-    const unsigned int n = values.size() - 1;
-    skeleton_model->compute_output_fields(skeleton_state(point),
+    // The skeleton's fields, p, then sigma' = sigma + b p I.
+    constexpr unsigned int n_stress =
+      SymmetricTensor<2, dim>::n_independent_components;
+    const unsigned int    n        = values.size() - 1 - n_stress;
+    const PointState<dim> skeleton = skeleton_state(point);
+    skeleton_model->compute_output_fields(skeleton,
                                           ArrayView<double>(values.data(), n));
     values[n] = point.state[n_skeleton];
+    for (unsigned int k = 0; k < n_stress; ++k)
+      values[n + 1 + k] = skeleton.stress.access_raw_entry(k);
   }
 
 

@@ -24,8 +24,10 @@ namespace qsmpm
    * makes p_k the committed pressure p_n of the next step.
    *
    * The fields after the skeleton's own: p_n, p_k, grad p_n (dim), grad
-   * p_k (dim). Output: the skeleton's fields and "pore_pressure" (the
-   * committed p); the effective stress is the output stress plus b p I.
+   * p_k (dim). Output: the skeleton's fields, "pore_pressure" (the
+   * committed p) and the effective stress sigma' = sigma + b p I
+   * ("effective_stress_xx", "_yy", "_xy", ...; the output stress is the
+   * total stress sigma).
    */
   template <int dim>
   class PoroelasticModel : public ConstitutiveModel<dim>
