@@ -316,10 +316,13 @@ namespace qsmpm
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
           typename TangentAssembler<dim>::AdditionalTerm contact_stiffness;
-          if (!rigid_contact.empty())
+          if (!rigid_contact.empty() || !rigid_plates.empty())
             contact_stiffness = [this](const AffineConstraints<double> &c,
                                        TrilinosWrappers::SparseMatrix  &K) {
-              rigid_contact.add_to(c, K);
+              if (!rigid_contact.empty())
+                rigid_contact.add_to(c, K);
+              if (!rigid_plates.empty())
+                rigid_plates.add_to(K);
             };
           tangent.assemble(background_grid,
                            points(),

@@ -125,6 +125,17 @@ namespace qsmpm
 
 
 
+  template <int dim>
+  void
+  RigidPlates<dim>::add_to(TrilinosWrappers::SparseMatrix &K) const
+  {
+    for (const auto &plate : dofs)
+      for (const auto dof : plate)
+        K.add(dof, dof, stiffness);
+  }
+
+
+
   template class RigidPlates<2>;
   template class RigidPlates<3>;
 } // namespace qsmpm
