@@ -99,24 +99,27 @@ namespace qsmpm
 
 
   template <int dim>
-  void
+  std::vector<double>
   RigidPlates<dim>::project(const VectorType &du, VectorType &projected) const
   {
-    const std::vector<double> mean = means(du);
-    projected                      = du;
+    std::vector<double> mean = means(du);
+    projected                = du;
     for (unsigned int k = 0; k < dofs.size(); ++k)
       for (const auto dof : dofs[k])
         projected(dof) = mean[k];
     projected.compress(VectorOperation::insert);
+    return mean;
   }
 
 
 
   template <int dim>
   void
-  RigidPlates<dim>::tie(const VectorType &du, VectorType &R) const
+  RigidPlates<dim>::tie(const VectorType          &du,
+                        const std::vector<double> &mean,
+                        VectorType                &R) const
   {
-    const std::vector<double> mean = means(du), force = means(R);
+    const std::vector<double> force = means(R);
     for (unsigned int k = 0; k < dofs.size(); ++k)
       for (const auto dof : dofs[k])
         R(dof) = force[k] - stiffness * (du(dof) - mean[k]);

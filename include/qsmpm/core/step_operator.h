@@ -68,9 +68,9 @@ namespace qsmpm
       // With rigid plates: the residual of the increment in which each
       // plate moves as one, with the plates' rows tied (RigidPlates).
       projected.reinit(du, /*omit_zeroing_entries=*/true);
-      plates->project(du, projected);
-      const Evaluation evaluation = residual_of(projected, R);
-      plates->tie(du, R);
+      const std::vector<double> mean       = plates->project(du, projected);
+      const Evaluation          evaluation = residual_of(projected, R);
+      plates->tie(du, mean, R);
       return evaluation;
     }
 

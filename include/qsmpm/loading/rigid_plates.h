@@ -67,15 +67,17 @@ namespace qsmpm
                 const AffineConstraints<double> &constraints,
                 const double                     stiffness_scale);
 
-    /// P du: @p du with each plate's entries replaced by their mean.
-    /// Collective.
-    void
+    /// P du: @p du with each plate's entries replaced by their mean, which
+    /// it returns (one per plate). Collective.
+    std::vector<double>
     project(const VectorType &du, VectorType &projected) const;
 
     /// Replace the plates' rows of @p R (the residual at P @p du) by
-    /// Rtilde. Collective.
+    /// Rtilde; @p mean is what project() returned for @p du. Collective.
     void
-    tie(const VectorType &du, VectorType &R) const;
+    tie(const VectorType          &du,
+        const std::vector<double> &mean,
+        VectorType                &R) const;
 
     /// K += kbar on the diagonal of the plates' dofs (owned rows; K not
     /// yet compressed): the preconditioner's share of the tie.
