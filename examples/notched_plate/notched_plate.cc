@@ -63,7 +63,8 @@ namespace NotchedPlate
           csv.open(plate.output_file);
           AssertThrow(csv,
                       ExcMessage("Cannot write <" + plate.output_file + ">."));
-          csv << "angle_deg,peak_N,work_over_Gf_area,crack_normal_deg\n";
+          csv << "angle_deg,peak_N,work_over_Gf_area,crack_energy_over_Gf_area,"
+                 "crack_normal_deg,path_angle_deg\n";
           curves.open(plate.output_directory + "/load_displacement.csv");
           curves << "angle_deg,grip_displacement_m,load_N\n";
         }
@@ -74,7 +75,9 @@ namespace NotchedPlate
           const auto        r = run.run();
           pcout << "  angle " << std::setw(4) << angle << ": peak "
                 << std::setprecision(6) << r.peak << ", work / (G_f (W - a0)) "
-                << r.work / (G_f * ligament) << ", crack normal " << r.normal
+                << r.work / (G_f * ligament) << " (cracks "
+                << r.crack_energy / (G_f * ligament) << "), crack normal "
+                << r.normal << " deg, path angle " << r.path_angle
                 << " deg, " << r.steps << " steps, " << std::setprecision(3)
                 << r.wall_time << " s" << (r.failed ? " (stopped early)" : "")
                 << std::endl;
@@ -89,7 +92,9 @@ namespace NotchedPlate
             stopped.push_back(angle);
           else
             csv << angle << "," << std::setprecision(8) << r.peak << ","
-                << r.work / (G_f * ligament) << "," << r.normal << "\n"
+                << r.work / (G_f * ligament) << ","
+                << r.crack_energy / (G_f * ligament) << "," << r.normal << ","
+                << r.path_angle << "\n"
                 << std::flush;
         }
       if (root)

@@ -145,6 +145,12 @@ namespace NotchedPlate
       unsigned int steps     = 0;
       double       wall_time = 0.;
       bool         failed    = false;
+      /// The energy the points' cracks dissipated (per unit thickness).
+      double crack_energy = 0.;
+      /// The angle (degrees) between the main crack's path and the
+      /// ligament's line xi = 0: the least-squares line xi = a + b eta
+      /// through the points whose cracks dissipated at least half of G_f.
+      double path_angle = 0.;
       /// The grip's displacement and the load P of each accepted step.
       std::vector<std::array<double, 2>> curve;
     };
@@ -185,6 +191,10 @@ namespace NotchedPlate
     /// energy each crack dissipated.
     double
     mean_crack_normal() const;
+
+    /// Result::crack_energy and Result::path_angle.
+    void
+    measure_crack_path(Result &result) const;
 
     /// The cracks for a picture: each point's position in the plate's
     /// frame (xi, eta) and the energy its cracks dissipated over G_f (0 to
@@ -354,6 +364,7 @@ namespace NotchedPlate
     result.wall_time = timer.wall_time();
     result.steps     = problem.step_reports().size();
     result.normal    = mean_crack_normal();
+    measure_crack_path(result);
     write_cracks(problem.parameters().output.directory + "/cracks.csv");
     return result;
   }
@@ -391,6 +402,49 @@ namespace NotchedPlate
     for (const auto &part : all)
       for (unsigned int i = 0; i + 2 < part.size(); i += 3)
         out << part[i] << ',' << part[i + 1] << ',' << part[i + 2] << '\n';
+  }
+
+
+
+  template <int dim>
+  void
+  RotatedPlate<dim>::measure_crack_path(Result &result) const
+  {
+    const auto *cracks_model =
+      dynamic_cast<const SmearedCracks<dim> *>(&problem.points().get_model());
+    if (cracks_model == nullptr)
+      return;
+    const auto &model   = *cracks_model;
+    const auto &offsets = problem.points().get_offsets();
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
+    // n, sum eta, sum xi, sum eta^2, sum eta xi of the main crack's points.
+    std::array<double, 5> sums{};
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const auto               data = particle.get_properties();
+        const ArrayView<const double> state(data.data() + offsets.state,
+                                            model.n_state_components());
+        const unsigned int count = model.crack_summaries(state, cracks);
+        for (unsigned int k = 0; k < count; ++k)
+          result.crack_energy += cracks[k].dissipated / cracks[k].length *
+                                 data[offsets.initial_volume];
+        if (model.dissipated_over_fracture_energy(state) >= 0.5)
+          {
+            const auto [xi, eta] =
+              plate_frame(problem.points().initial_location(particle));
+            const std::array<double, 5> terms = {
+              {1., eta, xi, eta * eta, eta * xi}};
+            for (unsigned int i = 0; i < terms.size(); ++i)
+              sums[i] += terms[i];
+          }
+      }
+    result.crack_energy =
+      Utilities::MPI::sum(result.crack_energy, MPI_COMM_WORLD);
+    for (double &sum : sums)
+      sum = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
+    const auto [n, e, x, ee, ex] = sums;
+    result.path_angle =
+      std::atan((n * ex - e * x) / (n * ee - e * e)) * 180. / M_PI;
   }
 
 

@@ -138,7 +138,18 @@ namespace qsmpm
     residual.reset();
     material_points.reset();
     pore_pressure.reset();
+    crack_tracking.reset();
     model = std::move(new_model);
+    // Crack tracking edits the points' permissions between steps; it reads
+    // the smeared-crack model's own fields.
+    const auto *cracks = dynamic_cast<const SmearedCracks<dim> *>(model.get());
+    if (cracks != nullptr && cracks->tracks_cracks())
+      {
+        AssertThrow(!prm_values.pore_fluid.enabled,
+                    ExcMessage("smeared cracks: <Crack tracking> is not "
+                               "available with a pore fluid."));
+        crack_tracking = std::make_unique<CrackTracking<dim>>(*cracks);
+      }
     // A saturated body: the model given is the skeleton's, the points
     // carry the total stress and the pore pressure.
     const auto &pore_fluid = prm_values.pore_fluid;
@@ -641,18 +652,23 @@ namespace qsmpm
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the
     // next step (fresh pages cost a page fault each).
-    if (points().locate_in_cells())
+    if (!points().locate_in_cells())
       {
-        points_consistent = true;
-        return;
+        // Sorting moves the points' data in memory. Releasing the cache
+        // first keeps it from adding to the copy of all particle data that
+        // deal.II makes while sorting, the peak of a step that reuses an
+        // earlier preconditioner.
+        cache.clear();
+        points().sort_into_cells_without_loss(moved);
       }
-    // Sorting moves the points' data in memory. Releasing the cache first
-    // keeps it from adding to the copy of all particle data that deal.II
-    // makes while sorting, the peak of a step that reuses an earlier
-    // preconditioner.
-    cache.clear();
-    points().sort_into_cells_without_loss(moved);
     points_consistent = true;
+    // Which points may crack in the next step: from the cracks of this
+    // one, at the points' new places.
+    if (crack_tracking)
+      {
+        crack_tracking->update(points(), communicator);
+        residual->point_state_changed();
+      }
   }
 
 

@@ -2,6 +2,7 @@
 #include <array>
 #include <deal.II/base/exceptions.h>
 #include <qsmpm/materials/material_map.h>
+#include <qsmpm/materials/smeared_cracks.h>
 
 namespace qsmpm
 {
@@ -42,6 +43,19 @@ namespace qsmpm
         }
       return index;
     }
+
+    /// Crack tracking edits the smeared-crack model's own fields between
+    /// steps, which a map gathers into the union's layout.
+    template <int dim>
+    void
+    refuse_crack_tracking(const ConstitutiveModel<dim> &model)
+    {
+      const auto *cracks = dynamic_cast<const SmearedCracks<dim> *>(&model);
+      AssertThrow(cracks == nullptr || !cracks->tracks_cracks(),
+                  ExcMessage("Material map: <Crack tracking> of the smeared "
+                             "cracks model is not available in a material "
+                             "map; use one model for the body."));
+    }
   } // namespace
 
 
@@ -52,6 +66,7 @@ namespace qsmpm
                         std::unique_ptr<ConstitutiveModel<dim>> model)
   {
     AssertThrow(model, ExcMessage("Material map: no model given."));
+    refuse_crack_tracking(*model);
     if (by_id.size() <= material_id)
       by_id.resize(material_id + 1);
     AssertThrow(!by_id[material_id],
@@ -70,6 +85,7 @@ namespace qsmpm
   MaterialMap<dim>::set_default(std::unique_ptr<ConstitutiveModel<dim>> model)
   {
     AssertThrow(model, ExcMessage("Material map: no model given."));
+    refuse_crack_tracking(*model);
     default_member        = std::make_shared<Member>();
     default_member->model = std::move(model);
     build_layout();

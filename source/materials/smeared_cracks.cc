@@ -93,6 +93,8 @@ namespace qsmpm
     , smearing(parameters.smearing)
     , failed_points(parameters.failed)
     , softening(parameters.softening)
+    , tracking(parameters.crack_tracking)
+    , tracking_radius_in_cells(parameters.tracking_radius)
     , M(C[0][0][0][0])
     , bulk(C[0][0][1][1] + 2. * C[0][1][0][1] / dim)
     , compliance(invert(C))
@@ -275,6 +277,22 @@ namespace qsmpm
                       "An expression in x, y (and z): points created where "
                       "it is > 0.5 may crack. Default: everywhere.",
                       Patterns::Anything());
+    prm.add_parameter(
+      "Crack tracking",
+      crack_tracking,
+      "true: a point may start its first crack only further than <Crack "
+      "tracking radius> from every crack, or in the band of cells that the "
+      "path of a nearby crack crosses (its line through the crack's path "
+      "point, normal to the crack; within half the smearing length of it). "
+      "Keeps a crack band straight and one band wide where the grid runs at "
+      "an angle to it. Decided after each step for the next one. Not with "
+      "a material map.");
+    prm.add_parameter("Crack tracking radius",
+                      tracking_radius,
+                      "With <Crack tracking>: the radius, in cell sizes h "
+                      "(<Crack band width>), around the path of a crack "
+                      "within which points may crack only in its band.",
+                      Patterns::Double(0.));
   }
 
 
@@ -300,6 +318,10 @@ namespace qsmpm
     AssertThrow(shear_factor > 0.,
                 ExcMessage("smeared cracks: <Shear factor> must be "
                            "positive."));
+    AssertThrow(!crack_tracking || tracking_radius >= 1.,
+                ExcMessage("smeared cracks: <Crack tracking radius> must be "
+                           "at least 1 (cell size): within it, only the "
+                           "band of a crack may crack."));
   }
 
 
@@ -327,13 +349,16 @@ namespace qsmpm
   std::vector<StateField>
   SmearedCracks<dim>::state_fields() const
   {
-    return {{allowed_name, 1},
-            {count_name, 1},
-            {normals_name, dim * dim},
-            {jumps_name, dim * dim},
-            {separation_name, dim},
-            {separation_increment_name, dim},
-            {failed_name, 1}};
+    std::vector<StateField> fields = {{allowed_name, 1},
+                                      {count_name, 1},
+                                      {normals_name, dim * dim},
+                                      {jumps_name, dim * dim},
+                                      {separation_name, dim},
+                                      {separation_increment_name, dim},
+                                      {failed_name, 1}};
+    if (tracking)
+      fields.push_back({anchor_name, dim + 1});
+    return fields;
   }
 
 

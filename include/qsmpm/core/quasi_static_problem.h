@@ -15,6 +15,7 @@
 #include <qsmpm/core/step_constraint_maker.h>
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/core/step_report.h>
+#include <qsmpm/fracture/crack_tracking.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/io/probe_writer.h>
@@ -360,6 +361,8 @@ namespace qsmpm
     std::unique_ptr<ConstitutiveModel<dim>> model;
     /// With a pore fluid: the pressure on the grid (set_model() makes it).
     std::unique_ptr<PorePressureSolver<dim>> pore_pressure;
+    /// With `Crack tracking` of the smeared-crack model (set_model()).
+    std::unique_ptr<CrackTracking<dim>> crack_tracking;
     /// Fixed-stress iterations of the last step advance() took.
     unsigned int                           coupling_iterations = 0;
     std::unique_ptr<MaterialPointSet<dim>> material_points;

@@ -120,6 +120,18 @@ namespace qsmpm
    * times the ligament 1.065 instead of 1.93 (and still rising) with
    * `keep cracks`.
    *
+   * <h3>Crack tracking</h3>
+   * With `Crack tracking = true` a point may start its first crack only
+   * where a crack path may run: away from existing cracks (further than
+   * `Crack tracking radius` cell sizes from every crack path point), or
+   * inside the band of cells that the path of a nearby crack crosses. The
+   * decision is made for every point after each step (CrackTracking, which
+   * the problem calls at commit) and stored in its `crack_allowed` field
+   * (1: may start, -1: held back in this step, 0: outside the `Cracking
+   * region` for good); the points of a crack keep their path point in the
+   * field `crack_anchor` (a flag and dim coordinates). See CrackTracking for
+   * the rule and why it is needed.
+   *
    * Selected with `set Model = smeared cracks` (subsection
    * "Material/smeared cracks").
    */
@@ -204,6 +216,9 @@ namespace qsmpm
       Softening         softening   = Softening::linear;
       /// An expression in x, y (, z): cracking where it is > 0.5.
       std::string cracking_region = "1";
+      /// Crack tracking (CrackTracking) and its radius in cell sizes.
+      bool   crack_tracking  = false;
+      double tracking_radius = 2.;
 
       void
       add_parameters(ParameterHandler &prm);
@@ -277,6 +292,20 @@ namespace qsmpm
     double
     fracture_energy() const;
 
+    /// Whether the points' permission to crack follows crack tracking.
+    bool
+    tracks_cracks() const
+    {
+      return tracking;
+    }
+
+    /// The radius of crack tracking (`Crack tracking radius` times h).
+    double
+    tracking_radius() const
+    {
+      return tracking_radius_in_cells * band_width;
+    }
+
     /// L for the crack normal @p n.
     double
     smearing_length(const Tensor<1, dim> &n) const;
@@ -324,8 +353,13 @@ namespace qsmpm
     static constexpr const char *separation_increment_name =
       "crack_separation_increment";
     static constexpr const char *failed_name = "point_failed";
+    static constexpr const char *anchor_name = "crack_anchor";
 
   private:
+    /// CrackTracking reads and writes the tracking fields of the state.
+    template <int>
+    friend class CrackTracking;
+
     /// The cracks of a point during a stress update.
     struct Cracks
     {
@@ -390,6 +424,11 @@ namespace qsmpm
     /// carries no tension from the next step on), 2 failed.
     static constexpr unsigned int failed_index = 2 + 2 * dim * dim + 2 * dim;
 
+    /// With crack tracking only: the index of the crack_anchor field, 1 once
+    /// the point's crack path point is set, followed by its dim
+    /// coordinates.
+    static constexpr unsigned int anchor_index = failed_index + 1;
+
     /// A failed point: only a pressure, sigma = K <tr eps>_- I with the bulk
     /// modulus K = lambda + 2 mu / dim (plane stress: the reduced lambda),
     /// from the total strain: no tension and no shear; with @p tangent, its
@@ -416,6 +455,8 @@ namespace qsmpm
     const SmearingLength          smearing;
     const FailedPoints            failed_points;
     const Softening               softening;
+    const bool                    tracking;
+    const double                  tracking_radius_in_cells;
     /// M = lambda + 2 mu.
     const double M;
     /// K = lambda + 2 mu / dim, the bulk modulus of C (plane stress: with
