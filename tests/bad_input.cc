@@ -259,6 +259,28 @@ main(int argc, char *argv[])
               run_briefly + "end\n",
             /*run=*/true);
 
+  // Crack tracking of the smeared-crack model.
+  const std::string tracking = "subsection Material\n"
+                               "  set Model = smeared cracks\n"
+                               "  subsection smeared cracks\n"
+                               "    set Crack band width = 0.1\n"
+                               "    set Crack tracking = true\n";
+  try_input("crack tracking radius below one cell",
+            "Crack tracking radius",
+            tracking + "    set Crack tracking radius = 0.5\n  end\nend\n");
+  try_input("crack tracking with a pore fluid",
+            "Crack tracking",
+            tracking + "  end\nend\n" + pore_fluid + "end\n");
+  try_input("crack tracking in a material map",
+            "Crack tracking",
+            "subsection Material\n"
+            "  set Models by material id = 1: smeared cracks\n"
+            "  subsection smeared cracks\n"
+            "    set Crack band width = 0.1\n"
+            "    set Crack tracking = true\n"
+            "  end\n"
+            "end\n");
+
   // A missing file: deal.II's message names it.
   try
     {

@@ -122,7 +122,7 @@ namespace
       for (auto &particle : points->get_particle_handler())
         if (particle.get_location().distance(x) < 0.25)
           {
-            double *data                                  = particle.get_properties().data();
+            double *data = particle.get_properties().data();
             data[index.at(SmearedCracks<dim>::count_name)] = 1.;
             for (unsigned int d = 0; d < dim; ++d)
               data[index.at(SmearedCracks<dim>::normals_name) + d] = n[d];
@@ -138,8 +138,8 @@ namespace
       for (const auto &particle : points->get_particle_handler())
         if (particle.get_location().distance(x) < 0.25)
           {
-            const double *data = particle.get_properties().data();
-            const unsigned int i = index.at(SmearedCracks<dim>::anchor_name);
+            const double      *data = particle.get_properties().data();
+            const unsigned int i    = index.at(SmearedCracks<dim>::anchor_name);
             AssertThrow(data[i] == 1., ExcMessage("no path point"));
             a = Point<dim>(data[i + 1], data[i + 2]);
           }
@@ -152,7 +152,7 @@ namespace
     void
     update_and_check(const std::vector<Path> &paths, const std::string &step)
     {
-      CrackTracking<dim> tracking(*model);
+      CrackTracking<dim>       tracking(*model);
       const unsigned long long held_back =
         tracking.update(*points, MPI_COMM_WORLD);
       unsigned long long expected_held = 0, wrong = 0, outside_changed = 0,
@@ -180,13 +180,13 @@ namespace
               }
           const bool may = !near || crossed;
           expected_held += !may;
-          wrong += (may != (allowed == 1.)) || (allowed != 1. && allowed != -1.);
+          wrong +=
+            (may != (allowed == 1.)) || (allowed != 1. && allowed != -1.);
         }
-      expected_held = Utilities::MPI::sum(expected_held, MPI_COMM_WORLD);
-      wrong         = Utilities::MPI::sum(wrong, MPI_COMM_WORLD);
-      in_region     = Utilities::MPI::sum(in_region, MPI_COMM_WORLD);
-      outside_changed =
-        Utilities::MPI::sum(outside_changed, MPI_COMM_WORLD);
+      expected_held   = Utilities::MPI::sum(expected_held, MPI_COMM_WORLD);
+      wrong           = Utilities::MPI::sum(wrong, MPI_COMM_WORLD);
+      in_region       = Utilities::MPI::sum(in_region, MPI_COMM_WORLD);
+      outside_changed = Utilities::MPI::sum(outside_changed, MPI_COMM_WORLD);
       deallog << step << ": " << in_region
               << " points without a crack in the cracking region, "
               << expected_held << " of them near a path but off its cells"
@@ -198,10 +198,10 @@ namespace
                  outside_changed == 0);
     }
 
-    BackgroundGrid<dim>                  grid;
-    std::unique_ptr<SmearedCracks<dim>>  model;
+    BackgroundGrid<dim>                    grid;
+    std::unique_ptr<SmearedCracks<dim>>    model;
     std::unique_ptr<MaterialPointSet<dim>> points;
-    std::map<std::string, unsigned int>  index;
+    std::map<std::string, unsigned int>    index;
   };
 } // namespace
 

@@ -77,10 +77,9 @@ namespace NotchedPlate
                 << std::setprecision(6) << r.peak << ", work / (G_f (W - a0)) "
                 << r.work / (G_f * ligament) << " (cracks "
                 << r.crack_energy / (G_f * ligament) << "), crack normal "
-                << r.normal << " deg, path angle " << r.path_angle
-                << " deg, " << r.steps << " steps, " << std::setprecision(3)
-                << r.wall_time << " s" << (r.failed ? " (stopped early)" : "")
-                << std::endl;
+                << r.normal << " deg, path angle " << r.path_angle << " deg, "
+                << r.steps << " steps, " << std::setprecision(3) << r.wall_time
+                << " s" << (r.failed ? " (stopped early)" : "") << std::endl;
           if (!root)
             continue;
           for (const auto &[delta, P] : r.curve)

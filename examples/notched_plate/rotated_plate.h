@@ -421,7 +421,7 @@ namespace NotchedPlate
     std::array<double, 5> sums{};
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const auto               data = particle.get_properties();
+        const auto                    data = particle.get_properties();
         const ArrayView<const double> state(data.data() + offsets.state,
                                             model.n_state_components());
         const unsigned int count = model.crack_summaries(state, cracks);

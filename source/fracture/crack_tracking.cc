@@ -39,7 +39,8 @@ namespace qsmpm
     public:
       explicit PathBins(const double radius)
         : radius(radius)
-      {}
+      {
+      }
 
       void
       add(const PathLine<dim> &line)
@@ -128,7 +129,8 @@ namespace qsmpm
   template <int dim>
   CrackTracking<dim>::CrackTracking(const SmearedCracks<dim> &model)
     : model(model)
-  {}
+  {
+  }
 
 
 
@@ -137,18 +139,18 @@ namespace qsmpm
   CrackTracking<dim>::update(MaterialPointSet<dim> &points,
                              const MPI_Comm         communicator) const
   {
-    using Model                   = SmearedCracks<dim>;
-    const unsigned int first      = points.get_offsets().state;
-    const unsigned int n_state    = points.n_state_components();
-    const unsigned int anchor     = Model::anchor_index;
-    const unsigned int history    = 2 + 2 * dim * dim;
-    const double       radius     = model.tracking_radius();
-    auto              &particles  = points.get_particle_handler();
+    using Model                  = SmearedCracks<dim>;
+    const unsigned int first     = points.get_offsets().state;
+    const unsigned int n_state   = points.n_state_components();
+    const unsigned int anchor    = Model::anchor_index;
+    const unsigned int history   = 2 + 2 * dim * dim;
+    const double       radius    = model.tracking_radius();
+    auto              &particles = points.get_particle_handler();
 
     // Gather the paths of the cracks anchored in earlier steps and the
     // cracks started in the last one.
-    std::vector<double>   anchored, started;
-    std::vector<double *> local_started;
+    std::vector<double>                           anchored, started;
+    std::vector<double *>                         local_started;
     std::array<typename Model::CrackSummary, dim> cracks;
     for (auto &particle : particles)
       {
