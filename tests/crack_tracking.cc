@@ -27,6 +27,11 @@
 //      B's path point is 2.06 cells away), so that points cracking
 //      together share a path instead of starting a parallel one;
 //    - the permissions follow the corner test with the three paths.
+// 3. In 3D (8 x 8 x 8 unit cells, 2 x 2 x 2 points per cell, cracking where
+//    x < 6), one crack with its normal at 30 degrees in the xy plane and
+//    20 degrees out of it: the permissions by the same test with the eight
+//    corners of each cell (the plane crosses the cell), and its path point
+//    at its cell's centre.
 // The same output on 1 and 2 ranks (the cracked points are gathered).
 #include "tests.h"
 
@@ -38,58 +43,81 @@
 namespace
 {
   using namespace qsmpm;
-  constexpr int dim = 2;
 
   /// A crack's path for the reference: a point on it and its normal.
+  template <int dim>
   struct Path
   {
     Point<dim>     anchor;
     Tensor<1, dim> normal;
   };
 
+  /// The unit vector at @p degrees to x in the xy plane and, in 3D,
+  /// @p elevation out of it.
+  template <int dim>
   Tensor<1, dim>
-  unit_at(const double degrees)
+  unit_at(const double degrees, const double elevation = 0.)
   {
-    const double a = degrees * M_PI / 180.;
-    return Tensor<1, dim>({std::cos(a), std::sin(a)});
+    const double   a = degrees * M_PI / 180., b = elevation * M_PI / 180.;
+    Tensor<1, dim> n;
+    n[0] = std::cos(a) * std::cos(b);
+    n[1] = std::sin(a) * std::cos(b);
+    if (dim == 3)
+      n[dim - 1] = std::sin(b);
+    return n;
   }
 
-  /// Whether the line of @p path crosses the unit cell with centre @p c:
-  /// its corners are not all on one side.
+  /// Whether the line (plane) of @p path crosses the unit cell with centre
+  /// @p c: its corners are not all on one side.
+  template <int dim>
   bool
-  crosses(const Path &path, const Point<dim> &c)
+  crosses(const Path<dim> &path, const Point<dim> &c)
   {
     double lowest = 1e300, highest = -1e300;
-    for (const double dx : {-0.5, 0.5})
-      for (const double dy : {-0.5, 0.5})
-        {
-          const double s =
-            (c + Tensor<1, dim>({dx, dy}) - path.anchor) * path.normal;
-          lowest  = std::min(lowest, s);
-          highest = std::max(highest, s);
-        }
+    for (unsigned int corner = 0; corner < (1U << dim); ++corner)
+      {
+        Point<dim> x = c;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] += ((corner >> d) & 1U) ? 0.5 : -0.5;
+        const double s = (x - path.anchor) * path.normal;
+        lowest         = std::min(lowest, s);
+        highest        = std::max(highest, s);
+      }
     return lowest <= 0. && highest >= 0.;
   }
 
+  template <int dim>
   Point<dim>
-  project(const Point<dim> &c, const Path &path)
+  project(const Point<dim> &c, const Path<dim> &path)
   {
     return c - ((c - path.anchor) * path.normal) * path.normal;
   }
 
+  template <int dim>
   Point<dim>
   cell_centre(const Point<dim> &x)
   {
-    return Point<dim>(std::floor(x[0]) + 0.5, std::floor(x[1]) + 0.5);
+    Point<dim> c;
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = std::floor(x[d]) + 0.5;
+    return c;
   }
 
+  template <int dim>
   class Test
   {
   public:
-    Test()
+    /// @p n unit cells per direction, cracking where x < @p region_end.
+    Test(const unsigned int n, const double region_end)
       : grid(MPI_COMM_WORLD)
+      , region_end(region_end)
     {
-      grid.make_box(Point<dim>(), Point<dim>(12., 12.), {{12, 12}});
+      std::array<unsigned int, dim> cells;
+      cells.fill(n);
+      Point<dim> upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = n;
+      grid.make_box(Point<dim>(), upper, cells);
       typename SmearedCracks<dim>::Parameters parameters;
       parameters.elastic.elasticity.young_modulus = 1.;
       parameters.elastic.elasticity.poisson_ratio = 0.2;
@@ -98,7 +126,8 @@ namespace
       parameters.crack_band_width                 = 1.;
       parameters.crack_tracking                   = true;
       parameters.tracking_radius                  = 2.;
-      parameters.cracking_region                  = "x < 10 ? 1 : 0";
+      parameters.cracking_region =
+        "x < " + std::to_string(region_end) + " ? 1 : 0";
       model  = std::make_unique<SmearedCracks<dim>>(parameters);
       points = std::make_unique<MaterialPointSet<dim>>(grid, *model);
       points->fill([](const Point<dim> &) { return true; },
@@ -141,7 +170,8 @@ namespace
             const double      *data = particle.get_properties().data();
             const unsigned int i    = index.at(SmearedCracks<dim>::anchor_name);
             AssertThrow(data[i] == 1., ExcMessage("no path point"));
-            a = Point<dim>(data[i + 1], data[i + 2]);
+            for (unsigned int d = 0; d < dim; ++d)
+              a[d] = data[i + 1 + d];
           }
       for (unsigned int d = 0; d < dim; ++d)
         a[d] = Utilities::MPI::sum(a[d], MPI_COMM_WORLD);
@@ -150,7 +180,8 @@ namespace
 
     /// Run the update and compare the permissions with the corner test.
     void
-    update_and_check(const std::vector<Path> &paths, const std::string &step)
+    update_and_check(const std::vector<Path<dim>> &paths,
+                     const std::string            &step)
     {
       CrackTracking<dim>       tracking(*model);
       const unsigned long long held_back =
@@ -162,7 +193,7 @@ namespace
           const double *data = particle.get_properties().data();
           const double  allowed =
             data[index.at(SmearedCracks<dim>::allowed_name)];
-          if (particle.get_location()[0] >= 10.)
+          if (particle.get_location()[0] >= region_end)
             {
               outside_changed += (allowed != 0.);
               continue;
@@ -172,7 +203,7 @@ namespace
           ++in_region;
           const Point<dim> c    = cell_centre(particle.get_location());
           bool             near = false, crossed = false;
-          for (const Path &path : paths)
+          for (const Path<dim> &path : paths)
             if (c.distance(path.anchor) <= 2.)
               {
                 near    = true;
@@ -199,6 +230,7 @@ namespace
     }
 
     BackgroundGrid<dim>                    grid;
+    const double                           region_end;
     std::unique_ptr<SmearedCracks<dim>>    model;
     std::unique_ptr<MaterialPointSet<dim>> points;
     std::map<std::string, unsigned int>    index;
@@ -211,11 +243,12 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPILogInitAll                    log;
 
-  Test test;
+  constexpr int dim = 2;
+  Test<dim>     test(12, 10.);
   // The points are at 1/4 and 3/4 of each cell.
   const Point<dim> A(5.25, 5.25), B(4.75, 6.25), C(6.25, 5.25);
-  test.start_crack(A, unit_at(30.), 2e-6);
-  const Path first{Point<dim>(5.5, 5.5), unit_at(30.)};
+  test.start_crack(A, unit_at<dim>(30.), 2e-6);
+  const Path<dim> first{Point<dim>(5.5, 5.5), unit_at<dim>(30.)};
   test.update_and_check({first}, "one crack");
   check("one crack: |path point - cell centre|",
         test.anchor_near(A).distance(first.anchor),
@@ -224,18 +257,18 @@ main(int argc, char *argv[])
   // B's cell (4,6) is crossed by the first path, C's cell (6,5) is not.
   AssertThrow(crosses(first, cell_centre(B)) && !crosses(first, cell_centre(C)),
               ExcInternalError());
-  test.start_crack(B, unit_at(35.), 2e-6);
-  test.start_crack(C, unit_at(30.), 1e-6);
-  const Path second{project(cell_centre(B), first), unit_at(35.)};
+  test.start_crack(B, unit_at<dim>(35.), 2e-6);
+  test.start_crack(C, unit_at<dim>(30.), 1e-6);
+  const Path<dim> second{project(cell_centre(B), first), unit_at<dim>(35.)};
   // The nearest path whose path point lies within r of C's cell centre.
-  const Path *nearest = nullptr;
-  for (const Path *path : {&first, &second})
+  const Path<dim> *nearest = nullptr;
+  for (const Path<dim> *path : {&first, &second})
     if (cell_centre(C).distance(path->anchor) <= 2. &&
         (nearest == nullptr ||
          std::abs((cell_centre(C) - path->anchor) * path->normal) <
            std::abs((cell_centre(C) - nearest->anchor) * nearest->normal)))
       nearest = path;
-  const Path third{project(cell_centre(C), *nearest), unit_at(30.)};
+  const Path<dim> third{project(cell_centre(C), *nearest), unit_at<dim>(30.)};
   test.update_and_check({first, second, third}, "two more cracks");
   check("two more cracks: |B's path point - its cell centre on the first "
         "path|",
@@ -248,4 +281,17 @@ main(int argc, char *argv[])
   check("one crack: its path point unchanged",
         test.anchor_near(A).distance(first.anchor),
         1e-12);
+
+  // 3D: a plane crack.
+  {
+    constexpr int     dim3 = 3;
+    Test<dim3>        test3(8, 6.);
+    const Point<dim3> P(3.25, 3.25, 3.25);
+    const Path<dim3> plane{Point<dim3>(3.5, 3.5, 3.5), unit_at<dim3>(30., 20.)};
+    test3.start_crack(P, plane.normal, 2e-6);
+    test3.update_and_check({plane}, "3D, one crack");
+    check("3D, one crack: |path point - cell centre|",
+          test3.anchor_near(P).distance(plane.anchor),
+          1e-12);
+  }
 }
