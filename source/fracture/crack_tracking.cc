@@ -139,11 +139,16 @@ namespace qsmpm
   CrackTracking<dim>::update(MaterialPointSet<dim> &points,
                              const MPI_Comm         communicator) const
   {
-    using Model                  = SmearedCracks<dim>;
-    const unsigned int first     = points.get_offsets().state;
-    const unsigned int n_state   = points.n_state_components();
-    const unsigned int anchor    = Model::anchor_index;
+    using Model                = SmearedCracks<dim>;
+    const unsigned int first   = points.get_offsets().state;
+    const unsigned int n_state = points.n_state_components();
+    // Indices into the model's state (SmearedCracks::state_fields()):
+    // crack_allowed, crack_count, the first crack's separation history and
+    // crack_anchor.
+    const unsigned int allowed   = 0;
+    const unsigned int count     = 1;
     const unsigned int history   = 2 + 2 * dim * dim;
+    const unsigned int anchor    = Model::anchor_index;
     const double       radius    = model.tracking_radius();
     auto              &particles = points.get_particle_handler();
 
@@ -265,7 +270,7 @@ namespace qsmpm
     for (auto &particle : particles)
       {
         double *state = particle.get_properties().data() + first;
-        if (state[0] == 0. || state[1] > 0.)
+        if (state[allowed] == 0. || state[count] > 0.)
           continue;
         const Point<dim> centre = particle.get_surrounding_cell()->center();
         bool             near = false, in_band = false;
@@ -274,8 +279,8 @@ namespace qsmpm
           in_band =
             in_band || line.offset(centre) <= line.half_width * (1. + 1e-9);
         });
-        state[0] = (!near || in_band) ? 1. : -1.;
-        held_back += (state[0] < 0.);
+        state[allowed] = (!near || in_band) ? 1. : -1.;
+        held_back += (state[allowed] < 0.);
       }
     return Utilities::MPI::sum(held_back, communicator);
   }
