@@ -187,14 +187,13 @@ namespace NotchedPlate
     void
     setup_loads();
 
-    /// The mean crack normal's angle to x (degrees), weighted by the
-    /// energy each crack dissipated.
-    double
-    mean_crack_normal() const;
-
-    /// Result::crack_energy and Result::path_angle.
+    /**
+     * From the points' cracks: Result::normal, the mean crack normal's
+     * angle to x (degrees), weighted by the energy each crack dissipated;
+     * Result::crack_energy and Result::path_angle.
+     */
     void
-    measure_crack_path(Result &result) const;
+    measure_cracks(Result &result) const;
 
     /// The cracks for a picture: each point's position in the plate's
     /// frame (xi, eta) and the energy its cracks dissipated over G_f (0 to
@@ -363,8 +362,7 @@ namespace NotchedPlate
     timer.stop();
     result.wall_time = timer.wall_time();
     result.steps     = problem.step_reports().size();
-    result.normal    = mean_crack_normal();
-    measure_crack_path(result);
+    measure_cracks(result);
     write_cracks(problem.parameters().output.directory + "/cracks.csv");
     return result;
   }
@@ -406,19 +404,27 @@ namespace NotchedPlate
 
 
 
+  // The normals n and -n are the same crack: average the doubled angles
+  // (cos 2 phi, sin 2 phi), weighted by the energy dissipated. The path is
+  // the least-squares line xi = a + b eta through the points of the main
+  // crack.
   template <int dim>
   void
-  RotatedPlate<dim>::measure_crack_path(Result &result) const
+  RotatedPlate<dim>::measure_cracks(Result &result) const
   {
     const auto *cracks_model =
       dynamic_cast<const SmearedCracks<dim> *>(&problem.points().get_model());
     if (cracks_model == nullptr)
-      return;
+      {
+        result.normal = std::numeric_limits<double>::quiet_NaN();
+        return;
+      }
     const auto &model   = *cracks_model;
     const auto &offsets = problem.points().get_offsets();
     std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
-    // n, sum eta, sum xi, sum eta^2, sum eta xi of the main crack's points.
-    std::array<double, 5> sums{};
+    // Sums over the ranks: the energy, cos 2 phi and sin 2 phi weighted by
+    // it, and n, eta, xi, eta^2, eta xi of the main crack's points.
+    std::array<double, 8> sums{};
     for (const auto &particle : problem.points().get_particle_handler())
       {
         const auto                    data = particle.get_properties();
@@ -426,8 +432,16 @@ namespace NotchedPlate
                                             model.n_state_components());
         const unsigned int count = model.crack_summaries(state, cracks);
         for (unsigned int k = 0; k < count; ++k)
-          result.crack_energy += cracks[k].dissipated / cracks[k].length *
-                                 data[offsets.initial_volume];
+          {
+            // The energy the crack dissipated in the point's volume.
+            const double energy = cracks[k].dissipated / cracks[k].length *
+                                  data[offsets.initial_volume];
+            const double phi =
+              std::atan2(cracks[k].normal[1], cracks[k].normal[0]);
+            sums[0] += energy;
+            sums[1] += energy * std::cos(2. * phi);
+            sums[2] += energy * std::sin(2. * phi);
+          }
         if (model.dissipated_over_fracture_energy(state) >= 0.5)
           {
             const auto [xi, eta] =
@@ -435,52 +449,15 @@ namespace NotchedPlate
             const std::array<double, 5> terms = {
               {1., eta, xi, eta * eta, eta * xi}};
             for (unsigned int i = 0; i < terms.size(); ++i)
-              sums[i] += terms[i];
+              sums[3 + i] += terms[i];
           }
       }
-    result.crack_energy =
-      Utilities::MPI::sum(result.crack_energy, MPI_COMM_WORLD);
     for (double &sum : sums)
       sum = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
-    const auto [n, e, x, ee, ex] = sums;
+    const auto [energy, c, sn, n, e, x, ee, ex] = sums;
+    result.crack_energy                         = energy;
     result.path_angle =
       std::atan((n * ex - e * x) / (n * ee - e * e)) * 180. / M_PI;
-  }
-
-
-
-  // The normals n and -n are the same crack: average the doubled angles
-  // (cos 2 phi, sin 2 phi), weighted by the energy dissipated.
-  template <int dim>
-  double
-  RotatedPlate<dim>::mean_crack_normal() const
-  {
-    const auto *cracks_model =
-      dynamic_cast<const SmearedCracks<dim> *>(&problem.points().get_model());
-    if (cracks_model == nullptr)
-      return std::numeric_limits<double>::quiet_NaN();
-    const auto &model   = *cracks_model;
-    const auto &offsets = problem.points().get_offsets();
-    double      c = 0., sn = 0.;
-    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const auto         data  = particle.get_properties();
-        const unsigned int count = model.crack_summaries(
-          {data.data() + offsets.state, model.n_state_components()}, cracks);
-        for (unsigned int k = 0; k < count; ++k)
-          {
-            // The energy the crack dissipated in the point's volume.
-            const double weight = cracks[k].dissipated / cracks[k].length *
-                                  data[offsets.initial_volume];
-            const double phi =
-              std::atan2(cracks[k].normal[1], cracks[k].normal[0]);
-            c += weight * std::cos(2. * phi);
-            sn += weight * std::sin(2. * phi);
-          }
-      }
-    c            = Utilities::MPI::sum(c, MPI_COMM_WORLD);
-    sn           = Utilities::MPI::sum(sn, MPI_COMM_WORLD);
     double angle = 0.5 * std::atan2(sn, c) * 180. / M_PI;
     // In [theta - 90, theta + 90), the frame of the load axis.
     const double theta_deg = theta * 180. / M_PI;
@@ -488,7 +465,7 @@ namespace NotchedPlate
       angle += 180.;
     while (angle >= theta_deg + 90.)
       angle -= 180.;
-    return angle;
+    result.normal = angle;
   }
 
 
