@@ -3,7 +3,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <qsmpm/assembly/ghost_penalty.h>
 
 namespace qsmpm
@@ -64,23 +63,6 @@ namespace qsmpm
           }
       }
 
-    TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
-                                              grid.locally_owned_dofs(),
-                                              grid.locally_relevant_dofs(),
-                                              grid.get_communicator());
-    for (const auto &[cell, f] : penalized)
-      {
-        cell->get_dof_indices(dofs);
-        cell->neighbor(f)->get_dof_indices(neighbor_dofs);
-        for (const auto i : {&dofs, &neighbor_dofs})
-          for (const auto j : {&dofs, &neighbor_dofs})
-            for (const auto row : *i)
-              for (const auto column : *j)
-                pattern.add(row, column);
-      }
-    pattern.compress();
-    G.reinit(pattern);
-
     // g = gamma E_s h int_F [[grad du . n]] . [[grad v . n]] on each face,
     // from both cells' gradients at the face's Gauss points.
     const FESystem<dim>  &fe = grid.get_fe();
@@ -96,8 +78,7 @@ namespace qsmpm
                             update_gradients);
     const unsigned int    n = fe.n_dofs_per_cell();
     FullMatrix<double>    local(2 * n, 2 * n);
-    face_dofs.clear();
-    face_matrices.clear();
+    clear();
     std::vector<types::global_dof_index> local_dofs(2 * n);
     std::vector<double>                  jump(2 * n);
     std::vector<unsigned int>            component(2 * n);
@@ -130,85 +111,11 @@ namespace qsmpm
                 if (component[i] == component[j])
                   local(i, j) += weight * jump[i] * jump[j];
           }
-        G.add(local_dofs, local);
-        face_dofs.push_back(local_dofs);
-        face_matrices.push_back(local);
+        add(local_dofs, local);
       }
-    G.compress(VectorOperation::add);
-    faces =
-      dealii::Utilities::MPI::sum(static_cast<unsigned int>(penalized.size()),
-                                  grid.get_communicator());
-  }
-
-
-
-  template <int dim>
-  bool
-  GhostPenalty<dim>::active() const
-  {
-    return faces > 0;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  GhostPenalty<dim>::n_faces() const
-  {
-    return faces;
-  }
-
-
-
-  template <int dim>
-  void
-  GhostPenalty<dim>::subtract_forces(const TrilinosWrappers::MPI::Vector &du,
-                                     TrilinosWrappers::MPI::Vector &R) const
-  {
-    if (!active())
-      return;
-    scratch.reinit(R, /*omit_zeroing_entries=*/true);
-    G.vmult(scratch, du);
-    R -= scratch;
-  }
-
-
-
-  template <int dim>
-  void
-  GhostPenalty<dim>::add_diagonal_to(
-    TrilinosWrappers::MPI::Vector &diagonal) const
-  {
-    if (!active())
-      return;
-    for (const auto row : diagonal.locally_owned_elements())
-      diagonal(row) += G.diag_element(row);
-    diagonal.compress(VectorOperation::add);
-  }
-
-
-
-  template <int dim>
-  void
-  GhostPenalty<dim>::add_couplings(
-    const AffineConstraints<double>   &periodicity,
-    TrilinosWrappers::SparsityPattern &pattern) const
-  {
-    for (const auto &dofs : face_dofs)
-      periodicity.add_entries_local_to_global(dofs,
-                                              pattern,
-                                              /*keep_constrained=*/true);
-  }
-
-
-
-  template <int dim>
-  void
-  GhostPenalty<dim>::add_to(const AffineConstraints<double> &constraints,
-                            TrilinosWrappers::SparseMatrix  &K) const
-  {
-    for (unsigned int f = 0; f < face_dofs.size(); ++f)
-      constraints.distribute_local_to_global(face_matrices[f], face_dofs[f], K);
+    build(grid.locally_owned_dofs(),
+          grid.locally_relevant_dofs(),
+          grid.get_communicator());
   }
 
 

@@ -313,6 +313,18 @@ namespace qsmpm
                                   constraint_maker.mean_stiffness(points()));
       residual->set_external_force(f_ext);
     }
+    {
+      TimerOutput::Scope scope(timer_output, "constraints and loads");
+      null_mode_hold.reinit(
+        background_grid,
+        points(),
+        cache,
+        step_constraints.get(),
+        stabilization(),
+        additional_stiffness(false),
+        prm_values.material_points.min_nodal_stiffness_fraction,
+        constraint_maker.mean_stiffness(points()));
+    }
     // The stiffness and its preconditioner, unless the one of an earlier
     // step may serve again (PreconditionerReuse). K is not reassembled
     // either (with GIMP its pattern may change, and AMG and KLU refer to
@@ -326,27 +338,52 @@ namespace qsmpm
       {
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
-          typename TangentAssembler<dim>::AdditionalTerm contact_stiffness;
-          if (!rigid_contact.empty() || !rigid_plates.empty())
-            contact_stiffness = [this](const AffineConstraints<double> &c,
-                                       TrilinosWrappers::SparseMatrix  &K) {
-              if (!rigid_contact.empty())
-                rigid_contact.add_to(c, K);
-              if (!rigid_plates.empty())
-                rigid_plates.add_to(K);
-            };
           tangent.assemble(background_grid,
                            points(),
                            cache,
                            step_constraints.get(),
                            stabilization(),
-                           contact_stiffness);
+                           additional_stiffness(true));
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
                              background_grid,
                              tangent.pattern_generation());
       }
+  }
+
+
+
+  template <int dim>
+  std::vector<const LocalStiffness *>
+  QuasiStaticProblem<dim>::stabilizations() const
+  {
+    std::vector<const LocalStiffness *> terms;
+    if (stabilization() != nullptr)
+      terms.push_back(stabilization());
+    if (null_mode_hold.active())
+      terms.push_back(&null_mode_hold);
+    return terms;
+  }
+
+
+
+  template <int dim>
+  typename TangentAssembler<dim>::AdditionalTerm
+  QuasiStaticProblem<dim>::additional_stiffness(const bool with_hold) const
+  {
+    const bool hold = with_hold && null_mode_hold.active();
+    if (rigid_contact.empty() && rigid_plates.empty() && !hold)
+      return {};
+    return [this, hold](const AffineConstraints<double> &c,
+                        TrilinosWrappers::SparseMatrix  &K) {
+      if (!rigid_contact.empty())
+        rigid_contact.add_to(c, K);
+      if (!rigid_plates.empty())
+        rigid_plates.add_to(K);
+      if (hold)
+        null_mode_hold.add_to(c, K);
+    };
   }
 
 
@@ -405,7 +442,7 @@ namespace qsmpm
       const StepOperator<dim> op(*residual,
                                  step_constraints,
                                  preconditioner,
-                                 stabilization(),
+                                 stabilizations(),
                                  pressure_loads(),
                                  contact_loads(),
                                  pore_pressure ?
@@ -583,7 +620,7 @@ namespace qsmpm
       const StepOperator<dim> op(*residual,
                                  step_constraints,
                                  preconditioner,
-                                 stabilization(),
+                                 stabilizations(),
                                  pressure_loads(),
                                  contact_loads());
       const typename PathFollowingSetup<dim>::Solver newton(solver_parameters(),
@@ -887,7 +924,8 @@ namespace qsmpm
                                  cut_backs,
                                  newton,
                                  wall_timer.wall_time(),
-                                 coupling_iterations});
+                                 coupling_iterations,
+                                 null_mode_hold.n_modes()});
     progress << run_state.reports.back().progress_line(last_audit.imbalance())
              << std::endl;
     const bool stop = step_callback && !step_callback(run_state.reports.back());

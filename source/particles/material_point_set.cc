@@ -128,7 +128,13 @@ namespace qsmpm
         "stiffness in a direction -- the points of a completely failed "
         "crack band that opens, once the intact points beside them have "
         "left the node's cells -- has none, and the step's Jacobian would "
-        "be singular. 0: never.",
+        "be singular. The same threshold holds the motion of two coupled "
+        "dofs that no point stiffens although each has stiffness (a point "
+        "on a face of its cell beside failed points; the eigenvalues of "
+        "the pair's 2 x 2 block of the tangent, searched in the steps "
+        "where the points of a cell all lie within sqrt(fraction) of one "
+        "face) by a spring on that motion, which carries no load. "
+        "0: never.",
         Patterns::Double(0., 1.));
       prm.add_parameter(
         "Ghost penalty",

@@ -1,11 +1,7 @@
 #ifndef qsmpm_assembly_ghost_penalty_h
 #define qsmpm_assembly_ghost_penalty_h
 
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_vector.h>
+#include <qsmpm/assembly/local_stiffness.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -39,10 +35,11 @@ namespace qsmpm
    * higher normal derivatives, so the first one is all there is.
    *
    * The residual of a step becomes R(du) - G du; the preconditioner's
-   * matrix K + G (TangentAssembler::assemble() adds it).
+   * matrix K + G (TangentAssembler::assemble() adds it, LocalStiffness
+   * applies it).
    */
   template <int dim>
-  class GhostPenalty
+  class GhostPenalty : public LocalStiffness
   {
   public:
     /**
@@ -57,42 +54,12 @@ namespace qsmpm
            const double               gamma,
            const double               stiffness_scale);
 
-    /// Whether G has any entry (on any rank).
-    bool
-    active() const;
-
-    /// R -= G du.
-    void
-    subtract_forces(const TrilinosWrappers::MPI::Vector &du,
-                    TrilinosWrappers::MPI::Vector       &R) const;
-
-    /// diagonal += the diagonal of G (a vector of the locally owned dofs).
-    void
-    add_diagonal_to(TrilinosWrappers::MPI::Vector &diagonal) const;
-
-    /// Add the couplings of G to @p pattern (with @p periodicity, as the
-    /// tangent's pattern).
-    void
-    add_couplings(const AffineConstraints<double>   &periodicity,
-                  TrilinosWrappers::SparsityPattern &pattern) const;
-
-    /// K += G, with the step's @p constraints (as the tangent's cells).
-    void
-    add_to(const AffineConstraints<double> &constraints,
-           TrilinosWrappers::SparseMatrix  &K) const;
-
     /// The number of faces penalized in the last reinit() (all ranks).
     unsigned int
-    n_faces() const;
-
-  private:
-    TrilinosWrappers::SparseMatrix G;
-    /// The degrees of freedom of the two cells of each penalized face on
-    /// this rank, and the face's matrix.
-    std::vector<std::vector<types::global_dof_index>> face_dofs;
-    std::vector<FullMatrix<double>>                   face_matrices;
-    mutable TrilinosWrappers::MPI::Vector             scratch;
-    unsigned int                                      faces = 0;
+    n_faces() const
+    {
+      return n_terms();
+    }
   };
 } // namespace qsmpm
 

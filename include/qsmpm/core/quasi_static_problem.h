@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <qsmpm/assembly/ghost_penalty.h>
+#include <qsmpm/assembly/null_mode_hold.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
 #include <qsmpm/core/path_following_setup.h>
@@ -409,6 +410,7 @@ namespace qsmpm
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
     TangentAssembler<dim>                     tangent;
     GhostPenalty<dim>                         ghost_penalty;
+    NullModeHold<dim>                         null_mode_hold;
     /// The ghost penalty if Material points/Ghost penalty > 0, else null.
     const GhostPenalty<dim> *
     stabilization() const
@@ -416,6 +418,14 @@ namespace qsmpm
       return prm_values.material_points.ghost_penalty > 0. ? &ghost_penalty :
                                                              nullptr;
     }
+    /// The linear stabilizations of the step's residual: the ghost penalty
+    /// and the springs of the null-mode hold, where they have terms.
+    std::vector<const LocalStiffness *>
+    stabilizations() const;
+    /// The stiffness of the step's rigid bodies and plates for
+    /// TangentAssembler, and with @p with_hold that of the null-mode hold.
+    typename TangentAssembler<dim>::AdditionalTerm
+    additional_stiffness(const bool with_hold) const;
     /// The surface tractions if a pressure acts in this step, else null.
     const SurfaceTractions<dim> *
     pressure_loads() const

@@ -4,7 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <iomanip>
-#include <qsmpm/assembly/ghost_penalty.h>
+#include <qsmpm/assembly/local_stiffness.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/loading/rigid_contact.h>
 #include <qsmpm/loading/rigid_plates.h>
@@ -13,6 +13,8 @@
 #include <qsmpm/solvers/newton_krylov.h>
 #include <qsmpm/solvers/preconditioner.h>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace qsmpm
 {
@@ -30,23 +32,24 @@ namespace qsmpm
     /// What a residual evaluation found on this rank's points.
     using Evaluation = typename QuasiStaticResidual<dim>::Evaluation;
 
-    /// The step's operator; @p ghost_penalty, if given, stabilizes the
-    /// nodes of cut cells; @p pressures, if given, add the pressures on
-    /// the body's surface, which follow the increment; @p contact, if
-    /// given, the contact forces of rigid bodies; @p plates, if given,
-    /// ties the nodes of rigid plates.
-    StepOperator(const QuasiStaticResidual<dim> &residual,
-                 const StepConstraints          &constraints,
-                 const Preconditioner<dim>      &preconditioner,
-                 const GhostPenalty<dim>        *ghost_penalty   = nullptr,
-                 const SurfaceTractions<dim>    *pressures       = nullptr,
-                 const RigidContact<dim>        *contact         = nullptr,
-                 const double                    increment_floor = 0.,
-                 const RigidPlates<dim>         *plates          = nullptr)
+    /// The step's operator; @p stabilizations, linear terms G du (the
+    /// ghost penalty of cut cells, the springs of NullModeHold), stabilize
+    /// nodes with little or no stiffness; @p pressures, if given, add the
+    /// pressures on the body's surface, which follow the increment; @p contact,
+    /// if given, the contact forces of rigid bodies; @p plates, if given, ties
+    /// the nodes of rigid plates.
+    StepOperator(const QuasiStaticResidual<dim>     &residual,
+                 const StepConstraints              &constraints,
+                 const Preconditioner<dim>          &preconditioner,
+                 std::vector<const LocalStiffness *> stabilizations  = {},
+                 const SurfaceTractions<dim>        *pressures       = nullptr,
+                 const RigidContact<dim>            *contact         = nullptr,
+                 const double                        increment_floor = 0.,
+                 const RigidPlates<dim>             *plates          = nullptr)
       : residual_evaluator(residual)
       , constraints(constraints)
       , preconditioner(preconditioner)
-      , ghost_penalty(ghost_penalty)
+      , stabilizations(std::move(stabilizations))
       , pressures(pressures)
       , contact(contact)
       , increment_floor(increment_floor)
@@ -54,8 +57,8 @@ namespace qsmpm
     {
     }
 
-    /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the ghost
-    /// penalty, if any) + f_p(du) (the pressures, if any) + f_c(du) (the
+    /// R(du) = f_ext - f_int(du) (QuasiStaticResidual) - G du (the
+    /// stabilizations, if any) + f_p(du) (the pressures, if any) + f_c(du) (the
     /// contact forces, if any), with coupled rows added to their masters,
     /// and with rigid plates (if any) evaluated at P du with their rows
     /// tied (RigidPlates); returns what the evaluation found on this
@@ -172,8 +175,8 @@ namespace qsmpm
     residual_of(const VectorType &du, VectorType &R) const
     {
       const Evaluation evaluation = residual_evaluator.evaluate(du, R);
-      if (ghost_penalty != nullptr)
-        ghost_penalty->subtract_forces(du, R);
+      for (const LocalStiffness *term : stabilizations)
+        term->subtract_forces(du, R);
       if (pressures != nullptr)
         pressures->add_pressure_forces(du, R);
       if (contact != nullptr)
@@ -182,12 +185,12 @@ namespace qsmpm
       return evaluation;
     }
 
-    const QuasiStaticResidual<dim> &residual_evaluator;
-    const StepConstraints          &constraints;
-    const Preconditioner<dim>      &preconditioner;
-    const GhostPenalty<dim>        *ghost_penalty;
-    const SurfaceTractions<dim>    *pressures;
-    const RigidContact<dim>        *contact;
+    const QuasiStaticResidual<dim>           &residual_evaluator;
+    const StepConstraints                    &constraints;
+    const Preconditioner<dim>                &preconditioner;
+    const std::vector<const LocalStiffness *> stabilizations;
+    const SurfaceTractions<dim>              *pressures;
+    const RigidContact<dim>                  *contact;
     /// increment_scale_floor() without rigid bodies.
     const double            increment_floor;
     const RigidPlates<dim> *plates;

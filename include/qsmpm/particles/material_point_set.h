@@ -60,7 +60,8 @@ namespace qsmpm
       /// are held fixed in a step like nodes without points.
       double min_nodal_volume_fraction = 0.;
       /// Degrees of freedom whose stiffness (diagonal of the tangent) is at
-      /// most this fraction of the mean are held fixed in a step.
+      /// most this fraction of the mean are held fixed in a step; pairs of
+      /// dofs with a motion that stiff, by NullModeHold.
       double min_nodal_stiffness_fraction = 1e-8;
       /// The factor gamma of the ghost penalty of cut cells (GhostPenalty);
       /// 0: none.
