@@ -310,7 +310,8 @@ namespace qsmpm
                                   residual->ghosted_layout(),
                                   t_old,
                                   t_new,
-                                  constraint_maker.mean_stiffness(points()));
+                                  constraint_maker.mean_stiffness(points()),
+                                  run_state.body_displacements);
       residual->set_external_force(f_ext);
     }
     {
@@ -590,6 +591,12 @@ namespace qsmpm
                            "stepping/Control) does not take rigid plates "
                            "(Rigid plate boundaries); the load factor "
                            "scales their load."));
+    for (const auto &body : bcs.rigid_bodies())
+      AssertThrow(!body.load_driven(),
+                  ExcMessage("Rigid body <" + body.name +
+                             ">: path following (Load stepping/Control) "
+                             "does not take a body driven by a force; the "
+                             "load factor scales its load."));
     PathFollowingSetup<dim>::check_problem(stepper, bcs, *model);
 
     // The constraints of a unit load-factor increment: their
@@ -676,7 +683,12 @@ namespace qsmpm
     if (!surface_tractions.empty())
       surface_tractions.commit(points(), du_ghosted);
     if (!rigid_contact.empty())
-      rigid_contact.commit(points(), du_ghosted);
+      {
+        // (Before commit(): the motion of a body driven by a force follows
+        // from the tractions of the last step, which commit() replaces.)
+        run_state.body_displacements = rigid_contact.load_displacements(du);
+        rigid_contact.commit(points(), du_ghosted);
+      }
     if (!rigid_plates.empty())
       {
         const std::vector<double> motion = rigid_plates.means(du);
@@ -736,6 +748,8 @@ namespace qsmpm
     double scale = run_state.load_scale;
     for (const auto &load : body_loads)
       scale = std::max(scale, load.force.norm());
+    if (contact_loads() != nullptr)
+      rigid_contact.check_loads(du, scale);
     last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
@@ -850,7 +864,10 @@ namespace qsmpm
       condition_names.push_back(name);
     body_loads.assign(bcs.rigid_bodies().size(), {});
     if (!from_checkpoint)
-      run_state.plate_displacements.assign(bcs.rigid_plates().size(), 0.);
+      {
+        run_state.plate_displacements.assign(bcs.rigid_plates().size(), 0.);
+        run_state.body_displacements.assign(bcs.rigid_bodies().size(), 0.);
+      }
     condition_names.push_back("applied");
     condition_names.push_back("held");
 
@@ -998,12 +1015,26 @@ namespace qsmpm
       forces.push_back(load.force);
     forces.push_back(last_audit.applied);
     forces.push_back(last_audit.held);
+    std::vector<std::string> motion_names;
+    std::vector<double>      motions;
+    for (unsigned int k = 0; k < bcs.rigid_plates().size(); ++k)
+      {
+        motion_names.push_back("plate_" +
+                               std::to_string(bcs.rigid_plates()[k]) + "_u");
+        motions.push_back(run_state.plate_displacements[k]);
+      }
+    for (unsigned int b = 0; b < bcs.rigid_bodies().size(); ++b)
+      if (bcs.rigid_bodies()[b].load_driven())
+        {
+          motion_names.push_back(bcs.rigid_bodies()[b].name + "_u");
+          motions.push_back(run_state.body_displacements[b]);
+        }
     writer.write_reactions(stepper.step(),
                            t_new,
                            condition_names,
                            forces,
-                           bcs.rigid_plates(),
-                           run_state.plate_displacements,
+                           motion_names,
+                           motions,
                            last_audit.imbalance());
     if (!probes.empty())
       probes.write(points(), stepper.step(), t_new);

@@ -225,13 +225,13 @@ namespace qsmpm
   template <int dim>
   void
   OutputWriter<dim>::write_reactions(
-    const unsigned int                     step,
-    const double                           load_factor,
-    const std::vector<std::string>        &names,
-    const std::vector<Tensor<1, dim>>     &forces,
-    const std::vector<types::boundary_id> &plates,
-    const std::vector<double>             &plate_displacements,
-    const double                           imbalance)
+    const unsigned int                 step,
+    const double                       load_factor,
+    const std::vector<std::string>    &names,
+    const std::vector<Tensor<1, dim>> &forces,
+    const std::vector<std::string>    &motion_names,
+    const std::vector<double>         &motions,
+    const double                       imbalance)
   {
     if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
@@ -247,15 +247,15 @@ namespace qsmpm
         for (const auto &name : names)
           for (unsigned int d = 0; d < dim; ++d)
             *reactions_file << ',' << name << "_F" << components[d];
-        for (const auto id : plates)
-          *reactions_file << ",plate_" << id << "_u";
+        for (const auto &name : motion_names)
+          *reactions_file << ',' << name;
         *reactions_file << ",imbalance\n";
       }
     *reactions_file << step << ',' << std::setprecision(12) << load_factor;
     for (const auto &force : forces)
       for (unsigned int d = 0; d < dim; ++d)
         *reactions_file << ',' << force[d];
-    for (const double u : plate_displacements)
+    for (const double u : motions)
       *reactions_file << ',' << u;
     *reactions_file << ',' << imbalance << std::endl;
   }

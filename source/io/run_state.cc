@@ -25,6 +25,9 @@ namespace qsmpm
     state << "\nplates " << plate_displacements.size();
     for (const double u : plate_displacements)
       state << ' ' << u;
+    state << "\nbodies " << body_displacements.size();
+    for (const double u : body_displacements)
+      state << ' ' << u;
     state << "\nreports " << reports.size() << '\n';
     for (const auto &r : reports)
       state << r.step << ' ' << r.load_factor << ' ' << r.cut_backs << ' '
@@ -74,6 +77,11 @@ namespace qsmpm
     in >> n;
     plate_displacements.assign(n, 0.);
     for (double &u : plate_displacements)
+      in >> u;
+    expect("bodies");
+    in >> n;
+    body_displacements.assign(n, 0.);
+    for (double &u : body_displacements)
       in >> u;
     expect("reports");
     in >> n;

@@ -77,9 +77,22 @@ namespace qsmpm
                       "h^(dim-1), k the mean stiffness of the grid's "
                       "degrees of freedom, h the smallest cell size. A "
                       "point penetrates the body by about p h / (gamma E).");
+    prm.declare_entry(
+      "Load direction",
+      "",
+      Patterns::Anything(),
+      "Empty (the default): the body follows <Motion>. Otherwise the "
+      "direction \"x,y\" (\"x,y,z\") in which a force, <Load>, pushes the "
+      "body into the material: along it the body moves until the material "
+      "balances that force (its motion there is an unknown of each step, "
+      "in reactions.csv as <Name>_u), across it it follows <Motion>.");
     prm.enter_subsection("Motion");
     Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
     prm.set("Function expression", dim == 2 ? "0; 0" : "0; 0; 0");
+    prm.set("Variable names", dim == 2 ? "x,y,t" : "x,y,z,t");
+    prm.leave_subsection();
+    prm.enter_subsection("Load");
+    Functions::ParsedFunction<dim>::declare_parameters(prm, 1);
     prm.set("Variable names", dim == 2 ? "x,y,t" : "x,y,z,t");
     prm.leave_subsection();
     prm.leave_subsection();
@@ -154,6 +167,34 @@ namespace qsmpm
                       " expressions in t separated by ';')."));
       }
     prm.leave_subsection();
+    const std::string direction = prm.get("Load direction");
+    if (!direction.empty())
+      {
+        const Point<dim> d =
+          Utils::parse_point<dim>(direction, where + "<Load direction>");
+        AssertThrow(d.norm() > 0.,
+                    ExcMessage(where + "<Load direction> must not be zero."));
+        body.load_direction = d / d.norm();
+        auto load = std::make_shared<Functions::ParsedFunction<dim>>(1);
+        prm.enter_subsection("Load");
+        try
+          {
+            load->parse_parameters(prm);
+            load->set_time(0.);
+            load->value(Point<dim>());
+          }
+        catch (const std::exception &exc)
+          {
+            AssertThrow(false,
+                        ExcMessage(where + "Load: <Function expression> = <" +
+                                   prm.get("Function expression") +
+                                   ">: " + Utils::error_message(exc) +
+                                   " (the force on the body along <Load "
+                                   "direction>: one expression in t)."));
+          }
+        prm.leave_subsection();
+        body.load = load;
+      }
     prm.leave_subsection();
     body.motion = motion;
     boundary.add_rigid_body(body);

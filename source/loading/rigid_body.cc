@@ -168,6 +168,39 @@ namespace qsmpm
 
 
   template <int dim>
+  Tensor<1, dim>
+  RigidBody<dim>::load_unit() const
+  {
+    const double size = load_direction.norm();
+    return size > 0. ? load_direction / size : Tensor<1, dim>();
+  }
+
+
+
+  template <int dim>
+  double
+  RigidBody<dim>::force(const double t) const
+  {
+    if (load == nullptr)
+      return 0.;
+    load->set_time(t);
+    return load->value(Point<dim>());
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidBody<dim>::prescribed_displacement(const double t) const
+  {
+    const Tensor<1, dim> u = displacement(t);
+    const Tensor<1, dim> d = load_unit();
+    return u - (u * d) * d;
+  }
+
+
+
+  template <int dim>
   void
   RigidBody<dim>::check() const
   {
@@ -203,6 +236,11 @@ namespace qsmpm
                 ExcMessage(body + "the penalty factor must be positive."));
     AssertThrow(motion == nullptr || motion->n_components == dim,
                 ExcMessage(body + "the motion must have dim components."));
+    AssertThrow(load_driven() == (load != nullptr),
+                ExcMessage(body + "a body driven by a force needs both a "
+                                  "load direction and a load."));
+    AssertThrow(load == nullptr || load->n_components == 1,
+                ExcMessage(body + "the load must have one component."));
   }
 
 

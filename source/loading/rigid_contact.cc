@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
+#include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/rigid_contact.h>
 #include <sstream>
@@ -42,7 +44,8 @@ namespace qsmpm
                                  const VectorType            &ghosted_layout,
                                  const double                 t_old,
                                  const double                 t_new,
-                                 const double                 stiffness_scale)
+                                 const double                 stiffness_scale,
+                                 const std::vector<double> &load_displacements)
   {
     const auto &bodies = boundary.rigid_bodies();
     cache              = &shape_cache;
@@ -76,12 +79,35 @@ namespace qsmpm
     // placed inside the material (a tied body holds what lies in it).
     const bool          first_step = t_old == 0.;
     std::vector<double> overlap(bodies.size(), 0.);
+    load_unit.resize(bodies.size());
+    load_force.resize(bodies.size());
+    load_start.assign(bodies.size(), 0.);
+    shift.assign(bodies.size(), 0.);
+    cell_size = h;
+    // A body driven by a force starts the step where the last one left it
+    // along its load direction; the step moves it on by shift.
+    std::vector<Tensor<1, dim>> start(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        penalty[b] = bodies[b].penalty_factor * stiffness_scale / h_power;
-        body_displacement[b] = bodies[b].displacement(t_new);
-        body_increment[b] =
-          body_displacement[b] - bodies[b].displacement(t_old);
+        const RigidBody<dim> &body = bodies[b];
+        penalty[b]    = body.penalty_factor * stiffness_scale / h_power;
+        load_unit[b]  = body.load_unit();
+        load_force[b] = body.force(t_new);
+        if (body.load_driven() && b < load_displacements.size())
+          load_start[b] = load_displacements[b];
+        if (body.load_driven())
+          {
+            start[b] = body.prescribed_displacement(t_old) +
+                       load_start[b] * load_unit[b];
+            body_displacement[b] = body.prescribed_displacement(t_new) +
+                                   load_start[b] * load_unit[b];
+          }
+        else
+          {
+            start[b]             = body.displacement(t_old);
+            body_displacement[b] = body.displacement(t_new);
+          }
+        body_increment[b] = body_displacement[b] - start[b];
       }
 
     for (unsigned int c = 0; c < cache->n_cells(); ++c)
@@ -134,9 +160,7 @@ namespace qsmpm
                   {
                     Tensor<1, dim> n_start;
                     const double depth = -bodies[b].signed_distance_from_point(
-                      (corner - bodies[b].point) -
-                        bodies[b].displacement(t_old),
-                      n_start);
+                      (corner - bodies[b].point) - start[b], n_start);
                     if (depth > 2. * r)
                       overlap[b] = std::max(overlap[b], depth);
                   }
@@ -238,11 +262,13 @@ namespace qsmpm
                               bool            &active) const
   {
     const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
-    // The contact point's displacement in the step: sum_i N_i(x_c) du_i.
-    Tensor<1, dim> u;
+    // The contact point's displacement in the step: sum_i N_i(x_c) du_i,
+    // relative to the body's motion by a force in the step.
+    const Tensor<1, dim> body_shift = shift[c.body] * load_unit[c.body];
+    Tensor<1, dim>       u;
     for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
       u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-    gap             = body.signed_distance_from_point(c.relative + u, n);
+    gap = body.signed_distance_from_point(c.relative + u - body_shift, n);
     const bool tied = body.friction == RigidBody<dim>::Friction::tied;
     active          = tied || gap < 0.;
     if (!active)
@@ -259,12 +285,14 @@ namespace qsmpm
     // Tied: the last step's traction plus the penalty of the contact
     // point's motion relative to the body, in every direction.
     if (tied)
-      return t_old - penalty[c.body] * (u - body_increment[c.body]);
+      return t_old -
+             penalty[c.body] * (u - body_increment[c.body] - body_shift);
     Tensor<1, dim> t = pressure * n;
     // Return map of the tangential traction: the last step's, plus the
     // penalty of the slip of the contact point relative to the body.
     Tensor<1, dim> tau = t_old;
-    tau -= tangential_scale * penalty[c.body] * (u - body_increment[c.body]);
+    tau -= tangential_scale * penalty[c.body] *
+           (u - body_increment[c.body] - body_shift);
     tau -= (tau * n) * n;
     if (body.friction == RigidBody<dim>::Friction::coulomb)
       {
@@ -279,6 +307,201 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  RigidContact<dim>::solve_shifts(const double *du_local) const
+  {
+    const auto    &bodies       = boundary.rigid_bodies();
+    const MPI_Comm communicator = du_ghosted.get_mpi_communicator();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        if (!bodies[b].load_driven())
+          continue;
+        const Tensor<1, dim> &d = load_unit[b];
+        // f(s), and its slope at a point that sticks: sum_c A eps ((n . d)^2
+        // + eps_T / eps |P d|^2) (exact for flat faces; tied: A eps).
+        const bool tangential =
+          bodies[b].friction != RigidBody<dim>::Friction::frictionless;
+        const auto evaluate = [&](const double s, double &slope) {
+          shift[b] = s;
+          Tensor<1, 2> fs;
+          for (const Candidate &c : candidates)
+            {
+              if (c.body != b)
+                continue;
+              Tensor<1, dim>       n;
+              double               gap;
+              bool                 active;
+              const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
+              if (!active)
+                continue;
+              const double normal = (n * d) * (n * d);
+              fs[0] += c.area * (t * d);
+              fs[1] += c.area * penalty[b] *
+                       (bodies[b].friction == RigidBody<dim>::Friction::tied ?
+                          1. :
+                          normal + (tangential ? tangential_scale : 0.) *
+                                     (1. - normal));
+            }
+          fs    = dealii::Utilities::MPI::sum(fs, communicator);
+          slope = fs[1];
+          return fs[0] - load_force[b];
+        };
+        // First a bracket [lo, hi] of the root, f(lo) < 0 < f(hi): Newton
+        // steps with the slope above from the start (the last step's s),
+        // a step twice as long whenever f did not change sign and fell by
+        // less than half (points that slip or leave the contact flatten
+        // f). Then, inside the bracket, Newton from the end with the
+        // smaller |f| where it lands inside (on the root's piece of the
+        // piecewise linear f it lands on the root), else false position
+        // with the Illinois halving. Beyond two cells of motion in a step
+        // the candidates no longer cover the body's surface: no root,
+        // which check_loads() reports.
+        const double limit = 2. * cell_size;
+        const double width = 1e-15 * (limit + std::abs(shift[b]));
+        double       slope = 0.;
+        double       s     = shift[b];
+        double       value = evaluate(s, slope);
+        if (value == 0.)
+          continue;
+        const double tolerance =
+          1e-14 * std::max(std::abs(load_force[b]), std::abs(value));
+        double lo = s, f_lo = value, k_lo = slope;
+        double hi = s, f_hi = value, k_hi = slope;
+        double step = slope > 0. ? std::abs(value) / slope : 1e-3 * cell_size;
+        // Expand until the signs differ (lo == hi marks a missing end).
+        for (unsigned int iteration = 0;
+             (f_lo > 0. || f_hi < 0.) && iteration < 200;
+             ++iteration)
+          {
+            const double sign = value < 0. ? 1. : -1.;
+            const double next = std::clamp(s + sign * step, -limit, limit);
+            if (next == s)
+              break;
+            const double previous = value;
+            s                     = next;
+            value                 = evaluate(s, slope);
+            if (value == 0.)
+              break;
+            if (value < 0.)
+              {
+                lo   = s;
+                f_lo = value;
+                k_lo = slope;
+                if (f_hi < 0.)
+                  {
+                    hi   = s;
+                    f_hi = value;
+                    k_hi = slope;
+                  }
+              }
+            else
+              {
+                hi   = s;
+                f_hi = value;
+                k_hi = slope;
+                if (f_lo > 0.)
+                  {
+                    lo   = s;
+                    f_lo = value;
+                    k_lo = slope;
+                  }
+              }
+            step = (slope > 0. && std::abs(value) < 0.5 * std::abs(previous)) ?
+                     std::abs(value) / slope :
+                     2. * step;
+          }
+        // (g_lo, g_hi: the ends' values for false position, halved at the
+        // end that stays twice in a row.)
+        double g_lo = f_lo, g_hi = f_hi;
+        int    last_side = 0;
+        if (value != 0. && f_lo < 0. && f_hi > 0.)
+          for (unsigned int iteration = 0; iteration < 200; ++iteration)
+            {
+              double next = std::numeric_limits<double>::quiet_NaN();
+              if (-f_lo <= f_hi && k_lo > 0.)
+                next = lo - f_lo / k_lo;
+              else if (f_hi < -f_lo && k_hi > 0.)
+                next = hi - f_hi / k_hi;
+              if (!(next > lo && next < hi))
+                next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+              if (!(next > lo && next < hi))
+                next = 0.5 * (lo + hi);
+              s     = next;
+              value = evaluate(s, slope);
+              if (std::abs(value) <= tolerance || hi - lo <= width)
+                break;
+              const int side = value < 0. ? -1 : 1;
+              if (side < 0)
+                {
+                  lo   = s;
+                  f_lo = g_lo = value;
+                  k_lo        = slope;
+                  if (last_side < 0)
+                    g_hi *= 0.5;
+                }
+              else
+                {
+                  hi   = s;
+                  f_hi = g_hi = value;
+                  k_hi        = slope;
+                  if (last_side > 0)
+                    g_lo *= 0.5;
+                }
+              last_side = side;
+            }
+        shift[b] = s;
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  RigidContact<dim>::load_displacements(const VectorType &du) const
+  {
+    std::vector<double> motion(load_start);
+    if (!any)
+      return motion;
+    for_each_contact(du,
+                     [](const Candidate &, const Tensor<1, dim> &, double) {});
+    for (unsigned int b = 0; b < motion.size(); ++b)
+      motion[b] += shift[b];
+    return motion;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::check_loads(const VectorType &du,
+                                 const double      force_scale) const
+  {
+    const auto                 &bodies = boundary.rigid_bodies();
+    const std::vector<BodyLoad> loads  = body_loads(du);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        if (!bodies[b].load_driven())
+          continue;
+        // The material's force on the body along d balances the load.
+        const double balance = loads[b].force * load_unit[b] + load_force[b];
+        if (std::abs(balance) <=
+            1e-6 * std::max(std::abs(load_force[b]), force_scale))
+          continue;
+        std::ostringstream message;
+        message << "Rigid body <" << bodies[b].name
+                << ">: no motion along its load direction balances its load "
+                << load_force[b] << " (the material pushes back with "
+                << -(loads[b].force * load_unit[b])
+                << "): the body finds no material to push against within "
+                   "two cells of its surface in this step, or pulls on "
+                   "material it does not hold (only a tied body can pull).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+  }
+
+
+
+  template <int dim>
   template <typename Action>
   void
   RigidContact<dim>::for_each_contact(const VectorType &du,
@@ -288,6 +511,7 @@ namespace qsmpm
       return;
     du_ghosted             = du;
     const double *du_local = du_ghosted.trilinos_vector()[0];
+    solve_shifts(du_local);
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;
@@ -417,6 +641,8 @@ namespace qsmpm
                             const VectorType      &du_ghosted_step) const
   {
     const double *du_local = du_ghosted_step.trilinos_vector()[0];
+    if (any)
+      solve_shifts(du_local);
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;

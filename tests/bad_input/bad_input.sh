@@ -266,6 +266,12 @@ driver_case rigid_body_friction_negative "Friction coefficient" 1 \
   $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Point = 0, 1\n  set Normal = 0, -1\n  set Friction = coulomb\n  set Friction coefficient = -0.3\n end\nend'
 driver_case rigid_body_shape_unknown "Shape" 1 \
   $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = cone\n end\nend'
+# A body driven by a force: a zero load direction, a load that is no
+# expression in t.
+driver_case rigid_body_load_direction_zero "Load direction" 1 \
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Point = 0, 1\n  set Normal = 0, -1\n  set Load direction = 0, 0\n end\nend'
+driver_case rigid_body_load_expression "Rigid body: Load" 1 \
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Point = 0, 1\n  set Normal = 0, -1\n  set Load direction = 0, -1\n  subsection Load\n   set Function expression = 2*q\n  end\n end\nend'
 # A step that cannot converge: one Newton iteration, a tolerance GMRES
 # cannot reach in one, one cut-back.
 noconv=$'subsection Nonlinear solver\n set Maximum Newton iterations = 1\n set Tolerance = 1e-14\n set Residual floor = 0\n set Linear tolerance = 1e-2\nend\nsubsection Load stepping\n set Maximum cut-backs = 1\nend'

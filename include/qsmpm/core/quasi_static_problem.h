@@ -235,6 +235,15 @@ namespace qsmpm
       return run_state.plate_displacements;
     }
 
+    /// The displacement of each rigid body along its load direction so
+    /// far (the bodies driven by a force, RigidBody::load_direction; 0
+    /// for the others; add_rigid_body() order).
+    const std::vector<double> &
+    rigid_body_load_displacements() const
+    {
+      return run_state.body_displacements;
+    }
+
     /// The material's force on each rigid body in the last accepted step,
     /// the number of points in contact and the deepest penetration.
     const std::vector<typename RigidContact<dim>::BodyLoad> &

@@ -41,6 +41,10 @@ namespace qsmpm
     /// The displacement of each rigid plate along its normal so far
     /// (BoundaryDescriptor::add_rigid_plate(), in that order).
     std::vector<double> plate_displacements;
+    /// The displacement of each rigid body along its load direction so
+    /// far (0 for the bodies not driven by a force; add_rigid_body()
+    /// order).
+    std::vector<double> body_displacements;
     /// Reports of the accepted steps.
     std::vector<StepReport> reports;
 

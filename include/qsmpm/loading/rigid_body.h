@@ -87,6 +87,40 @@ namespace qsmpm
     /// factor t (set_time(t), evaluated at the origin); nullptr: at rest.
     std::shared_ptr<Function<dim>> motion;
 
+    /**
+     * A body driven by a force: the direction along which its motion is
+     * not prescribed (zero, the default: the body follows @p motion
+     * alone). Along it the body moves, in each step, until the contact
+     * force of the material balances @p load; @p motion's component along
+     * it is ignored, the others are prescribed. Set both or neither.
+     */
+    Tensor<1, dim> load_direction;
+
+    /// The force the body exerts on the material along
+    /// @p load_direction (per unit thickness in 2D) as a function of the
+    /// load factor t (set_time(t), evaluated at the origin).
+    std::shared_ptr<Function<dim>> load;
+
+    /// Whether a force drives the body along load_direction.
+    bool
+    load_driven() const
+    {
+      return load_direction.norm() > 0.;
+    }
+
+    /// The unit vector of load_direction (zero if not load_driven()).
+    Tensor<1, dim>
+    load_unit() const;
+
+    /// The force along load_direction at load factor @p t.
+    double
+    force(const double t) const;
+
+    /// The prescribed part of the body's translation at load factor @p t:
+    /// displacement(t) without its component along load_direction.
+    Tensor<1, dim>
+    prescribed_displacement(const double t) const;
+
     Friction friction = Friction::frictionless;
     /// mu of Coulomb friction.
     double friction_coefficient = 0.;
@@ -130,7 +164,8 @@ namespace qsmpm
                                Tensor<1, dim>       &normal) const;
 
     /// Throws with a message naming the body if its description is
-    /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0).
+    /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0, a
+    /// load direction without a load or the other way round).
     void
     check() const;
 

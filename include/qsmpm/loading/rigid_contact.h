@@ -84,6 +84,24 @@ namespace qsmpm
    * The candidates of a step are the points within two cell sizes of a
    * body at the step's end (with du = 0): a point that moves further
    * towards a body in one step than that is missed.
+   *
+   * <h3>A body driven by a force</h3>
+   * A body with a load direction d (RigidBody::load_driven()) moves along
+   * d by an unknown amount s in each step, beyond its converged position
+   * of the last step: for every increment du, s is the root of
+   *
+   *   f(s) = sum_c A_c t_c(du, s) . d - F(t_new),
+   *
+   * the contact force of the material along d balancing the body's load F
+   * (Newton's method on s in a bracket, one sum over the ranks per
+   * iteration; f is monotone in s, piecewise linear for flat faces, so
+   * Newton ends on the exact root in a few iterations once the points in
+   * contact stay the same). The body's motion is thus condensed out of the
+   * step's unknowns: the residual stays a function of du alone, and
+   * Jacobian-free Newton sees ds/du through its finite differences. Where
+   * no s balances F (the body finds no material to push against within
+   * two cells), check_loads() stops the run with a message naming the
+   * body.
    */
   template <int dim>
   class RigidContact
@@ -103,7 +121,9 @@ namespace qsmpm
      * @p cache, their contact points and weights, and the contact stiffness
      * from
      * @p stiffness_scale (kbar). @p ghosted_layout is a vector with the
-     * layout the cache's local dof indices refer to. Collective.
+     * layout the cache's local dof indices refer to. @p load_displacements
+     * holds, per body, the motion along its load direction at t_old of
+     * the bodies driven by a force (empty: none has moved). Collective.
      */
     void
     reinit_step(const BackgroundGrid<dim>   &grid,
@@ -112,7 +132,19 @@ namespace qsmpm
                 const VectorType            &ghosted_layout,
                 const double                 t_old,
                 const double                 t_new,
-                const double                 stiffness_scale);
+                const double                 stiffness_scale,
+                const std::vector<double>   &load_displacements = {});
+
+    /// Per body, its motion along its load direction at the increment
+    /// @p du (the bodies driven by a force; 0 for the others). Collective.
+    std::vector<double>
+    load_displacements(const VectorType &du) const;
+
+    /// Throw with a message naming the first body driven by a force whose
+    /// load the material does not balance at the increment @p du (to
+    /// 1e-6 of the load or of @p force_scale). Collective.
+    void
+    check_loads(const VectorType &du, const double force_scale) const;
 
     /// R += the contact forces on the material at the increment @p du
     /// (owned entries); @p R compressed.
@@ -184,6 +216,12 @@ namespace qsmpm
              double          &gap,
              bool            &active) const;
 
+    /// The motion s along its load direction of each body driven by a
+    /// force that balances its load at the increment whose local entries
+    /// @p du_local holds (shift). Collective.
+    void
+    solve_shifts(const double *du_local) const;
+
     /// Call @p action(candidate, traction, gap) for every candidate in
     /// contact at the increment @p du (owned entries).
     template <typename Action>
@@ -204,6 +242,15 @@ namespace qsmpm
     /// Each body's displacement at the step's end, and in the step.
     std::vector<Tensor<1, dim>> body_displacement;
     std::vector<Tensor<1, dim>> body_increment;
+    /// Per body driven by a force: its load direction (unit; zero for the
+    /// others), its load at the step's end, its motion along the
+    /// direction at the step's start, and the motion s in the step that
+    /// the last solve_shifts() found (the next one starts from it).
+    std::vector<Tensor<1, dim>> load_unit;
+    std::vector<double>         load_force;
+    std::vector<double>         load_start;
+    mutable std::vector<double> shift;
+    double                      cell_size = 0.;
     std::vector<Candidate>      candidates;
     unsigned int                dofs_per_cell = 0;
     /// Per candidate, the dofs of its point's cell: global index, index
