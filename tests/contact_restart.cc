@@ -21,10 +21,22 @@
 //     history decides the steps until the points slip, after which the
 //     return map puts them at mu p_N again), so that the check above,
 //     six orders of magnitude tighter, can fail.
+//  D, E: A and B with the floor dragged by a force instead (Load
+//     direction = 1, 0; H = 1.5 (t - 1) after the pressing, at most half
+//     the friction mu N; its motion along x an unknown of each step,
+//     the column floor_u): the resumed run must have the uninterrupted
+//     run's forces and the floor's motion, each to 1e-10 of its largest
+//     value, which needs the motion so far from the checkpoint.
+//  F: negative control, E's checkpoint with the floor's motion so far
+//     (the line "bodies 1 u" of its state.txt) set to 0: the floor then
+//     starts the resumed step at rest, and its motion must differ by more
+//     than 1e-3 of the largest.
 #include "prm_text.h"
 #include "tests.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <qsmpm/core/quasi_static_problem.h>
 
 using namespace qsmpm;
@@ -39,6 +51,7 @@ namespace
     unsigned int stop_after          = 0;
     bool         resume              = false;
     bool         forget_tractions    = false;
+    bool         force_driven        = false;
   };
 
   void
@@ -66,8 +79,12 @@ namespace
          << "    set Point = 0, 0.25\n    set Normal = 0, 1\n"
          << "    set Friction = coulomb\n"
          << "    set Friction coefficient = 0.3\n"
-         << "    subsection Motion\n"
-         << "      set Function expression = 0.02*max(t - 1, 0); 0\n"
+         << (options.force_driven ?
+               "    set Load direction = 1, 0\n"
+               "    subsection Load\n"
+               "      set Function expression = 1.5*max(t - 1, 0)\n" :
+               "    subsection Motion\n"
+               "      set Function expression = 0.02*max(t - 1, 0); 0\n")
          << "    end\n  end\nend\n"
          << "subsection Load stepping\n  set Final load factor = 2\n"
          << "  set Number of steps = 20\nend\n"
@@ -100,20 +117,27 @@ namespace
   }
 
   /// Whether the two files have the same steps, and the largest difference
-  /// of their forces relative to the largest force of @p reference.
+  /// of their columns [first, end) relative to the largest value of
+  /// @p reference there (end = 0: to the last column).
   std::pair<bool, double>
-  compare(const std::string &reference, const std::string &other)
+  compare(const std::string &reference,
+          const std::string &other,
+          const unsigned int first = 2,
+          const unsigned int end   = 0)
   {
     const auto a = read_csv(reference), b = read_csv(other);
     bool       same    = a.size() == b.size() && a.size() == 20;
     double     largest = 0., difference = 0.;
+    const auto last = [&](const std::vector<double> &row) {
+      return end == 0 ? row.size() : std::min<std::size_t>(end, row.size());
+    };
     for (const auto &row : a)
-      for (unsigned int j = 2; j < row.size(); ++j)
+      for (unsigned int j = first; j < last(row); ++j)
         largest = std::max(largest, std::abs(row[j]));
     for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
       {
         same = same && a[i].size() == b[i].size() && a[i][0] == b[i][0];
-        for (unsigned int j = 2; j < std::min(a[i].size(), b[i].size()); ++j)
+        for (unsigned int j = first; j < std::min(last(a[i]), last(b[i])); ++j)
           difference = std::max(difference, std::abs(a[i][j] - b[i][j]));
       }
     return {same, difference / largest};
@@ -127,7 +151,7 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   if (root)
-    for (const std::string d : {"A", "B", "C"})
+    for (const std::string d : {"A", "B", "C", "D", "E", "F"})
       fs::remove_all(d);
   MPI_Barrier(MPI_COMM_WORLD);
 
@@ -142,6 +166,28 @@ main(int argc, char *argv[])
   MPI_Barrier(MPI_COMM_WORLD);
   run({"B", 11, 0, true, false});
   run({"C", 11, 0, true, true});
+  run({"D", 0, 0, false, false, true});
+  run({"E", 11, 14, false, false, true});
+  if (root)
+    {
+      fs::copy("E", "F", fs::copy_options::recursive);
+      // F: the floor's motion so far forgotten.
+      const std::string state = "F/checkpoint-00011/state.txt";
+      std::ifstream     in(state);
+      std::string       text((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+      in.close();
+      const auto begin = text.find("\nbodies 1 ");
+      const auto end   = text.find('\n', begin + 1);
+      check_that("force-driven floor: the checkpoint holds its motion",
+                 begin != std::string::npos && end != std::string::npos);
+      if (begin != std::string::npos && end != std::string::npos)
+        text.replace(begin, end - begin, "\nbodies 1 0");
+      std::ofstream(state) << text;
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  run({"E", 11, 0, true, false, true});
+  run({"F", 11, 0, true, false, true});
   if (root)
     {
       const auto header = [](const std::string &file) {
@@ -170,5 +216,31 @@ main(int argc, char *argv[])
                      "|difference| / max |force|",
                      forgotten.second,
                      1e-4);
+      // The floor driven by a force: its motion is the column before the
+      // last (imbalance).
+      const unsigned int motion = read_csv("D/reactions.csv")[0].size() - 2;
+      check_that("force-driven floor: reactions.csv has floor_u",
+                 header("D/reactions.csv").find("floor_u") !=
+                   std::string::npos);
+      const auto forces =
+        compare("D/reactions.csv", "E/reactions.csv", 2, motion);
+      check_that("force-driven floor, resumed: the 20 steps", forces.first);
+      check("force-driven floor, resumed: max |force - uninterrupted| / max "
+            "|force|",
+            forces.second,
+            1e-10);
+      const auto moved =
+        compare("D/reactions.csv", "E/reactions.csv", motion, motion + 1);
+      std::cout << "force-driven floor resumed: max motion difference / max "
+                << moved.second << std::endl;
+      check("force-driven floor, resumed: max |u - uninterrupted| / max |u|",
+            moved.second,
+            1e-10);
+      const auto at_rest =
+        compare("D/reactions.csv", "F/reactions.csv", motion, motion + 1);
+      check_at_least("control, the floor's motion forgotten on resume: max "
+                     "|u - uninterrupted| / max |u|",
+                     at_rest.second,
+                     1e-3);
     }
 }
