@@ -494,7 +494,33 @@ namespace qsmpm
     if (extrapolate)
       last_load_increment = t_new - t_old;
     commit_step();
+    if (pore_pressure)
+      update_degree_of_consolidation();
     return true;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::update_degree_of_consolidation()
+  {
+    const unsigned int pressure = points().get_layout().offset("pore_pressure");
+    const unsigned int volume   = points().get_offsets().volume;
+    const double       initial  = prm_values.pore_fluid.initial_pressure;
+    double             excess   = 0.;
+    for (const auto &particle : points().get_particle_handler())
+      {
+        const auto data = particle.get_properties();
+        excess += (data[pressure] - initial) * data[volume];
+      }
+    excess = std::abs(dealii::Utilities::MPI::sum(excess, communicator));
+    run_state.peak_excess_pressure =
+      std::max(run_state.peak_excess_pressure, excess);
+    degree_of_consolidation_value =
+      run_state.peak_excess_pressure > 0. ?
+        1. - excess / run_state.peak_excess_pressure :
+        0.;
   }
 
 
@@ -1015,26 +1041,31 @@ namespace qsmpm
       forces.push_back(load.force);
     forces.push_back(last_audit.applied);
     forces.push_back(last_audit.held);
-    std::vector<std::string> motion_names;
-    std::vector<double>      motions;
+    std::vector<std::string> column_names;
+    std::vector<double>      columns;
     for (unsigned int k = 0; k < bcs.rigid_plates().size(); ++k)
       {
-        motion_names.push_back("plate_" +
+        column_names.push_back("plate_" +
                                std::to_string(bcs.rigid_plates()[k]) + "_u");
-        motions.push_back(run_state.plate_displacements[k]);
+        columns.push_back(run_state.plate_displacements[k]);
       }
     for (unsigned int b = 0; b < bcs.rigid_bodies().size(); ++b)
       if (bcs.rigid_bodies()[b].load_driven())
         {
-          motion_names.push_back(bcs.rigid_bodies()[b].name + "_u");
-          motions.push_back(run_state.body_displacements[b]);
+          column_names.push_back(bcs.rigid_bodies()[b].name + "_u");
+          columns.push_back(run_state.body_displacements[b]);
         }
+    if (pore_pressure)
+      {
+        column_names.push_back("consolidation_degree");
+        columns.push_back(degree_of_consolidation_value);
+      }
     writer.write_reactions(stepper.step(),
                            t_new,
                            condition_names,
                            forces,
-                           motion_names,
-                           motions,
+                           column_names,
+                           columns,
                            last_audit.imbalance());
     if (!probes.empty())
       probes.write(points(), stepper.step(), t_new);

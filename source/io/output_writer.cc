@@ -229,8 +229,8 @@ namespace qsmpm
     const double                       load_factor,
     const std::vector<std::string>    &names,
     const std::vector<Tensor<1, dim>> &forces,
-    const std::vector<std::string>    &motion_names,
-    const std::vector<double>         &motions,
+    const std::vector<std::string>    &column_names,
+    const std::vector<double>         &columns,
     const double                       imbalance)
   {
     if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
@@ -247,7 +247,7 @@ namespace qsmpm
         for (const auto &name : names)
           for (unsigned int d = 0; d < dim; ++d)
             *reactions_file << ',' << name << "_F" << components[d];
-        for (const auto &name : motion_names)
+        for (const auto &name : column_names)
           *reactions_file << ',' << name;
         *reactions_file << ",imbalance\n";
       }
@@ -255,7 +255,7 @@ namespace qsmpm
     for (const auto &force : forces)
       for (unsigned int d = 0; d < dim; ++d)
         *reactions_file << ',' << force[d];
-    for (const double u : motions)
+    for (const double u : columns)
       *reactions_file << ',' << u;
     *reactions_file << ',' << imbalance << std::endl;
   }

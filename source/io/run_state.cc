@@ -28,6 +28,7 @@ namespace qsmpm
     state << "\nbodies " << body_displacements.size();
     for (const double u : body_displacements)
       state << ' ' << u;
+    state << "\nconsolidation " << peak_excess_pressure;
     state << "\nreports " << reports.size() << '\n';
     for (const auto &r : reports)
       state << r.step << ' ' << r.load_factor << ' ' << r.cut_backs << ' '
@@ -83,6 +84,8 @@ namespace qsmpm
     body_displacements.assign(n, 0.);
     for (double &u : body_displacements)
       in >> u;
+    expect("consolidation");
+    in >> peak_excess_pressure;
     expect("reports");
     in >> n;
     reports.assign(n, StepReport());

@@ -244,6 +244,20 @@ namespace qsmpm
       return run_state.body_displacements;
     }
 
+    /**
+     * With a pore fluid, the average degree of consolidation after the
+     * last accepted step, U = 1 - P / P_max: P = sum_p (p_p - p_initial)
+     * Omega_p, the excess pore pressure integrated over the body, P_max
+     * the largest |P| of the steps so far (the undrained response to the
+     * load). The column consolidation_degree of reactions.csv; 0 without
+     * a pore fluid or before any excess pressure.
+     */
+    double
+    degree_of_consolidation() const
+    {
+      return degree_of_consolidation_value;
+    }
+
     /// The material's force on each rigid body in the last accepted step,
     /// the number of points in contact and the deepest penetration.
     const std::vector<typename RigidContact<dim>::BodyLoad> &
@@ -384,6 +398,12 @@ namespace qsmpm
     RigidPlates<dim>                       rigid_plates;
     /// The material's force on each rigid body in the last accepted step.
     std::vector<typename RigidContact<dim>::BodyLoad> body_loads;
+    /// degree_of_consolidation() of the last accepted step.
+    double degree_of_consolidation_value = 0.;
+    /// With a pore fluid: degree_of_consolidation() from the points'
+    /// committed pressures (collective).
+    void
+    update_degree_of_consolidation();
     /// The names of the rigid bodies.
     std::vector<std::string>
     rigid_body_names() const;

@@ -69,19 +69,20 @@ namespace qsmpm
 
     /**
      * One line of reactions.csv (the header is written with the first):
-     * the force vector of each name (columns <name>_Fx, ...), each
-     * motion that follows from a load (columns @p motion_names: a rigid
-     * plate's along its normal, plate_<boundary id>_u, a rigid body's
-     * along its load direction, <name>_u) and the step's lost load, a
-     * fraction (column imbalance).
+     * the force vector of each name (columns <name>_Fx, ...), the further
+     * columns @p column_names with @p columns (the motions that follow
+     * from a load: a rigid plate's along its normal, plate_<boundary
+     * id>_u, a rigid body's along its load direction, <name>_u; with a
+     * pore fluid the degree of consolidation, consolidation_degree) and
+     * the step's lost load, a fraction (column imbalance).
      */
     void
     write_reactions(const unsigned int                 step,
                     const double                       load_factor,
                     const std::vector<std::string>    &names,
                     const std::vector<Tensor<1, dim>> &forces,
-                    const std::vector<std::string>    &motion_names,
-                    const std::vector<double>         &motions,
+                    const std::vector<std::string>    &column_names,
+                    const std::vector<double>         &columns,
                     const double                       imbalance);
 
     const Parameters &

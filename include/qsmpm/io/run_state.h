@@ -45,6 +45,10 @@ namespace qsmpm
     /// far (0 for the bodies not driven by a force; add_rigid_body()
     /// order).
     std::vector<double> body_displacements;
+    /// With a pore fluid: the largest integral of the excess pore pressure
+    /// over the body in the steps so far (QuasiStaticProblem::
+    /// degree_of_consolidation()).
+    double peak_excess_pressure = 0.;
     /// Reports of the accepted steps.
     std::vector<StepReport> reports;
 
