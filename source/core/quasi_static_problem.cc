@@ -709,12 +709,7 @@ namespace qsmpm
     if (!surface_tractions.empty())
       surface_tractions.commit(points(), du_ghosted);
     if (!rigid_contact.empty())
-      {
-        // (Before commit(): the motion of a body driven by a force follows
-        // from the tractions of the last step, which commit() replaces.)
-        run_state.body_displacements = rigid_contact.load_displacements(du);
-        rigid_contact.commit(points(), du_ghosted);
-      }
+      run_state.body_displacements = rigid_contact.commit(points(), du_ghosted);
     if (!rigid_plates.empty())
       {
         const std::vector<double> motion = rigid_plates.means(du);
@@ -775,7 +770,7 @@ namespace qsmpm
     for (const auto &load : body_loads)
       scale = std::max(scale, load.force.norm());
     if (contact_loads() != nullptr)
-      rigid_contact.check_loads(du, scale);
+      rigid_contact.check_loads(body_loads, scale);
     last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,

@@ -456,28 +456,11 @@ namespace qsmpm
 
 
   template <int dim>
-  std::vector<double>
-  RigidContact<dim>::load_displacements(const VectorType &du) const
-  {
-    std::vector<double> motion(load_start);
-    if (!any)
-      return motion;
-    for_each_contact(du,
-                     [](const Candidate &, const Tensor<1, dim> &, double) {});
-    for (unsigned int b = 0; b < motion.size(); ++b)
-      motion[b] += shift[b];
-    return motion;
-  }
-
-
-
-  template <int dim>
   void
-  RigidContact<dim>::check_loads(const VectorType &du,
-                                 const double      force_scale) const
+  RigidContact<dim>::check_loads(const std::vector<BodyLoad> &loads,
+                                 const double                 force_scale) const
   {
-    const auto                 &bodies = boundary.rigid_bodies();
-    const std::vector<BodyLoad> loads  = body_loads(du);
+    const auto &bodies = boundary.rigid_bodies();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         if (!bodies[b].load_driven())
@@ -636,13 +619,20 @@ namespace qsmpm
 
 
   template <int dim>
-  void
+  std::vector<double>
   RigidContact<dim>::commit(MaterialPointSet<dim> &points,
                             const VectorType      &du_ghosted_step) const
   {
     const double *du_local = du_ghosted_step.trilinos_vector()[0];
+    // The bodies' motions by a force at du, from the tractions of the last
+    // step, which the loop below replaces.
+    std::vector<double> motion(load_start);
     if (any)
-      solve_shifts(du_local);
+      {
+        solve_shifts(du_local);
+        for (unsigned int b = 0; b < motion.size(); ++b)
+          motion[b] += shift[b];
+      }
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;
@@ -654,6 +644,7 @@ namespace qsmpm
         for (unsigned int d = 0; d < dim; ++d)
           data[d] = t[d];
       }
+    return motion;
   }
 
 

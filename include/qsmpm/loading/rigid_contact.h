@@ -135,17 +135,6 @@ namespace qsmpm
                 const double                 stiffness_scale,
                 const std::vector<double>   &load_displacements = {});
 
-    /// Per body, its motion along its load direction at the increment
-    /// @p du (the bodies driven by a force; 0 for the others). Collective.
-    std::vector<double>
-    load_displacements(const VectorType &du) const;
-
-    /// Throw with a message naming the first body driven by a force whose
-    /// load the material does not balance at the increment @p du (to
-    /// 1e-6 of the load or of @p force_scale). Collective.
-    void
-    check_loads(const VectorType &du, const double force_scale) const;
-
     /// R += the contact forces on the material at the increment @p du
     /// (owned entries); @p R compressed.
     void
@@ -172,6 +161,13 @@ namespace qsmpm
     std::vector<BodyLoad>
     body_loads(const VectorType &du) const;
 
+    /// Throw with a message naming the first body driven by a force whose
+    /// load the material does not balance, @p loads being body_loads() of
+    /// the step's solution (to 1e-6 of the load or of @p force_scale).
+    void
+    check_loads(const std::vector<BodyLoad> &loads,
+                const double                 force_scale) const;
+
     /// K += the contact stiffness of the points that touch or penetrate a
     /// body at du = 0 (the couplings of their cells' nodes are in K's
     /// pattern already).
@@ -180,8 +176,10 @@ namespace qsmpm
            TrilinosWrappers::SparseMatrix  &K) const;
 
     /// Store each candidate's contact traction at the converged increment
-    /// @p du_ghosted (the layout of reinit_step()) on its point.
-    void
+    /// @p du_ghosted (the layout of reinit_step()) on its point, and
+    /// return, per body, its motion along its load direction so far (the
+    /// bodies driven by a force; 0 for the others). Collective.
+    std::vector<double>
     commit(MaterialPointSet<dim> &points, const VectorType &du_ghosted) const;
 
   private:
