@@ -212,7 +212,32 @@ namespace qsmpm
   IsotropicPlasticity<dim>::stress_3d(
     const ArrayView<const double> &state) const
   {
-    return D * elastic_strain(state);
+    return elastic_stress(elastic_strain(state));
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  IsotropicPlasticity<dim>::elastic_stress(
+    const SymmetricTensor<2, 3> &eps_e) const
+  {
+    return D * eps_e;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, 3>
+  IsotropicPlasticity<dim>::elastic_tangent(const SymmetricTensor<2, 3> &) const
+  {
+    // The preconditioner's matrix at a committed state: the elastic
+    // stiffness. The continuum elastoplastic tangent, assembled without the
+    // F-bar linearization, is nearly singular in the deviatoric directions
+    // and locks in the volumetric ones: on the footing (examples/footing,
+    // F-bar) GMRES then stalls and Newton fails in steps that converge with
+    // the elastic matrix.
+    return D;
   }
 
 
@@ -316,22 +341,6 @@ namespace qsmpm
 
 
   template <int dim>
-  SymmetricTensor<4, 3>
-  IsotropicPlasticity<dim>::committed_tangent(
-    const ArrayView<const double> &) const
-  {
-    // The preconditioner's matrix: the elastic stiffness. The continuum
-    // elastoplastic tangent, assembled without the F-bar linearization, is
-    // nearly singular in the deviatoric directions and locks in the
-    // volumetric ones: on the footing (examples/footing, F-bar) GMRES then
-    // stalls and Newton fails in steps that converge with the elastic
-    // matrix.
-    return D;
-  }
-
-
-
-  template <int dim>
   void
   IsotropicPlasticity<dim>::update_stress(
     const PointState<dim>         &old,
@@ -356,7 +365,7 @@ namespace qsmpm
   SymmetricTensor<4, dim>
   IsotropicPlasticity<dim>::tangent(const PointState<dim> &old) const
   {
-    return extract(committed_tangent(old.state));
+    return extract(elastic_tangent(elastic_strain(old.state)));
   }
 
 
@@ -433,7 +442,7 @@ namespace qsmpm
       push_forward(f, tensor_exp(2. * elastic_strain(old.state)));
     SymmetricTensor<4, 3> D_alg;
     if (is_identity(kinematics.delta_F))
-      D_alg = committed_tangent(old.state);
+      D_alg = elastic_tangent(elastic_strain(old.state));
     else
       {
         Return r;

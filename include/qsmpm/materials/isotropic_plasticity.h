@@ -31,13 +31,14 @@ namespace qsmpm
 
 
   /**
-   * What the isotropic elastoplastic models (VonMises, DruckerPrager) share:
-   * isotropic linear elasticity (E, nu) between the stress and the elastic
-   * strain, the per-point state, the small-strain and the finite-strain
-   * drivers of a three-dimensional return mapping, and the tangents built
-   * from it. A derived class implements the return mapping of its yield
-   * function in 3D (return_map()), its continuum elastoplastic tangent and
-   * its yield function.
+   * What the isotropic elastoplastic models (VonMises, DruckerPrager,
+   * MohrCoulomb, ModifiedCamClay) share: isotropic elasticity between the
+   * stress and the elastic strain (linear with E, nu unless a model
+   * overrides elastic_stress() and elastic_tangent()), the per-point state, the
+   * small-strain and the finite-strain drivers of a three-dimensional return
+   * mapping, and the tangents built from it. A derived class implements the
+   * return mapping of its yield function in 3D (return_map()), its continuum
+   * elastoplastic tangent and its yield function.
    *
    * <h3>Three dimensions inside</h3>
    * All computations are three-dimensional. In 2D the model is plane
@@ -52,9 +53,9 @@ namespace qsmpm
    * - "elastic_strain" (6 components): the elastic strain eps_e as a
    *   SymmetricTensor<2,3> in deal.II's unrolled order (xx, yy, zz, xy, xz,
    *   yz; Utils::read_symmetric<3>). Small strain: the stress is
-   *   sigma = D : eps_e. Finite strain: eps_e = 1/2 ln b_e is the
-   *   logarithmic elastic strain and the Kirchhoff stress is tau = D : eps_e
-   *   (b_e = exp(2 eps_e) is never stored).
+   *   sigma = elastic_stress(eps_e) (D : eps_e). Finite strain: eps_e = 1/2
+   *   ln b_e is the logarithmic elastic strain and the Kirchhoff stress is
+   *   tau = elastic_stress(eps_e) (b_e = exp(2 eps_e) is never stored).
    * - "equivalent_plastic_strain" (1): the hardening variable alpha of the
    *   derived model (see there); zero initially.
    * - "plastic_increment" (1): the increment of alpha in the step that
@@ -198,10 +199,26 @@ namespace qsmpm
     yield_function(const SymmetricTensor<2, 3> &stress,
                    const double                 alpha) const = 0;
 
-    /// The 3D stress D : eps_e of a point from its state (Kirchhoff at
-    /// finite strain). In 2D this includes sigma_zz.
+    /// The 3D stress of a point from its state, elastic_stress() of its
+    /// elastic strain (Kirchhoff at finite strain). In 2D this includes
+    /// sigma_zz.
     SymmetricTensor<2, 3>
     stress_3d(const ArrayView<const double> &state) const;
+
+    /**
+     * The elastic law: the stress of the elastic strain @p eps_e. Here
+     * D : eps_e; a model with a nonlinear elastic law (ModifiedCamClay)
+     * overrides it together with elastic_tangent().
+     */
+    virtual SymmetricTensor<2, 3>
+    elastic_stress(const SymmetricTensor<2, 3> &eps_e) const;
+
+    /**
+     * d elastic_stress() / d eps_e at @p eps_e: the preconditioner's
+     * tangent at a committed state (see the class description). Here D.
+     */
+    virtual SymmetricTensor<4, 3>
+    elastic_tangent(const SymmetricTensor<2, 3> &eps_e) const;
 
     /// The elastic strain of a point from its state.
     static SymmetricTensor<2, 3>
@@ -252,11 +269,6 @@ namespace qsmpm
     const double                mu;
     const double                K;
     const SymmetricTensor<4, 3> D;
-
-  private:
-    /// The tangent used at the committed state: see the class description.
-    SymmetricTensor<4, 3>
-    committed_tangent(const ArrayView<const double> &state) const;
   };
 } // namespace qsmpm
 
