@@ -38,6 +38,7 @@
 // tangents: a central difference with a relative step 1e-6 is accurate to
 // about 1e-8; 1e-6 is checked. The shear strain: the order between 0.9 and
 // 1.1, and the error at the finest step below 1e-3.
+#include "cam_clay_closed_forms.h"
 #include "tests.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -49,7 +50,6 @@ using namespace qsmpm;
 namespace
 {
   const double G = 3000., kappa = 0.01, lambda_ = 0.05, M = 1.2, p0 = 100.;
-  const double theta = lambda_ - kappa;
 
   template <int dim = 3>
   typename ModifiedCamClay<dim>::Parameters
@@ -109,69 +109,10 @@ namespace
     return std::sqrt(1.5) * deviator(s).norm();
   }
 
-  /// int_a^b f by composite 5-point Gauss-Legendre quadrature.
-  double
-  integrate(const std::function<double(double)> &f,
-            const double                         a,
-            const double                         b,
-            const unsigned int                   panels = 2000)
+  CamClayTriaxial
+  soil(const double pc0)
   {
-    const double x[5] = {0.,
-                         -0.5384693101056831,
-                         0.5384693101056831,
-                         -0.9061798459386640,
-                         0.9061798459386640};
-    const double w[5] = {0.5688888888888889,
-                         0.4786286704993665,
-                         0.4786286704993665,
-                         0.2369268850561891,
-                         0.2369268850561891};
-    const double h    = (b - a) / panels;
-    double       sum  = 0.;
-    for (unsigned int i = 0; i < panels; ++i)
-      for (unsigned int k = 0; k < 5; ++k)
-        sum += 0.5 * h * w[k] * f(a + (i + 0.5) * h + 0.5 * h * x[k]);
-    return sum;
-  }
-
-  /// Closed-form shear strain of the undrained path at the pressure p.
-  double
-  undrained_shear_strain(const double pc0, const double p)
-  {
-    const auto pc = [&](const double s) {
-      return pc0 * std::pow(p0 / s, kappa / theta);
-    };
-    const auto eta = [&](const double s) {
-      return M * std::sqrt(pc(s) / s - 1.);
-    };
-    const double plastic = integrate(
-      [&](const double s) {
-        return 2. * eta(s) / (M * M - eta(s) * eta(s)) * kappa / s;
-      },
-      p,
-      p0);
-    return eta(p) * p / (3. * G) + plastic;
-  }
-
-  /// Closed-form shear strain of the drained path (p_c0 = p0) at p.
-  double
-  drained_shear_strain(const double p)
-  {
-    const auto q  = [](const double s) { return 3. * (s - p0); };
-    const auto pc = [&](const double s) {
-      return s + q(s) * q(s) / (M * M * s);
-    };
-    const auto dpc_dp = [&](const double s) {
-      return 1. + 6. * q(s) / (M * M * s) - q(s) * q(s) / (M * M * s * s);
-    };
-    const double plastic = integrate(
-      [&](const double s) {
-        const double eta = q(s) / s;
-        return 2. * eta / (M * M - eta * eta) * theta * dpc_dp(s) / pc(s);
-      },
-      p0,
-      p);
-    return q(p) / (3. * G) + plastic;
+    return {G, kappa, lambda_, M, p0, pc0};
   }
 
   /// Undrained path in n steps to the shear strain eps_s; returns the
@@ -197,16 +138,12 @@ namespace
                      std::abs(p - p0) / p0 +
                        std::abs(q - 3. * G * i * std::abs(d)) / q_yield);
         else
-          {
-            const double pc = pc0 * std::pow(p0 / p, kappa / theta);
-            path_error =
-              std::max(path_error,
-                       std::abs(q - M * p * std::sqrt(pc / p - 1.)) / p0);
-          }
+          path_error =
+            std::max(path_error, std::abs(q - soil(pc0).undrained_q(p)) / p0);
       }
     path_error     = std::max(path_error, elastic_error);
     const double p = pressure(r.stress);
-    return {(eps_s - undrained_shear_strain(pc0, p)) / eps_s, path_error};
+    return {(eps_s - soil(pc0).undrained_shear_strain(p)) / eps_s, path_error};
   }
 
   struct DrainedResult
@@ -242,14 +179,14 @@ namespace
         result.lateral_error =
           std::max(result.lateral_error, std::abs(r.stress[0][0] + p0) / p0);
         const double p = pressure(r.stress), q = deviatoric_stress(r.stress);
-        const double pc = p + q * q / (M * M * p);
+        const double pc = soil(p0).drained_pc(p);
         const double v  = -(i * d + 2. * lateral);
         result.path_error =
           std::max(result.path_error, std::abs(q - 3. * (p - p0)) / p0);
-        result.volume_error = std::max(result.volume_error,
-                                       std::abs(v - kappa * std::log(p / p0) -
-                                                theta * std::log(pc / p0)) /
-                                         lambda_);
+        result.volume_error =
+          std::max(result.volume_error,
+                   std::abs(v - soil(p0).drained_volumetric_strain(p)) /
+                     lambda_);
         // The model's own p_c against the one of the closed form.
         result.path_error =
           std::max(result.path_error,
@@ -259,7 +196,7 @@ namespace
       }
     const double eps_s = 2. / 3. * std::abs(eps_a - lateral);
     result.shear_error =
-      (eps_s - drained_shear_strain(pressure(r.stress))) / eps_s;
+      (eps_s - soil(p0).drained_shear_strain(pressure(r.stress))) / eps_s;
     return result;
   }
 

@@ -75,6 +75,21 @@ namespace qsmpm_tests
       }
     return rows;
   }
+
+  /// The index of the column @p name in the header line of a CSV file
+  /// (throws if there is none).
+  inline unsigned int
+  csv_column(const std::string &filename, const std::string &name)
+  {
+    std::ifstream file(filename);
+    std::string   line, field;
+    std::getline(file, line);
+    std::istringstream fields(line);
+    for (unsigned int i = 0; std::getline(fields, field, ','); ++i)
+      if (field == name)
+        return i;
+    throw std::runtime_error(filename + " has no column " + name);
+  }
 } // namespace qsmpm_tests
 
 #endif

@@ -590,7 +590,9 @@ namespace qsmpm
                     << " iterations (Pore fluid/Maximum coupling iterations; "
                        "the last changed the pressure by "
                     << std::setprecision(3) << change
-                    << " of its largest value)";
+                    << " of its largest value; a skeleton that yields in "
+                       "compaction may need a larger Pore fluid/Fixed-stress "
+                       "factor)";
             report.converged = false;
             report.failure   = message.str();
             return;

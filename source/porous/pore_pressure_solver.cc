@@ -82,6 +82,18 @@ namespace qsmpm
                         "switches it off.",
                         Patterns::Double(0.));
       prm.add_parameter(
+        "Fixed-stress factor",
+        fixed_stress_factor,
+        "f >= 1 of the fixed-stress split: each point's pore volume "
+        "responds to the pressure change of an iteration with f b^2 / K, K "
+        "the drained bulk modulus of the skeleton's tangent at the start "
+        "of the step (the elastic one for the plastic models). 1 is the "
+        "classical choice; a skeleton that compacts plastically is softer "
+        "than that K, and the iteration then needs more: Modified Cam Clay "
+        "undrained (doc/example_triaxial.md) diverges with 1 and takes 8 "
+        "iterations per step with 2.",
+        Patterns::Double(1.));
+      prm.add_parameter(
         "Coupling tolerance",
         coupling_tolerance,
         "The fixed-stress iteration of a step stops when no "
@@ -275,7 +287,7 @@ namespace qsmpm
                 std::max(stress_scale, std::abs(data[offsets.stress + k]));
             stress_scale = std::max(stress_scale, std::abs(data[state_offset]));
             volume[p]    = data[offsets.volume];
-            fixed_stress[p]  = b * b / K;
+            fixed_stress[p]  = parameters.fixed_stress_factor * b * b / K;
             stabilization[p] = parameters.stabilization_factor * h * h / Mc;
             // The iteration starts from the committed pressure (also after
             // a cut-back).

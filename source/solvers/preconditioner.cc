@@ -140,7 +140,15 @@ namespace qsmpm
         parameters.set("null space: dimension",
                        with_rotations ? rigid_body_modes->NumVectors() :
                                         static_cast<int>(dim));
-        parameters.set("null space: vectors", rigid_body_modes->Values());
+        // A rank that owns no rows has no storage for the modes (Values()
+        // is null), which ML reads as "no null space given" and warns
+        // about on every build; it reads nothing from a non-null pointer
+        // of no rows.
+        static double no_rows = 0.;
+        parameters.set("null space: vectors",
+                       rigid_body_modes->MyLength() > 0 ?
+                         rigid_body_modes->Values() :
+                         &no_rows);
         // The dim dofs of a node (consecutive in the grid's numbering, see
         // make_rigid_body_modes()) form one block: ML aggregates nodes
         // instead of single dofs, as smoothed aggregation for elasticity

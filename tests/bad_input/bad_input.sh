@@ -165,6 +165,10 @@ driver_case double_out_of_range_2_ranks "Poisson's ratio" 2 \
   $'subsection Material\n subsection linear elastic\n  set Poisson\'s ratio = 0.7\n end\nend'
 driver_case double_zero_modulus "Young's modulus" 1 \
   $'subsection Material\n subsection linear elastic\n  set Young\'s modulus = 0\n end\nend'
+driver_case cam_clay_lambda_below_kappa "Compression index" 1 \
+  $'subsection Material\n set Model = Modified Cam Clay\n subsection Modified Cam Clay\n  set Compression index = 0.005\n end\nend'
+driver_case fixed_stress_factor_below_one "Fixed-stress factor" 1 \
+  $'subsection Pore fluid\n set Enabled = true\n set Fixed-stress factor = 0.5\nend'
 # Selection, Bool, List and Anything entries.
 driver_case selection_unknown "Model" 1 \
   $'subsection Material\n set Model = plasticity\nend'

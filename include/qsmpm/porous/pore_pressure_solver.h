@@ -82,6 +82,7 @@ namespace qsmpm
       std::vector<unsigned int> flux_boundaries;
       std::string               boundary_flux           = "0";
       double                    stabilization_factor    = 0.25;
+      double                    fixed_stress_factor     = 1.;
       double                    coupling_tolerance      = 1e-5;
       unsigned int              max_coupling_iterations = 100;
 
