@@ -10,7 +10,9 @@
 //    v = lambda ln(p / p0), at small strain (v = -tr eps) and at finite
 //    strain (v = -ln J, the Kirchhoff pressure); unloading on the swelling
 //    line, v - v_max = kappa ln(p / p_max).
-// 2. Undrained triaxial compression (v = 0), p_c0 = p0 and p_c0 = 1.5 p0:
+// 2. Undrained triaxial compression (v = 0), p_c0 / p0 = 1, 1.5 (wet side)
+//    and 4 (dry side: the pressure rises and the strength softens to the
+//    critical state):
 //    elastic at p = p0 until q = M p0 sqrt(p_c0 / p0 - 1), then on the
 //    surface with kappa ln(p / p0) + theta ln(p_c / p_c0) = 0, i.e.
 //      q(p) = M p sqrt(p_c(p) / p - 1),  p_c(p) = p_c0 (p0 / p)^(kappa/theta).
@@ -37,7 +39,9 @@
 // far below what a wrong hardening law or elastic law gives (O(1)). The
 // tangents: a central difference with a relative step 1e-6 is accurate to
 // about 1e-8; 1e-6 is checked. The shear strain: the order between 0.9 and
-// 1.1, and the error at the finest step below 1e-3.
+// 1.1, the error at 2000 steps below 3e-3 (measured 6e-4 to 1.7e-3), and
+// Richardson's extrapolation from 1000 and 2000 steps within 3e-5
+// (measured 1e-6 to 9e-6): far below the O(1) of a wrong G or flow rule.
 #include "cam_clay_closed_forms.h"
 #include "tests.h"
 
@@ -278,7 +282,7 @@ main()
   }
 
   deallog << "2. Undrained triaxial compression" << std::endl;
-  for (const double ocr : {1., 1.5})
+  for (const double ocr : {1., 1.5, 4.})
     {
       std::ostringstream what;
       what << "  p_c0 / p0 = " << ocr << ": ";
@@ -307,7 +311,7 @@ main()
                               "(0.9 ... 1.1)",
                  order_min > 0.9 && order_max < 1.1);
       check(what.str() + "shear strain error at 2000 steps", last_error, 3e-3);
-      check(what.str() + "Richardson's 2 e_2000 - e_1000", richardson, 1e-5);
+      check(what.str() + "Richardson's 2 e_2000 - e_1000", richardson, 3e-5);
     }
 
   deallog << "3. Drained triaxial compression" << std::endl;
@@ -337,7 +341,7 @@ main()
     check_that("  shear strain error of order 1 in the step (0.9 ... 1.1)",
                order_min > 0.9 && order_max < 1.1);
     check("  shear strain error at 2000 steps", last_error, 3e-3);
-    check("  Richardson's 2 e_2000 - e_1000", richardson, 1e-5);
+    check("  Richardson's 2 e_2000 - e_1000", richardson, 3e-5);
   }
 
   deallog << "4. Tangents against central differences" << std::endl;

@@ -232,7 +232,9 @@ namespace qsmpm
     static double
     plastic_increment(const ArrayView<const double> &state);
 
-    /// The 3D isotropic elasticity tensor D = lambda 1 (x) 1 + 2 mu I.
+    /// The 3D isotropic elasticity tensor D = lambda 1 (x) 1 + 2 mu I (of
+    /// the constructor's E and nu; for a model with its own elastic law,
+    /// that of the unstrained point).
     const SymmetricTensor<4, 3> &
     elastic_stiffness() const;
 
