@@ -67,6 +67,41 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<2, dim>
+  ConstitutiveModel<dim>::initial_stress(const Point<dim> &,
+                                         const unsigned int,
+                                         const SymmetricTensor<2, 3> *sigma0,
+                                         ArrayView<double>) const
+  {
+    SymmetricTensor<2, dim> result;
+    if (sigma0 == nullptr)
+      return result;
+    AssertThrow(incremental_stress(),
+                ExcMessage("Material points: <Initial stress> is given, but "
+                           "the model '" +
+                           name() +
+                           "' cannot start from a stress (its stress is a "
+                           "function of the deformation from the unstressed "
+                           "state, or of crack states that a stress does not "
+                           "determine)."));
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        result[i][j] = (*sigma0)[i][j];
+    return result;
+  }
+
+
+
+  template <int dim>
+  bool
+  ConstitutiveModel<dim>::incremental_stress() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   std::vector<StateField>
   ConstitutiveModel<dim>::output_fields() const
   {

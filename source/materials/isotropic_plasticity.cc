@@ -228,6 +228,48 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<2, 3>
+  IsotropicPlasticity<dim>::elastic_strain_of(
+    const SymmetricTensor<2, 3> &stress) const
+  {
+    return deviator(stress) / (2. * mu) +
+           trace(stress) / (9. * K) * unit_symmetric_tensor<3>();
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  IsotropicPlasticity<dim>::initial_stress(const Point<dim> &x,
+                                           const unsigned int,
+                                           const SymmetricTensor<2, 3> *sigma0,
+                                           ArrayView<double> state) const
+  {
+    if (sigma0 != nullptr)
+      {
+        const SymmetricTensor<2, 3> eps   = elastic_strain_of(*sigma0);
+        const SymmetricTensor<2, 3> sigma = elastic_stress(eps);
+        // The yield function's own scale: its value at the stress and at
+        // zero stress bracket what round-off can reach.
+        const double scale = std::abs(yield_function(sigma, 0.)) +
+                             std::abs(yield_function({}, 0.)) + 1e-300;
+        if (!(yield_function(sigma, equivalent_plastic_strain(state)) <=
+              1e-10 * scale))
+          {
+            std::ostringstream message;
+            message << "Material points: <Initial stress> at (" << x
+                    << ") lies outside the yield surface of the model '"
+                    << this->name() << "' (" << *sigma0 << ").";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        Utils::write_symmetric<3>(eps, state.data() + eps_offset);
+      }
+    return extract(stress_3d(state));
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, 3>
   IsotropicPlasticity<dim>::elastic_tangent(const SymmetricTensor<2, 3> &) const
   {

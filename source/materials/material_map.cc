@@ -218,6 +218,27 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<2, dim>
+  MaterialMap<dim>::initial_stress(const Point<dim>            &x,
+                                   const unsigned int           material_id,
+                                   const SymmetricTensor<2, 3> *sigma0,
+                                   ArrayView<double>            state) const
+  {
+    const Member                      &m = member(material_id);
+    std::array<double, max_components> own;
+    const unsigned int                 n = m.state_index.size();
+    for (unsigned int c = 0; c < n; ++c)
+      own[c] = state[m.state_index[c]];
+    const SymmetricTensor<2, dim> sigma = m.model->initial_stress(
+      x, material_id, sigma0, ArrayView<double>(own.data(), n));
+    for (unsigned int c = 0; c < n; ++c)
+      state[m.state_index[c]] = own[c];
+    return sigma;
+  }
+
+
+
+  template <int dim>
   template <typename Function>
   auto
   MaterialMap<dim>::with_own_state(const Member          &m,

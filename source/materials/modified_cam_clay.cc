@@ -212,9 +212,15 @@ namespace qsmpm
     const SymmetricTensor<2, 3> &stress) const
   {
     const double p = -trace(stress) / 3.;
-    AssertThrow(p > 0,
-                ExcMessage("Modified Cam Clay: a stress without a positive "
-                           "mean pressure has no elastic strain."));
+    if (!(p > 0))
+      {
+        std::ostringstream message;
+        message << "Modified Cam Clay: the stress (" << stress
+                << ") has no positive mean pressure, and no elastic strain "
+                   "gives it (an <Initial stress> of Material points must "
+                   "be compressive).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
     const double v_e =
       param.swelling_index * std::log(p / param.initial_pressure);
     return -v_e / 3. * unit_symmetric_tensor<3>() +

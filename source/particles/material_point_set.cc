@@ -52,6 +52,22 @@ namespace qsmpm
         "non-negative integer, e.g. 'if(y > 0.5, 1, 0)' for two layers. "
         "Material/<Models by material id> chooses a model per id.",
         Patterns::Anything());
+      prm.add_parameter(
+        "Initial stress",
+        initial_stress,
+        "The stress of each point when it is created (Cauchy, tension "
+        "positive): expressions in x, y (and z) for xx; yy; zz; xy in 2D "
+        "(zz the out-of-plane stress) and xx; yy; zz; xy; xz; yz in 3D, "
+        "e.g. a layer 10 m deep of unit weight 20 kN/m^3 at rest (K0 = "
+        "0.5) under its weight: '-10*(10-y); -20*(10-y); -10*(10-y); 0'. "
+        "The model's state is made to carry it (an elastoplastic model: "
+        "inside its yield surface; linear, cubic elastic and UMAT models: "
+        "as the stress they add their increments to; hyperelastic and "
+        "crack models cannot). It should balance the body force and the loads "
+        "of the "
+        "first step: what it does not balance moves the body. Empty: the "
+        "model's own (zero, or -p0 I for Modified Cam Clay).",
+        Patterns::Anything());
       prm.add_parameter("Update volumes",
                         update_volumes,
                         "Update point volumes with J (paper eqs. 2.23-2.24). "
@@ -313,6 +329,20 @@ namespace qsmpm
     const Quadrature<dim>                                 &rule,
     const std::function<unsigned int(const Point<dim> &)> &material_id)
   {
+    fill(inside, rule, material_id, {});
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPointSet<dim>::fill(
+    const std::function<bool(const Point<dim> &)>         &inside,
+    const Quadrature<dim>                                 &rule,
+    const std::function<unsigned int(const Point<dim> &)> &material_id,
+    const std::function<SymmetricTensor<2, 3>(const Point<dim> &)>
+      &initial_stress)
+  {
     // Reference positions and volume fractions of the points in a cell.
     const std::vector<Point<dim>> &reference_points = rule.get_points();
     const std::vector<double>     &fractions        = rule.get_weights();
@@ -377,18 +407,28 @@ namespace qsmpm
     // below.
     const unsigned int  n_state = model.n_state_components();
     std::vector<double> initial_states(new_points.size() * n_state);
-    std::string         error;
+    std::vector<SymmetricTensor<2, dim>> initial_stresses(new_points.size());
+    std::string                          error;
     try
       {
         for (std::size_t i = 0; i < new_points.size(); ++i)
           {
             NewPoint &p   = new_points[i];
             p.material_id = material_id(p.location);
-            model.initialize_point_state(
-              p.location,
-              p.material_id,
-              first_id + i,
-              ArrayView<double>(initial_states.data() + i * n_state, n_state));
+            const ArrayView<double> state(initial_states.data() + i * n_state,
+                                          n_state);
+            model.initialize_point_state(p.location,
+                                         p.material_id,
+                                         first_id + i,
+                                         state);
+            const SymmetricTensor<2, 3> sigma0 = initial_stress ?
+                                                   initial_stress(p.location) :
+                                                   SymmetricTensor<2, 3>();
+            initial_stresses[i] =
+              model.initial_stress(p.location,
+                                   p.material_id,
+                                   initial_stress ? &sigma0 : nullptr,
+                                   state);
           }
       }
     catch (const std::exception &exc)
@@ -408,6 +448,8 @@ namespace qsmpm
         properties[offsets.volume]         = p.volume;
         properties[offsets.J]              = 1.;
         properties[offsets.material_id]    = p.material_id;
+        Utils::write_symmetric<dim>(initial_stresses[i],
+                                    properties.data() + offsets.stress);
         if (formulation.finite_strain())
           for (unsigned int d = 0; d < dim; ++d)
             properties[offsets.deformation_gradient + d * dim + d] = 1.;
@@ -490,6 +532,57 @@ namespace qsmpm
         }
       return static_cast<unsigned int>(std::round(value));
     };
+    // The initial stress expression: dim == 2: xx, yy, zz, xy; dim == 3:
+    // xx, yy, zz, xy, xz, yz.
+    const unsigned int                   n_stress = dim == 2 ? 4 : 6;
+    std::unique_ptr<FunctionParser<dim>> stress_parser;
+    if (!parameters.initial_stress.empty())
+      {
+        stress_parser = std::make_unique<FunctionParser<dim>>(n_stress);
+        try
+          {
+            stress_parser->initialize(dim == 2 ? "x,y" : "x,y,z",
+                                      parameters.initial_stress,
+                                      std::map<std::string, double>());
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "Material points: <Initial stress> = <" +
+                          parameters.initial_stress + "> is not " +
+                          std::to_string(n_stress) + " expressions in x, y" +
+                          (dim == 3 ? ", z" : "") + " separated by ';' (" +
+                          (dim == 2 ? "xx; yy; zz; xy" :
+                                      "xx; yy; zz; xy; xz; yz") +
+                          ")."));
+          }
+      }
+    const auto initial_stress =
+      [&](const Point<dim> &x) -> SymmetricTensor<2, 3> {
+      Vector<double> values(n_stress);
+      stress_parser->vector_value(x, values);
+      SymmetricTensor<2, 3> sigma;
+      sigma[0][0] = values[0];
+      sigma[1][1] = values[1];
+      sigma[2][2] = values[2];
+      sigma[0][1] = values[3];
+      if (dim == 3)
+        {
+          sigma[0][2] = values[4];
+          sigma[1][2] = values[5];
+        }
+      for (unsigned int i = 0; i < n_stress; ++i)
+        if (!std::isfinite(values[i]))
+          {
+            std::ostringstream message;
+            message << "Material points: <Initial stress> = <"
+                    << parameters.initial_stress << "> is not finite at (" << x
+                    << ").";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      return sigma;
+    };
     std::array<unsigned int, dim> n_per_direction;
     n_per_direction.fill(parameters.points_per_direction);
     fill(
@@ -502,7 +595,11 @@ namespace qsmpm
         return true;
       },
       reference_rule(parameters.placement, n_per_direction),
-      material_id);
+      material_id,
+      stress_parser ?
+        std::function<SymmetricTensor<2, 3>(const Point<dim> &)>(
+          initial_stress) :
+        std::function<SymmetricTensor<2, 3>(const Point<dim> &)>());
   }
 
 

@@ -52,6 +52,23 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<2, dim>
+  PoroelasticModel<dim>::initial_stress(const Point<dim>  &x,
+                                        const unsigned int material_id,
+                                        const SymmetricTensor<2, 3> *sigma0,
+                                        ArrayView<double> state) const
+  {
+    return skeleton_model->initial_stress(x,
+                                          material_id,
+                                          sigma0,
+                                          ArrayView<double>(state.data(),
+                                                            n_skeleton)) -
+           b * p_initial * unit_symmetric_tensor<dim>();
+  }
+
+
+
+  template <int dim>
   std::vector<StateField>
   PoroelasticModel<dim>::output_fields() const
   {

@@ -85,6 +85,34 @@ namespace qsmpm
                            ArrayView<double>           state) const;
 
     /**
+     * The committed stress of a point created at @p x with @p state (after
+     * initialize_point_state()): what MaterialPointSet stores as its stress
+     * before the first step. With @p sigma0 (the point's `Material
+     * points/Initial stress`, a 3D Cauchy stress whose zz component is the
+     * out-of-plane stress in 2D), the model first changes @p state so that
+     * the point carries @p sigma0, and returns it; a model that cannot
+     * start from a stress, or not from this one, throws a message that
+     * names the entry.
+     *
+     * Default: zero without @p sigma0; with it, the in-plane part of
+     * @p sigma0 if incremental_stress(), else an error.
+     */
+    virtual SymmetricTensor<2, dim>
+    initial_stress(const Point<dim>            &x,
+                   const unsigned int           material_id,
+                   const SymmetricTensor<2, 3> *sigma0,
+                   ArrayView<double>            state) const;
+
+    /**
+     * Whether the stress is the committed one plus an increment that
+     * depends on the committed state only (LinearElastic, CubicElastic,
+     * Umat at small strain), so that any committed stress is a valid start.
+     * Default: false.
+     */
+    virtual bool
+    incremental_stress() const;
+
+    /**
      * Fields that are written with the points but are not state: functions
      * of a point's committed state (e.g. a crack opening normalized by the
      * critical opening), computed by compute_output_fields() when the

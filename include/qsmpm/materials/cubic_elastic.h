@@ -96,6 +96,13 @@ namespace qsmpm
     initialize_state(const Point<dim> &x,
                      ArrayView<double> state) const override;
 
+    /// True: the stress is the committed one plus an increment.
+    bool
+    incremental_stress() const override
+    {
+      return true;
+    }
+
     void
     update_stress(const PointState<dim>         &old,
                   const SymmetricTensor<2, dim> &strain_increment,

@@ -30,6 +30,14 @@ namespace qsmpm
     bool
     supports_finite_strain() const override;
 
+    /// False: at finite strain the stress is a function of the
+    /// deformation from the stress-free reference, so no initial stress.
+    bool
+    incremental_stress() const override
+    {
+      return false;
+    }
+
   protected:
     const double lambda;
     const double mu;

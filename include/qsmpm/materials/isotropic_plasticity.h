@@ -213,6 +213,25 @@ namespace qsmpm
     virtual SymmetricTensor<2, 3>
     elastic_stress(const SymmetricTensor<2, 3> &eps_e) const;
 
+    /// The elastic strain whose elastic_stress() is @p stress (here
+    /// D^{-1} : stress).
+    virtual SymmetricTensor<2, 3>
+    elastic_strain_of(const SymmetricTensor<2, 3> &stress) const;
+
+    /**
+     * With @p sigma0: the elastic strain elastic_strain_of(@p sigma0) in
+     * @p state, after checking that @p sigma0 lies inside the yield
+     * surface of the virgin point (a message naming `Initial stress` and
+     * the point if not). Returns the in-plane part of the state's stress
+     * (without @p sigma0: that of the unstrained point, zero unless the
+     * model's elastic law has a stress at zero strain, ModifiedCamClay).
+     */
+    SymmetricTensor<2, dim>
+    initial_stress(const Point<dim>            &x,
+                   const unsigned int           material_id,
+                   const SymmetricTensor<2, 3> *sigma0,
+                   ArrayView<double>            state) const override;
+
     /**
      * d elastic_stress() / d eps_e at @p eps_e: the preconditioner's
      * tangent at a committed state (see the class description). Here D.

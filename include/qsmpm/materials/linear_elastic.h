@@ -71,6 +71,13 @@ namespace qsmpm
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /// True: the stress is the committed one plus an increment.
+    bool
+    incremental_stress() const override
+    {
+      return true;
+    }
+
     void
     update_stress(const PointState<dim>         &old,
                   const SymmetricTensor<2, dim> &strain_increment,

@@ -78,6 +78,14 @@ namespace qsmpm
                            const types::particle_index id,
                            ArrayView<double>           state) const override;
 
+    /// The member's initial_stress(), gathered like
+    /// initialize_material_state().
+    SymmetricTensor<2, dim>
+    initial_stress(const Point<dim>            &x,
+                   const unsigned int           material_id,
+                   const SymmetricTensor<2, 3> *sigma0,
+                   ArrayView<double>            state) const override;
+
     std::vector<StateField>
     output_fields() const override;
 

@@ -30,7 +30,9 @@ namespace qsmpm
    * and the swelling lines are straight in (ln p, v). p0, the "Initial
    * pressure", is the pressure of the unstrained point: every point starts
    * in the isotropic state sigma = -p0 I (a body of this model needs
-   * boundary tractions that balance it; see doc/example_triaxial.md).
+   * boundary tractions that balance it; see doc/example_triaxial.md),
+   * unless `Material points/Initial stress` gives another (compressive,
+   * inside the yield surface; the elastic law keeps p0 as its reference).
    *
    * <h3>Yield surface, flow, hardening</h3>
    *
@@ -137,7 +139,7 @@ namespace qsmpm
     /// The elastic strain whose stress is @p stress (elastic_stress()
     /// inverted; needs p > 0).
     SymmetricTensor<2, 3>
-    elastic_strain_of(const SymmetricTensor<2, 3> &stress) const;
+    elastic_strain_of(const SymmetricTensor<2, 3> &stress) const override;
 
     void
     return_map(const SymmetricTensor<2, 3> &trial_elastic_strain,

@@ -69,6 +69,10 @@ namespace qsmpm
       /// The material id of a point created at x, an expression in x, y
       /// (and z) whose value is a non-negative integer.
       std::string material_id = "0";
+      /// The stress of a point created at x (its components xx; yy; zz;
+      /// xy in 2D, xx; yy; zz; xy; xz; yz in 3D, expressions in x, y (and
+      /// z)); empty: the model's own (ConstitutiveModel::initial_stress()).
+      std::string initial_stress;
 
       /// Declare the entries, bound to the members.
       void
@@ -164,6 +168,20 @@ namespace qsmpm
     fill(const std::function<bool(const Point<dim> &)>         &inside,
          const Quadrature<dim>                                 &rule,
          const std::function<unsigned int(const Point<dim> &)> &material_id);
+
+    /**
+     * As above, with the stress of each point given by @p initial_stress
+     * at its position (3D, Cauchy; in 2D the zz component is the
+     * out-of-plane stress): the model makes the point's state carry it
+     * (ConstitutiveModel::initial_stress(), which stops with a message if
+     * the model cannot). An empty function: the model's own initial stress.
+     */
+    void
+    fill(const std::function<bool(const Point<dim> &)>         &inside,
+         const Quadrature<dim>                                 &rule,
+         const std::function<unsigned int(const Point<dim> &)> &material_id,
+         const std::function<SymmetricTensor<2, 3>(const Point<dim> &)>
+           &initial_stress);
 
     /**
      * The reference positions and volume fractions of @p placement with

@@ -68,6 +68,17 @@ namespace qsmpm
                            const types::particle_index id,
                            ArrayView<double>           state) const override;
 
+    /**
+     * The total stress of the skeleton's initial_stress() (@p sigma0 is
+     * the effective stress) with the initial pore pressure: sigma0' - b p
+     * I.
+     */
+    SymmetricTensor<2, dim>
+    initial_stress(const Point<dim>            &x,
+                   const unsigned int           material_id,
+                   const SymmetricTensor<2, 3> *sigma0,
+                   ArrayView<double>            state) const override;
+
     std::vector<StateField>
     output_fields() const override;
 

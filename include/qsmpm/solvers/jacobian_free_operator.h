@@ -46,7 +46,8 @@ namespace qsmpm
    * so that the perturbation h s has the norm sqrt(eps_prec) d, where d is
    * the size of the increments of interest: ||du||, or, where du = 0 (a
    * linearization at the start of a step without prescribed increments),
-   * the operator's typical_increment_norm(). (h = 0, Js = 0, if s = 0.)
+   * the operator's typical_increment_norm(); also where ||du|| is below
+   * 1e-8 of it, a round-off increment. (h = 0, Js = 0, if s = 0.)
    *
    * The perturbation must be relative to a displacement scale, not to
    * ||s||: with a preconditioner, the Krylov directions s are corrections
@@ -78,7 +79,8 @@ namespace qsmpm
      * The product at @p du, where R(du) = @p R_du. The norm of du in h may
      * be replaced by @p scale (> 0), the size of the increments of interest,
      * for linearizations at du = 0 (see NewtonKrylov's predictor); if both
-     * are zero, the operator's typical_increment_norm() is used.
+     * are zero (or ||du|| below 1e-8 of it), the operator's
+     * typical_increment_norm() is used.
      */
     JacobianFreeOperator(const Operator   &op,
                          const VectorType &du,
@@ -94,7 +96,11 @@ namespace qsmpm
           scale > 0. ?
             scale :
             std::max(du.l2_norm(), internal::increment_scale_floor(op));
-        return d > 0. ? d : op.typical_increment_norm();
+        // An increment of round-off size (a step that starts in
+        // equilibrium, whose predictor moved nothing) sets no scale either:
+        // a perturbation relative to it would be round-off itself.
+        const double typical = op.typical_increment_norm();
+        return d > 1e-8 * typical ? d : typical;
       }())
     {
       Assert(increment_scale > 0., ExcInternalError());
