@@ -9,32 +9,25 @@
 // Independent of the model's code: the tests compare the model with these.
 
 #include <cmath>
+#include <deal.II/base/quadrature_lib.h>
 #include <functional>
 
 namespace qsmpm_tests
 {
-  /// int_a^b f by composite 5-point Gauss-Legendre quadrature.
+  /// int_a^b f by the composite 5-point Gauss-Legendre rule (deal.II's
+  /// QGauss on [0, 1]) on @p panels panels.
   inline double
   integrate(const std::function<double(double)> &f,
             const double                         a,
             const double                         b,
             const unsigned int                   panels = 2000)
   {
-    const double x[5] = {0.,
-                         -0.5384693101056831,
-                         0.5384693101056831,
-                         -0.9061798459386640,
-                         0.9061798459386640};
-    const double w[5] = {0.5688888888888889,
-                         0.4786286704993665,
-                         0.4786286704993665,
-                         0.2369268850561891,
-                         0.2369268850561891};
-    const double h    = (b - a) / panels;
-    double       sum  = 0.;
+    const dealii::QGauss<1> rule(5);
+    const double            h   = (b - a) / panels;
+    double                  sum = 0.;
     for (unsigned int i = 0; i < panels; ++i)
-      for (unsigned int k = 0; k < 5; ++k)
-        sum += 0.5 * h * w[k] * f(a + (i + 0.5) * h + 0.5 * h * x[k]);
+      for (unsigned int k = 0; k < rule.size(); ++k)
+        sum += h * rule.weight(k) * f(a + (i + rule.point(k)[0]) * h);
     return sum;
   }
 

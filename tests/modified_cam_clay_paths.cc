@@ -43,6 +43,7 @@
 // Richardson's extrapolation from 1000 and 2000 steps within 3e-5
 // (measured 1e-6 to 9e-6): far below the O(1) of a wrong G or flow rule.
 #include "cam_clay_closed_forms.h"
+#include "plasticity_point.h"
 #include "tests.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -67,38 +68,6 @@ namespace
     p.initial_pressure          = p0;
     p.preconsolidation_pressure = pc0;
     return p;
-  }
-
-  struct PointHistory
-  {
-    SymmetricTensor<2, 3> elastic_strain;
-    double                alpha = 0.;
-  };
-
-  ModifiedCamClay<3>::Return
-  step(const ModifiedCamClay<3>    &model,
-       PointHistory                &point,
-       const SymmetricTensor<2, 3> &d_eps,
-       const bool                   commit = true)
-  {
-    ModifiedCamClay<3>::Return r;
-    model.return_map(point.elastic_strain + d_eps, point.alpha, true, r);
-    if (commit)
-      {
-        point.elastic_strain = r.elastic_strain;
-        point.alpha          = r.alpha;
-      }
-    return r;
-  }
-
-  SymmetricTensor<2, 3>
-  diagonal(const double a, const double b, const double d)
-  {
-    SymmetricTensor<2, 3> t;
-    t[0][0] = a;
-    t[1][1] = b;
-    t[2][2] = d;
-    return t;
   }
 
   double

@@ -32,6 +32,7 @@
 // systems), so only round-off remains: 1e-10 relative is far above it
 // (QSMPM_VERBOSE prints the values) and far below what a wrong flow or
 // plane gives (O(sin psi) or O(1)).
+#include "plasticity_point.h"
 #include "tests.h"
 
 #include <qsmpm/materials/mohr_coulomb.h>
@@ -42,29 +43,6 @@ namespace
 {
   const double E = 1e4, nu = 0.3, c = 10., p0 = 100.;
 
-  struct PointHistory
-  {
-    SymmetricTensor<2, 3> elastic_strain;
-    double                alpha = 0.;
-  };
-
-  /// One strain-driven step; returns the return mapping's result.
-  MohrCoulomb<3>::Return
-  step(const MohrCoulomb<3>        &model,
-       PointHistory                &point,
-       const SymmetricTensor<2, 3> &d_eps,
-       const bool                   commit = true)
-  {
-    MohrCoulomb<3>::Return r;
-    model.return_map(point.elastic_strain + d_eps, point.alpha, true, r);
-    if (commit)
-      {
-        point.elastic_strain = r.elastic_strain;
-        point.alpha          = r.alpha;
-      }
-    return r;
-  }
-
   PointHistory
   isotropic_state(const MohrCoulomb<3> &model)
   {
@@ -72,16 +50,6 @@ namespace
     point.elastic_strain =
       -p0 / (3. * model.bulk_modulus()) * unit_symmetric_tensor<3>();
     return point;
-  }
-
-  SymmetricTensor<2, 3>
-  diagonal(const double a, const double b, const double d)
-  {
-    SymmetricTensor<2, 3> t;
-    t[0][0] = a;
-    t[1][1] = b;
-    t[2][2] = d;
-    return t;
   }
 
   /// The triaxial path; checks the limit and the dilatancy.

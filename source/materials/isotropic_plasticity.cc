@@ -8,16 +8,13 @@
 
 namespace qsmpm
 {
-  namespace
+  std::string
+  to_text(const double x)
   {
-    std::string
-    to_text(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  }
 
 
 

@@ -8,14 +8,6 @@ namespace qsmpm
 {
   namespace
   {
-    std::string
-    to_text(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     /// The parameters, after their check (for the base's constructor).
     template <typename Parameters>
     const Parameters &

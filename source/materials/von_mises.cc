@@ -4,17 +4,6 @@
 
 namespace qsmpm
 {
-  namespace
-  {
-    std::string
-    to_text(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
-
 
   template <int dim>
   VonMises<dim>::VonMises(const double young_modulus,

@@ -558,9 +558,9 @@ namespace qsmpm
                           ")."));
           }
       }
-    const auto initial_stress =
+    Vector<double> values(n_stress);
+    const auto     initial_stress =
       [&](const Point<dim> &x) -> SymmetricTensor<2, 3> {
-      Vector<double> values(n_stress);
       stress_parser->vector_value(x, values);
       SymmetricTensor<2, 3> sigma;
       sigma[0][0] = values[0];

@@ -5,6 +5,12 @@
 
 namespace qsmpm
 {
+  /// A parameter value as the messages of the plasticity models print it.
+  std::string
+  to_text(const double x);
+
+
+
   /**
    * The strength entries of the cohesive-frictional models (DruckerPrager,
    * MohrCoulomb): "Cohesion", "Friction angle", "Dilatancy angle" and
