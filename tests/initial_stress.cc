@@ -14,7 +14,9 @@
 // the settlement), and every point must keep its stress (1e-8 of gamma H). For
 // linear elastic (the stress it adds increments to), Drucker-Prager (a plastic
 // model: its elastic strain) and Modified Cam Clay (a pressure-dependent
-// elastic law, p_c0 = 200 kPa enclosing the deepest state), on 1 and 2 ranks.
+// elastic law, p_c0 = 200 kPa enclosing the deepest state; and normally
+// consolidated, `Overconsolidation ratio` = 1: every point's yield surface
+// through its own stress, so that every point is on it), on 1 and 2 ranks.
 // Without the initial stress the stress-free linear elastic layer settles by
 // the closed-form amount instead (2 % here: the layer's points are at rest only
 // with it).
@@ -139,7 +141,12 @@ main(int argc, char **argv)
      "  set Model = Modified Cam Clay\n  subsection Modified Cam Clay\n"
      "    set Shear modulus = 10000\n    set Initial pressure = 50\n"
      "    set Preconsolidation pressure = 200\n    set Critical state slope "
-     "= 1.2\n  end\n"}};
+     "= 1.2\n  end\n"},
+    {"Modified Cam Clay, OCR = 1",
+     "  set Model = Modified Cam Clay\n  subsection Modified Cam Clay\n"
+     "    set Shear modulus = 10000\n    set Initial pressure = 50\n"
+     "    set Critical state slope = 1.2\n"
+     "    set Overconsolidation ratio = 1\n  end\n"}};
   for (const auto &[name, text] : materials)
     {
       const Run r = run(layer_prm(text, geostatic));

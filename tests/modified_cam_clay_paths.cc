@@ -32,6 +32,12 @@
 //    finite-strain kirchhoff_tangent()).
 // 5. Bad parameters: one message each, naming the entry; the model made by
 //    name from a parameter file.
+// 7. `Overconsolidation ratio`: the yield surface through the initial
+//    stress, scaled by OCR. Normally consolidated at p_i != p0, isotropic
+//    compression follows the normal consolidation line through p_i,
+//    v = lambda ln(p / p_i), from the first step; p_c of a K0 start is
+//    OCR (p + q^2 / (M^2 p)) (all to 1e-10 or 1e-12, functions of the
+//    state as above).
 //
 // Tolerances: the volumetric relations and p_c are functions of the state,
 // exact for any step size, so only the return's Newton tolerance (1e-14 of
@@ -477,6 +483,10 @@ main()
   check_that("  G = 0 names 'Shear modulus'",
              bad([](auto &p) { p.shear_modulus = 0.; }).find("Shear modulus") !=
                std::string::npos);
+  check_that("  OCR = 0.5 names 'Overconsolidation ratio'",
+             bad([](auto &p) {
+               p.overconsolidation_ratio = 0.5;
+             }).find("Overconsolidation ratio") != std::string::npos);
 
   deallog << "6. Made by name from a parameter file" << std::endl;
   {
@@ -499,5 +509,77 @@ main()
               .norm() /
             50.,
           1e-14);
+  }
+
+  deallog << "7. The yield surface through the initial stress (OCR)"
+          << std::endl;
+  {
+    // Normally consolidated (OCR = 1) at p_i = 30 kPa, below the elastic
+    // law's p0 = 100 and the entry's p_c0 = 100: the point starts on its
+    // own normal consolidation line, and isotropic compression follows it
+    // from the first step, v = lambda ln(p / p_i) (v from the start).
+    auto parameters_nc                    = parameters(p0);
+    parameters_nc.overconsolidation_ratio = 1.;
+    const ModifiedCamClay<3>    model(parameters_nc);
+    const double                p_i = 30.;
+    std::vector<double>         state(model.n_state_components(), 0.);
+    const SymmetricTensor<2, 3> start = -p_i * unit_symmetric_tensor<3>();
+    model.initial_stress(Point<3>(), 0, &start, ArrayView<double>(state));
+    PointHistory point{ModifiedCamClay<3>::elastic_strain(state),
+                       ModifiedCamClay<3>::equivalent_plastic_strain(state)};
+    check("  isotropic start: p_c / p_i - 1",
+          model.preconsolidation_pressure(point.alpha) / p_i - 1.,
+          1e-12);
+    double error   = 0.;
+    bool   plastic = true;
+    for (unsigned int i = 1; i <= 50; ++i)
+      {
+        const auto r = step(model, point, -1e-3 * unit_symmetric_tensor<3>());
+        plastic      = plastic && r.increment > 0.;
+        const double p_exact = p_i * std::exp(3e-3 * i / lambda_);
+        error =
+          std::max(error, std::abs(pressure(r.stress) - p_exact) / p_exact);
+      }
+    check_that("  every step of the compression plastic", plastic);
+    check("  on the line through p_i: |p - p_i exp(v / lambda)| / p",
+          error,
+          1e-10);
+
+    // A K0 start (sigma_h = 0.5 sigma_v, p = 40/3, q = 10 kPa), OCR = 1
+    // and 2: p_c = OCR (p + q^2 / (M^2 p)), and the point keeps the start's
+    // stress.
+    for (const double ocr : {1., 2.})
+      {
+        auto parameters_k0                    = parameters(p0);
+        parameters_k0.overconsolidation_ratio = ocr;
+        const ModifiedCamClay<3> k0_model(parameters_k0);
+        std::fill(state.begin(), state.end(), 0.);
+        const SymmetricTensor<2, 3> k0 = diagonal(-10., -20., -10.);
+        k0_model.initial_stress(Point<3>(), 0, &k0, ArrayView<double>(state));
+        const double p = 40. / 3., q = 10.;
+        const double alpha =
+          ModifiedCamClay<3>::equivalent_plastic_strain(state);
+        check("  K0 start, OCR = " + std::to_string(int(ocr)) +
+                ": p_c / (OCR (p + q^2 / (M^2 p))) - 1",
+              k0_model.preconsolidation_pressure(alpha) /
+                  (ocr * (p + q * q / (M * M * p))) -
+                1.,
+              1e-12);
+        check("  the same: the start's stress kept, |sigma - sigma0| / p",
+              (k0_model.stress_3d(ArrayView<const double>(state)) - k0).norm() /
+                p,
+              1e-12);
+      }
+
+    // A start in tension is refused, naming the entry.
+    std::fill(state.begin(), state.end(), 0.);
+    const SymmetricTensor<2, 3> tension = unit_symmetric_tensor<3>();
+    check_that("  a start with p <= 0 names 'Initial stress'",
+               message([&] {
+                 model.initial_stress(Point<3>(),
+                                      0,
+                                      &tension,
+                                      ArrayView<double>(state));
+               }).find("Initial stress") != std::string::npos);
   }
 }

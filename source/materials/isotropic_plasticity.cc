@@ -195,6 +195,18 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  IsotropicPlasticity<dim>::set_equivalent_plastic_strain(
+    ArrayView<double> state,
+    const double      alpha)
+  {
+    AssertDimension(state.size(), n_state);
+    state[alpha_offset] = alpha;
+  }
+
+
+
+  template <int dim>
   double
   IsotropicPlasticity<dim>::plastic_increment(
     const ArrayView<const double> &state)
@@ -247,11 +259,15 @@ namespace qsmpm
         const SymmetricTensor<2, 3> eps   = elastic_strain_of(*sigma0);
         const SymmetricTensor<2, 3> sigma = elastic_stress(eps);
         // The yield function's own scale: its value at the stress and at
-        // zero stress bracket what round-off can reach.
+        // zero stress, and what the point's hardening changes, bracket what
+        // round-off can reach (a stress on the surface: a Cam Clay point
+        // with an overconsolidation ratio of 1).
+        const double alpha = equivalent_plastic_strain(state);
+        const double f     = yield_function(sigma, alpha);
         const double scale = std::abs(yield_function(sigma, 0.)) +
-                             std::abs(yield_function({}, 0.)) + 1e-300;
-        if (!(yield_function(sigma, equivalent_plastic_strain(state)) <=
-              1e-10 * scale))
+                             std::abs(yield_function({}, 0.)) +
+                             std::abs(f - yield_function(sigma, 0.)) + 1e-300;
+        if (!(f <= 1e-10 * scale))
           {
             std::ostringstream message;
             message << "Material points: <Initial stress> at (" << x

@@ -87,6 +87,18 @@ namespace qsmpm
                       "= p0: normally consolidated; the overconsolidation "
                       "ratio is p_c0 / p0).",
                       Patterns::Double(0.));
+    prm.add_parameter(
+      "Overconsolidation ratio",
+      overconsolidation_ratio,
+      "0 (the default): every point's yield surface starts at the "
+      "'Preconsolidation pressure'. OCR >= 1: each point's starts through "
+      "the stress the point starts from (Material points/Initial stress, "
+      "or -p0 I without it), scaled by OCR: p_c = OCR (p + q^2 / (M^2 p)) "
+      "(1: normally consolidated, the stress on the surface), e.g. for a "
+      "layer whose stress grows with depth. The point's "
+      "equivalent_plastic_strain then starts at (lambda - kappa) ln(p_c / "
+      "Preconsolidation pressure), which may be negative.",
+      Patterns::Double(0.));
   }
 
 
@@ -121,6 +133,12 @@ namespace qsmpm
                            to_text(initial_pressure) +
                            "): the unstrained point must lie inside the "
                            "yield surface."));
+    AssertThrow(overconsolidation_ratio == 0. ||
+                  (overconsolidation_ratio >= 1. &&
+                   std::isfinite(overconsolidation_ratio)),
+                ExcMessage("Modified Cam Clay: the 'Overconsolidation ratio' "
+                           "must be 0 (off) or at least 1 (is " +
+                           to_text(overconsolidation_ratio) + ")."));
   }
 
 
@@ -167,6 +185,46 @@ namespace qsmpm
   {
     return param.preconsolidation_pressure *
            std::exp(alpha / (param.compression_index - param.swelling_index));
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  ModifiedCamClay<dim>::initial_stress(const Point<dim>            &x,
+                                       const unsigned int           material_id,
+                                       const SymmetricTensor<2, 3> *sigma0,
+                                       ArrayView<double>            state) const
+  {
+    const double ocr = param.overconsolidation_ratio;
+    if (ocr > 0.)
+      {
+        const SymmetricTensor<2, 3> start =
+          sigma0 != nullptr ?
+            *sigma0 :
+            -param.initial_pressure * unit_symmetric_tensor<3>();
+        const double p = -trace(start) / 3.;
+        if (!(p > 0.))
+          {
+            std::ostringstream message;
+            message << "Material points: <Initial stress> at (" << x
+                    << ") has the mean pressure " << p
+                    << ": the model 'Modified Cam Clay' needs p > 0 "
+                       "(compression) to start from it.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+        const double q_squared = 1.5 * deviator(start) * deviator(start);
+        const double M         = param.critical_state_slope;
+        const double pc        = ocr * (p + q_squared / (M * M * p));
+        this->set_equivalent_plastic_strain(
+          state,
+          (param.compression_index - param.swelling_index) *
+            std::log(pc / param.preconsolidation_pressure));
+      }
+    return IsotropicPlasticity<dim>::initial_stress(x,
+                                                    material_id,
+                                                    sigma0,
+                                                    state);
   }
 
 

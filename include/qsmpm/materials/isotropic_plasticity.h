@@ -292,6 +292,10 @@ namespace qsmpm
     extract(const Tensor<4, 3> &t);
 
   protected:
+    /// Set the hardening variable alpha in a point's @p state.
+    static void
+    set_equivalent_plastic_strain(ArrayView<double> state, const double alpha);
+
     const double                lambda;
     const double                mu;
     const double                K;

@@ -33,6 +33,11 @@ namespace qsmpm
    * boundary tractions that balance it; see doc/example_triaxial.md),
    * unless `Material points/Initial stress` gives another (compressive,
    * inside the yield surface; the elastic law keeps p0 as its reference).
+   * A layer whose stress grows with depth has a preconsolidation pressure
+   * that grows with it: `Overconsolidation ratio` = OCR >= 1 puts each
+   * point's yield surface through the stress it starts from, scaled by OCR
+   * (1: normally consolidated), instead of the one `Preconsolidation
+   * pressure` for all.
    *
    * <h3>Yield surface, flow, hardening</h3>
    *
@@ -93,14 +98,15 @@ namespace qsmpm
       double critical_state_slope      = 1.;
       double initial_pressure          = 100.;
       double preconsolidation_pressure = 100.;
+      double overconsolidation_ratio   = 0.;
 
       /// Declare the entries, bound to the members.
       void
       add_parameters(ParameterHandler &prm);
 
       /**
-       * Throws, naming the entry, unless G > 0, 0 < kappa < lambda, M > 0
-       * and 0 < p0 <= p_c0.
+       * Throws, naming the entry, unless G > 0, 0 < kappa < lambda, M > 0,
+       * 0 < p0 <= p_c0 and OCR = 0 or OCR >= 1.
        */
       void
       check() const;
@@ -127,6 +133,20 @@ namespace qsmpm
     /// The preconsolidation pressure p_c(alpha).
     double
     preconsolidation_pressure(const double alpha) const;
+
+    /**
+     * IsotropicPlasticity::initial_stress(); with an `Overconsolidation
+     * ratio` OCR > 0 the point's yield surface first goes through the
+     * stress it starts from (@p sigma0, or -p0 I without it), scaled by
+     * OCR: p_c = OCR (p + q^2 / (M^2 p)), the point's alpha set to
+     * (lambda - kappa) ln(p_c / p_c0). Throws, naming `Initial stress`,
+     * for a start with p <= 0.
+     */
+    SymmetricTensor<2, dim>
+    initial_stress(const Point<dim>            &x,
+                   const unsigned int           material_id,
+                   const SymmetricTensor<2, 3> *sigma0,
+                   ArrayView<double>            state) const override;
 
     /// p = p0 exp(v_e / kappa), s = 2 G e_e.
     SymmetricTensor<2, 3>
