@@ -36,7 +36,6 @@
 #include "prm_text.h"
 #include "tests.h"
 
-#include <fstream>
 #include <qsmpm/core/quasi_static_problem.h>
 
 using namespace qsmpm;
@@ -51,21 +50,8 @@ namespace
       const std::vector<std::pair<std::string, std::string>> &edits,
       const std::string                                      &directory)
   {
-    std::ifstream file(std::string(QSMPM_EXAMPLES_DIR) + "/consolidation/" +
-                       name);
-    AssertThrow(file, ExcMessage("cannot read " + name));
-    std::stringstream buffer;
-    buffer << file.rdbuf();
-    std::string text = buffer.str();
-    for (const auto &[from, to] : edits)
-      {
-        const auto at = text.find(from);
-        AssertThrow(at != std::string::npos,
-                    ExcMessage(name + " has no <" + from + ">"));
-        text.replace(at, from.size(), to);
-      }
-    text += "subsection Output\n  set Directory = " + directory +
-            "\n  set Interval = 0\nend\n";
+    const std::string text =
+      edited_example("consolidation/" + name, edits, directory);
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     initialize_from_text(problem, text);
     problem.run();

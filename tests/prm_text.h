@@ -56,6 +56,32 @@ namespace qsmpm_tests
     return u;
   }
 
+  /// The shipped example file examples/@p name (e.g.
+  /// "consolidation/terzaghi.prm") with the replacements @p edits (each: a
+  /// text of the file, which must be there, and what replaces its first
+  /// occurrence), and an Output subsection that writes into @p directory
+  /// and no fields.
+  inline std::string
+  edited_example(const std::string                                      &name,
+                 const std::vector<std::pair<std::string, std::string>> &edits,
+                 const std::string &directory)
+  {
+    std::ifstream file(std::string(QSMPM_EXAMPLES_DIR) + "/" + name);
+    AssertThrow(file, dealii::ExcMessage("cannot read " + name));
+    std::stringstream buffer;
+    buffer << file.rdbuf();
+    std::string text = buffer.str();
+    for (const auto &[from, to] : edits)
+      {
+        const auto at = text.find(from);
+        AssertThrow(at != std::string::npos,
+                    dealii::ExcMessage(name + " has no <" + from + ">"));
+        text.replace(at, from.size(), to);
+      }
+    return text + "subsection Output\n  set Directory = " + directory +
+           "\n  set Interval = 0\nend\n";
+  }
+
   /// The rows of a CSV file of numbers (its header line skipped).
   inline std::vector<std::vector<double>>
   read_csv(const std::string &filename)

@@ -550,10 +550,12 @@ namespace qsmpm
     newton_parameters.initial_guess =
       NewtonParameters::InitialGuess::extrapolation;
     // In the first step of a load the forces in the body are those of the
-    // load increment.
+    // load increment: the first solve's residual on the free degrees of
+    // freedom (not with the supports' reactions, which also hold an initial
+    // geostatic stress far above the load's).
     newton_parameters.residual_floor =
       std::max(newton_parameters.residual_floor,
-               std::max(report.force_level, pore_pressure->force_scale()) *
+               std::max(report.initial_residual, pore_pressure->force_scale()) *
                  coupling_floor_factor());
     VectorType du_ghosted(residual->ghosted_layout());
     for (;;)

@@ -85,7 +85,9 @@ namespace qsmpm
                       preconsolidation_pressure,
                       "p_c0 >= p0: the initial size of the yield surface (p_c0 "
                       "= p0: normally consolidated; the overconsolidation "
-                      "ratio is p_c0 / p0).",
+                      "ratio is p_c0 / p0). With an 'Overconsolidation "
+                      "ratio' only the reference of the hardening variable "
+                      "(any p_c0 > 0).",
                       Patterns::Double(0.));
     prm.add_parameter(
       "Overconsolidation ratio",
@@ -123,8 +125,12 @@ namespace qsmpm
                            to_text(compression_index) +
                            ", the swelling index " + to_text(swelling_index) +
                            ")."));
-    AssertThrow(preconsolidation_pressure >= initial_pressure &&
-                  std::isfinite(preconsolidation_pressure),
+    // With an overconsolidation ratio, p_c0 is only the reference of
+    // alpha; the points' surfaces come from their own stresses.
+    positive(preconsolidation_pressure, "Preconsolidation pressure");
+    AssertThrow(overconsolidation_ratio > 0. ||
+                  (preconsolidation_pressure >= initial_pressure &&
+                   std::isfinite(preconsolidation_pressure)),
                 ExcMessage("Modified Cam Clay: the 'Preconsolidation "
                            "pressure' must be at least the 'Initial pressure' "
                            "(is " +

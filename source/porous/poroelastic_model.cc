@@ -29,6 +29,8 @@ namespace qsmpm
     fields.push_back({"pore_pressure_iterate", 1});
     fields.push_back({"pore_pressure_gradient", dim});
     fields.push_back({"pore_pressure_gradient_iterate", dim});
+    fields.push_back({"initial_total_stress",
+                      SymmetricTensor<2, dim>::n_independent_components});
     return fields;
   }
 
@@ -58,12 +60,13 @@ namespace qsmpm
                                         const SymmetricTensor<2, 3> *sigma0,
                                         ArrayView<double> state) const
   {
-    return skeleton_model->initial_stress(x,
-                                          material_id,
-                                          sigma0,
-                                          ArrayView<double>(state.data(),
-                                                            n_skeleton)) -
-           b * p_initial * unit_symmetric_tensor<dim>();
+    const SymmetricTensor<2, dim> sigma =
+      skeleton_model->initial_stress(
+        x, material_id, sigma0, ArrayView<double>(state.data(), n_skeleton)) -
+      b * p_initial * unit_symmetric_tensor<dim>();
+    for (unsigned int k = 0; k < sigma.n_independent_components; ++k)
+      state[initial_stress_offset() + k] = sigma.access_raw_entry(k);
+    return sigma;
   }
 
 
@@ -136,6 +139,8 @@ namespace qsmpm
         new_state[n_skeleton + 2 + d]       = p[2 + dim + d];
         new_state[n_skeleton + 2 + dim + d] = p[2 + dim + d];
       }
+    for (unsigned int k = initial_stress_offset(); k < new_state.size(); ++k)
+      new_state[k] = old.state[k];
   }
 
 

@@ -106,7 +106,8 @@ namespace qsmpm
 
       /**
        * Throws, naming the entry, unless G > 0, 0 < kappa < lambda, M > 0,
-       * 0 < p0 <= p_c0 and OCR = 0 or OCR >= 1.
+       * 0 < p0 <= p_c0 (without OCR; with it 0 < p_c0) and OCR = 0 or
+       * OCR >= 1.
        */
       void
       check() const;

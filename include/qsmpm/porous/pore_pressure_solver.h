@@ -193,9 +193,11 @@ namespace qsmpm
     std::vector<types::global_dof_index> cell_dofs;
     /// Per point of the cache: Omega_p, L_p and beta_p of the step.
     std::vector<double> volume, fixed_stress, stabilization;
-    unsigned int        state_offset      = 0;
-    double              b                 = 1.;
-    unsigned int        linear_iterations = 0;
+    unsigned int        state_offset = 0;
+    /// Offset of the points' initial total stress in their properties.
+    unsigned int initial_stress_offset = 0;
+    double       b                     = 1.;
+    unsigned int linear_iterations     = 0;
     /// The largest stress component of the points at the start of the step.
     double stress_scale = 0.;
     /// force_scale().

@@ -24,8 +24,9 @@ namespace qsmpm
    * makes p_k the committed pressure p_n of the next step.
    *
    * The fields after the skeleton's own: p_n, p_k, grad p_n (dim), grad
-   * p_k (dim). Output: the skeleton's fields, "pore_pressure" (the
-   * committed p) and the effective stress sigma' = sigma + b p I
+   * p_k (dim), and the total stress the point started from. Output: the
+   * skeleton's fields, "pore_pressure" (the committed p) and the effective
+   * stress sigma' = sigma + b p I
    * ("effective_stress_xx", "_yy", "_xy", ...; the output stress is the
    * total stress sigma).
    */
@@ -51,6 +52,16 @@ namespace qsmpm
     pressure_offset() const
     {
       return n_skeleton;
+    }
+
+    /// Offset among the model's fields of the total stress the point
+    /// started from (written by initial_stress(), kept thereafter): the
+    /// pore pressure solver measures the stress the loads have added
+    /// against it.
+    unsigned int
+    initial_stress_offset() const
+    {
+      return n_skeleton + 2 + 2 * dim;
     }
 
     double
