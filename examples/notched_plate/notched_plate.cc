@@ -64,7 +64,7 @@ namespace NotchedPlate
           AssertThrow(csv,
                       ExcMessage("Cannot write <" + plate.output_file + ">."));
           csv << "angle_deg,peak_N,work_over_Gf_area,crack_energy_over_Gf_area,"
-                 "crack_normal_deg,path_angle_deg\n";
+                 "crack_normal_deg,path_angle_deg,stored_energy_over_Gf_area\n";
           curves.open(plate.output_directory + "/load_displacement.csv");
           curves << "angle_deg,grip_displacement_m,load_N\n";
         }
@@ -76,7 +76,8 @@ namespace NotchedPlate
           pcout << "  angle " << std::setw(4) << angle << ": peak "
                 << std::setprecision(6) << r.peak << ", work / (G_f (W - a0)) "
                 << r.work / (G_f * ligament) << " (cracks "
-                << r.crack_energy / (G_f * ligament) << "), crack normal "
+                << r.crack_energy / (G_f * ligament) << ", held at the end "
+                << r.stored_energy / (G_f * ligament) << "), crack normal "
                 << r.normal << " deg, path angle " << r.path_angle << " deg, "
                 << r.steps << " steps, " << std::setprecision(3) << r.wall_time
                 << " s" << (r.failed ? " (stopped early)" : "") << std::endl;
@@ -93,7 +94,8 @@ namespace NotchedPlate
             csv << angle << "," << std::setprecision(8) << r.peak << ","
                 << r.work / (G_f * ligament) << ","
                 << r.crack_energy / (G_f * ligament) << "," << r.normal << ","
-                << r.path_angle << "\n"
+                << r.path_angle << "," << r.stored_energy / (G_f * ligament)
+                << "\n"
                 << std::flush;
         }
       if (root)

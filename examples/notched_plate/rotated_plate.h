@@ -147,6 +147,13 @@ namespace NotchedPlate
       bool         failed    = false;
       /// The energy the points' cracks dissipated (per unit thickness).
       double crack_energy = 0.;
+      /// The energy the points hold at the end, sum of sigma : eps / 2 times
+      /// the volume: what unloading to zero strain would give back along
+      /// the cracks' secants (the unfinished cracks of the band hold most
+      /// of it). The work less this and crack_energy is what the points
+      /// released when they broke apart (see Failed points) and the error
+      /// of the energy balance of the time integration.
+      double stored_energy = 0.;
       /// The angle (degrees) between the main crack's path and the
       /// ligament's line xi = 0: the least-squares line xi = a + b eta
       /// through the points whose cracks dissipated at least half of G_f.
@@ -423,11 +430,17 @@ namespace NotchedPlate
     const auto &offsets = problem.points().get_offsets();
     std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
     // Sums over the ranks: the energy, cos 2 phi and sin 2 phi weighted by
-    // it, and n, eta, xi, eta^2, eta xi of the main crack's points.
-    std::array<double, 8> sums{};
+    // it, n, eta, xi, eta^2, eta xi of the main crack's points, and the
+    // stored energy.
+    std::array<double, 9> sums{};
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const auto                    data = particle.get_properties();
+        const auto data = particle.get_properties();
+        sums[8] += 0.5 *
+                   scalar_product(
+                     Utils::read_symmetric<dim>(data.data() + offsets.stress),
+                     Utils::read_symmetric<dim>(data.data() + offsets.strain)) *
+                   data[offsets.initial_volume];
         const ArrayView<const double> state(data.data() + offsets.state,
                                             model.n_state_components());
         const unsigned int count = model.crack_summaries(state, cracks);
@@ -454,8 +467,9 @@ namespace NotchedPlate
       }
     for (double &sum : sums)
       sum = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
-    const auto [energy, c, sn, n, e, x, ee, ex] = sums;
-    result.crack_energy                         = energy;
+    const auto [energy, c, sn, n, e, x, ee, ex, stored] = sums;
+    result.crack_energy                                 = energy;
+    result.stored_energy                                = stored;
     result.path_angle =
       std::atan((n * ex - e * x) / (n * ee - e * e)) * 180. / M_PI;
     double angle = 0.5 * std::atan2(sn, c) * 180. / M_PI;
