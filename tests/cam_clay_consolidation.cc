@@ -67,9 +67,7 @@ namespace
     const std::string text =
       edited_example("consolidation/terzaghi.prm", edits, directory) +
       "subsection Material points\n  set Update volumes = false\nend\n";
-    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    initialize_from_text(problem, text);
-    problem.run();
+    run_from_text<2>(text);
     return directory + "/probes.csv";
   }
 } // namespace

@@ -52,9 +52,7 @@ namespace
   {
     const std::string text =
       edited_example("consolidation/" + name, edits, directory);
-    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    initialize_from_text(problem, text);
-    problem.run();
+    run_from_text<2>(text);
   }
 
   /// The column @p column of a CSV file, row by row.

@@ -31,6 +31,22 @@ namespace qsmpm_tests
     problem.initialize(prm);
   }
 
+  /// Set a problem up from @p text, run it and destroy it; then wait for
+  /// all ranks: rank 0 writes the CSV files (reactions.csv, probes.csv),
+  /// and the others may read them only once it has closed them.
+  template <int dim>
+  void
+  run_from_text(const std::string &text)
+  {
+    {
+      qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+      initialize_from_text(problem, text);
+      problem.run();
+    }
+    const int ierr = MPI_Barrier(MPI_COMM_WORLD);
+    AssertThrowMPI(ierr);
+  }
+
   /// The displacements of all points (of all ranks of @p communicator,
   /// the problem's) by particle id.
   template <int dim>

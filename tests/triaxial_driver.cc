@@ -54,10 +54,7 @@ namespace
   std::string
   run(const std::string &name, const std::string &directory)
   {
-    QuasiStaticProblem<3> problem(MPI_COMM_WORLD);
-    initialize_from_text(problem,
-                         edited_example("triaxial/" + name, {}, directory));
-    problem.run();
+    run_from_text<3>(edited_example("triaxial/" + name, {}, directory));
     return directory + "/reactions.csv";
   }
 } // namespace
