@@ -64,8 +64,7 @@ namespace qsmpm
       skeleton_model->initial_stress(
         x, material_id, sigma0, ArrayView<double>(state.data(), n_skeleton)) -
       b * p_initial * unit_symmetric_tensor<dim>();
-    for (unsigned int k = 0; k < sigma.n_independent_components; ++k)
-      state[initial_stress_offset() + k] = sigma.access_raw_entry(k);
+    Utils::write_symmetric<dim>(sigma, state.data() + initial_stress_offset());
     return sigma;
   }
 
@@ -139,8 +138,9 @@ namespace qsmpm
         new_state[n_skeleton + 2 + d]       = p[2 + dim + d];
         new_state[n_skeleton + 2 + dim + d] = p[2 + dim + d];
       }
-    for (unsigned int k = initial_stress_offset(); k < new_state.size(); ++k)
-      new_state[k] = old.state[k];
+    std::copy(old.state.begin() + initial_stress_offset(),
+              old.state.end(),
+              new_state.begin() + initial_stress_offset());
   }
 
 
