@@ -16,6 +16,32 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /**
+     * A process that no MPI launcher started (`./compact_tension b15.prm`)
+     * is a singleton: MPI_COMM_WORLD is this one process. Open MPI still
+     * tries all its point-to-point layers for it, and the cm layer probes
+     * the high-speed networks (libfabric, PSM): 0.25 s of the 0.9 s that
+     * `qsmpm --version` takes on the development machine. Such a process
+     * sends messages only to itself, which the ob1 layer does. So, before
+     * main() and with it MPI_Init(), a singleton gets OMPI_MCA_pml = ob1,
+     * unless the user has chosen a point-to-point layer already. A process
+     * that mpirun, mpiexec or srun started (they set OMPI_COMM_WORLD_SIZE,
+     * PMIX_RANK or PMI_RANK) is left alone, and other MPI libraries ignore
+     * the variable.
+     */
+    const bool singleton_pml_chosen = [] {
+      for (const char *launched :
+           {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+        if (std::getenv(launched) != nullptr)
+          return false;
+      return setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0) == 0;
+    }();
+  } // namespace
+
+
+
   namespace Utils
   {
     std::vector<std::string>
