@@ -13,10 +13,10 @@ namespace qsmpm
      * node couple with those of every node of the cells around it. Each row
      * of @p pattern (the locally relevant ones) is inserted once, sorted
      * and complete, instead of cell by cell as DoFTools::
-     * make_sparsity_pattern() does (about 8 and 27 inserts of each row in
-     * 2D and 3D, each merged into the row so far). Needs the dim dofs of a
-     * node to be consecutive (the grid's numbering); returns false and
-     * inserts nothing otherwise.
+     * make_sparsity_pattern() does (one insert per cell around the node,
+     * 4 in 2D and 8 in 3D, each merged into the row so far). Needs the dim
+     * dofs of a node to be consecutive (the grid's numbering); returns
+     * false and inserts nothing otherwise.
      */
     template <int dim>
     bool
