@@ -31,7 +31,7 @@ namespace qsmpm
      * PMIX_RANK or PMI_RANK) is left alone, and other MPI libraries ignore
      * the variable.
      */
-    const bool singleton_pml_chosen = [] {
+    [[maybe_unused]] const bool singleton_pml_chosen = [] {
       for (const char *launched :
            {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
         if (std::getenv(launched) != nullptr)
