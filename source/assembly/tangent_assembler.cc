@@ -14,12 +14,12 @@ namespace qsmpm
      * of @p pattern (the locally relevant ones) is inserted once, sorted
      * and complete, instead of cell by cell as DoFTools::
      * make_sparsity_pattern() does (one insert per cell around the node,
-     * 4 in 2D and 8 in 3D, each merged into the row so far). Needs the dim
-     * dofs of a node to be consecutive (the grid's numbering); returns
-     * false and inserts nothing otherwise.
+     * 4 in 2D and 8 in 3D, each merged into the row so far). The dim dofs
+     * of a node are consecutive in the grid's numbering, which AMG's
+     * rigid-body modes rely on as well (make_rigid_body_modes()).
      */
     template <int dim>
-    bool
+    void
     add_node_couplings(const BackgroundGrid<dim>         &grid,
                        TrilinosWrappers::SparsityPattern &pattern)
     {
@@ -41,16 +41,14 @@ namespace qsmpm
           {
             first[v] = cell->vertex_dof_index(v, 0);
             for (unsigned int d = 1; d < dim; ++d)
-              if (cell->vertex_dof_index(v, d) != first[v] + d)
-                return false;
+              Assert(cell->vertex_dof_index(v, d) == first[v] + d,
+                     ExcMessage("The dofs of a vertex are not consecutive."));
           }
-        return true;
       };
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial())
           {
-            if (!cell_nodes(cell))
-              return false;
+            cell_nodes(cell);
             for (unsigned int v = 0; v < n_vertices; ++v)
               start[node_of(first[v]) + 1] += n_vertices;
           }
@@ -88,7 +86,6 @@ namespace qsmpm
           for (unsigned int d = 0; d < dim; ++d)
             pattern.add_entries(row + d, columns.begin(), columns.end(), true);
         }
-      return true;
     }
 
 
@@ -236,7 +233,11 @@ namespace qsmpm
                                               writable_rows,
                                               grid.get_communicator(),
                                               row_length);
-    if (periodicity.n_constraints() > 0 || !add_node_couplings(grid, pattern))
+    // Periodicity constraints add the couplings across the period, which
+    // DoFTools condenses into the masters' rows.
+    if (periodicity.n_constraints() == 0)
+      add_node_couplings(grid, pattern);
+    else
       DoFTools::make_sparsity_pattern(grid.get_dof_handler(),
                                       pattern,
                                       periodicity,
