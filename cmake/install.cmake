@@ -24,20 +24,21 @@ include(CMakePackageConfigHelpers)
 
 set(QSMPM_INSTALL_CMAKE_DIR lib/cmake/qsmpm)
 
-# The installed driver finds libqsmpm.so next to it, wherever the prefix is
+# The installed driver program finds libqsmpm.so in ../lib, wherever the prefix is
 # (the prefix is chosen only by `cmake --install --prefix`, after
 # configuring); in the build tree CMake's build RPATH does the same.
 # Both keep the directories of the libraries they link outside the system
 # directories (a deal.II, MPI or HDF5 elsewhere) in their installed RPATH.
-set_target_properties(qsmpm_driver PROPERTIES
+set_target_properties(qsmpm_driver_program PROPERTIES
   INSTALL_RPATH "$ORIGIN/../lib"
   INSTALL_RPATH_USE_LINK_PATH TRUE)
 set_target_properties(qsmpm PROPERTIES
   INSTALL_RPATH_USE_LINK_PATH TRUE)
 set_target_properties(qsmpm PROPERTIES EXPORT_NAME qsmpm)
 set_target_properties(qsmpm_driver PROPERTIES EXPORT_NAME driver)
+set_target_properties(qsmpm_driver_program PROPERTIES EXPORT_NAME driver_program)
 
-install(TARGETS qsmpm qsmpm_driver
+install(TARGETS qsmpm qsmpm_driver qsmpm_driver_program
   EXPORT qsmpmTargets
   LIBRARY DESTINATION lib
   ARCHIVE DESTINATION lib

@@ -32,7 +32,7 @@ prefix=$work/prefix
 echo "=== 1. install into $prefix"
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 for f in include/qsmpm/core/quasi_static_problem.h \
-  include/qsmpm/base/version.h lib/libqsmpm.so bin/qsmpm \
+  include/qsmpm/base/version.h lib/libqsmpm.so bin/qsmpm bin/qsmpm-driver \
   lib/cmake/qsmpm/qsmpmConfig.cmake lib/cmake/qsmpm/qsmpmConfigVersion.cmake \
   lib/cmake/qsmpm/qsmpmTargets.cmake \
   share/qsmpm/examples/block_compression/block_compression.cc \
