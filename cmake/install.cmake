@@ -24,9 +24,10 @@ include(CMakePackageConfigHelpers)
 
 set(QSMPM_INSTALL_CMAKE_DIR lib/cmake/qsmpm)
 
-# The installed driver program finds libqsmpm.so in ../lib, wherever the prefix is
-# (the prefix is chosen only by `cmake --install --prefix`, after
-# configuring); in the build tree CMake's build RPATH does the same.
+# The installed driver program finds libqsmpm.so in ../lib, wherever the
+# prefix is (the prefix is chosen only by `cmake --install --prefix`, after
+# configuring); in the build tree CMake's build RPATH does the same. The
+# launcher `qsmpm` links no library of its own.
 # Both keep the directories of the libraries they link outside the system
 # directories (a deal.II, MPI or HDF5 elsewhere) in their installed RPATH.
 set_target_properties(qsmpm_driver_program PROPERTIES
