@@ -9,32 +9,25 @@
 // runs with the C library's defaults.
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <qsmpm/base/huge_pages.h>
-#include <string>
 #include <unistd.h>
 
 int
 main(int /*argc*/, char *argv[])
 {
-  // The directory of this executable, wherever it was installed or called
-  // from.
-  std::string   self(4096, '\0');
-  const ssize_t length =
-    readlink("/proc/self/exe", self.data(), self.size() - 1);
-  if (length <= 0)
+  // Next to this executable, wherever it was installed or called from.
+  std::error_code             error;
+  const std::filesystem::path driver =
+    std::filesystem::read_symlink("/proc/self/exe", error).parent_path() /
+    "qsmpm-driver";
+  if (!error)
     {
-      std::cerr << "qsmpm: cannot find its own executable (/proc/self/exe): "
-                << std::strerror(errno) << std::endl;
-      return 1;
+      qsmpm::Utils::request_huge_pages();
+      execv(driver.c_str(), argv);
     }
-  self.resize(length);
-  const std::string driver =
-    self.substr(0, self.find_last_of('/') + 1) + "qsmpm-driver";
-
-  qsmpm::Utils::request_huge_pages();
-  execv(driver.c_str(), argv);
-  std::cerr << "qsmpm: cannot start " << driver << ": " << std::strerror(errno)
-            << std::endl;
+  std::cerr << "qsmpm: cannot start " << driver.string() << ": "
+            << (error ? error.message() : std::strerror(errno)) << std::endl;
   return 1;
 }
