@@ -180,23 +180,13 @@ main(int argc, char *argv[])
   try_input("boundary pore pressure that is no expression",
             "Boundary pore pressure",
             pore_fluid + "  set Boundary pore pressure = 1 +* y\nend\n");
-  try_input("pore fluid at finite strain",
-            "Kinematics",
-            pore_fluid + "end\n"
-                         "subsection Material points\n"
-                         "  set Kinematics = finite strain\n"
-                         "end\n"
-                         "subsection Material\n"
-                         "  set Model = hencky\n"
-                         "end\n");
-  try_input("pore fluid with GIMP",
-            "Shape functions",
-            pore_fluid +
-              "end\n"
-              "subsection Material points\n"
-              "  set Shape functions = cpGIMP\n"
-              "end\n" +
-              run_briefly + "end\n",
+  try_input("mobility factor that is no expression",
+            "Mobility factor",
+            pore_fluid + "  set Mobility factor = J^^2\nend\n");
+  try_input("mobility factor that is not positive",
+            "Mobility factor",
+            pore_fluid + "  set Mobility factor = J - 2\nend\n" + run_briefly +
+              "end\n",
             /*run=*/true);
   try_input("time that runs backwards",
             "time",

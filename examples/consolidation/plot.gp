@@ -22,10 +22,10 @@ set key bottom left
 set samples 400
 set title "Terzaghi consolidation: qsmpm (points) and exact (lines), terzaghi.prm"
 plot exact(z0, x) lc 1 title sprintf("z/H = %.2f", z0 / H), \
-     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):($10 / q) with points pt 6 lc 1 notitle, \
+     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):(column("probe0_pore_pressure") / q) with points pt 6 lc 1 notitle, \
      exact(z1, x) lc 2 title sprintf("z/H = %.2f", z1 / H), \
-     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):($18 / q) with points pt 6 lc 2 notitle, \
+     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):(column("probe1_pore_pressure") / q) with points pt 6 lc 2 notitle, \
      exact(z2, x) lc 3 title sprintf("z/H = %.2f", z2 / H), \
-     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):($26 / q) with points pt 6 lc 3 notitle, \
+     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):(column("probe2_pore_pressure") / q) with points pt 6 lc 3 notitle, \
      exact(z3, x) lc 4 title sprintf("z/H = %.2f", z3 / H), \
-     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):($34 / q) with points pt 6 lc 4 notitle
+     "terzaghi-output/probes.csv" every ::1 using (cv * $2 / H**2):(column("probe3_pore_pressure") / q) with points pt 6 lc 4 notitle

@@ -24,8 +24,8 @@ namespace qsmpm
                         "grid, Darcy flow, effective stress sigma = sigma' - "
                         "b p I (the material model is the skeleton's). The "
                         "load factor is the time (s): each load step is a "
-                        "time step of implicit Euler. Small strain and "
-                        "linear shape functions only.",
+                        "time step of implicit Euler. Small or finite strain, "
+                        "linear or GIMP shape functions.",
                         Patterns::Bool());
       prm.add_parameter("Biot coefficient",
                         biot_coefficient,
@@ -44,6 +44,17 @@ namespace qsmpm
                         "hydraulic conductivity over the fluid's unit "
                         "weight; Darcy flux q = -kappa grad p.",
                         Patterns::Double(0.));
+      prm.add_parameter(
+        "Mobility factor",
+        mobility_factor,
+        "f(J): the mobility of a point is <Mobility> times this expression "
+        "in J, the point's volume ratio det F (V / V_0) at the start of "
+        "the step, so that the permeability follows the compaction at "
+        "finite strain; e.g. Kozeny-Carman with the initial porosity n0 = "
+        "0.4, n = 1 - (1 - n0) / J: '(1 - 0.6/J)^3 / (0.6/J)^2 * 0.36 / "
+        "0.064'. It must be positive at every point. 1: a constant "
+        "mobility.",
+        Patterns::Anything());
       prm.add_parameter("Initial pore pressure",
                         initial_pressure,
                         "p of every point at the start (stress units).",
@@ -167,6 +178,18 @@ namespace qsmpm
     , communicator(comm)
     , fe(1)
   {
+    try
+      {
+        mobility_factor.initialize("J", parameters.mobility_factor, {});
+        mobility_factor.value(Point<1>(1.));
+      }
+    catch (const std::exception &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage("Pore fluid: <Mobility factor> = <" +
+                               parameters.mobility_factor +
+                               ">: " + Utils::error_message(exc)));
+      }
     const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
     for (const auto &[function, expression, entry] :
          {std::make_tuple(&boundary_pressure,
@@ -232,8 +255,6 @@ namespace qsmpm
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
 
     dt = t_new - t_old;
-    AssertThrow(cache.stencil_size() == n_vertices,
-                ExcMessage("Pore fluid: needs <Shape functions> = linear."));
     AssertThrow(dt >= 0.,
                 ExcMessage("Pore fluid: the load factor is the time and must "
                            "not decrease."));
@@ -253,10 +274,13 @@ namespace qsmpm
     std::vector<types::global_dof_index> dofs(n_vertices);
     const unsigned int                   n_points = cache.n_points();
     volume.resize(n_points);
+    mobility.resize(n_points);
     fixed_stress.resize(n_points);
     stabilization.resize(n_points);
-    const double h = grid.min_cell_size();
-    stress_scale   = 0.;
+    finite_strain                  = points.get_formulation().finite_strain();
+    const bool   constant_mobility = parameters.mobility_factor == "1";
+    const double h                 = grid.min_cell_size();
+    stress_scale                   = 0.;
 
     const auto                                 &offsets = points.get_offsets();
     const typename PointStateBatch<dim>::Layout layout{
@@ -298,6 +322,19 @@ namespace qsmpm
                                   data[initial_stress_offset + k]));
             stress_scale = std::max(stress_scale, std::abs(data[state_offset]));
             volume[p]    = data[offsets.volume];
+            mobility[p]  = parameters.mobility;
+            if (!constant_mobility)
+              {
+                const double J = data[offsets.J];
+                const double f = mobility_factor.value(Point<1>(J));
+                AssertThrow(f > 0. && std::isfinite(f),
+                            ExcMessage("Pore fluid: <Mobility factor> = <" +
+                                       parameters.mobility_factor + "> is " +
+                                       std::to_string(f) +
+                                       " at J = " + std::to_string(J) +
+                                       "; it must be positive."));
+                mobility[p] *= f;
+              }
             fixed_stress[p]  = parameters.fixed_stress_factor * b * b / K;
             stabilization[p] = parameters.stabilization_factor * h * h / Mc;
             // The iteration starts from the committed pressure (also after
@@ -311,21 +348,12 @@ namespace qsmpm
     stress_scale = Utilities::MPI::max(stress_scale, communicator);
     forces       = stress_scale * std::pow(h, dim - 1) *
              std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
-    // The pressure dofs of the cells with points, once per step.
-    cell_dofs.resize(cache.n_cells() * n_vertices);
-    for (unsigned int c = 0; c < cache.n_cells(); ++c)
-      {
-        const auto &range = cache.cell(c);
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          &tria, range.cell->level(), range.cell->index(), &dof_handler);
-        cell->get_dof_indices(dofs);
-        std::copy(dofs.begin(), dofs.end(), &cell_dofs[c * n_vertices]);
-      }
+    collect_group_dofs(grid, cache);
     // Ghost nodes of other ranks' cells reach the owner by the sum.
     {
       TrilinosWrappers::MPI::Vector sums;
       sums.reinit(owned, relevant, communicator, true);
-      for (const auto dof : cell_dofs)
+      for (const auto dof : group_dofs)
         sums(dof) += 1.;
       sums.compress(VectorOperation::add);
       has_material = sums;
@@ -374,6 +402,14 @@ namespace qsmpm
                                               relevant,
                                               communicator);
     DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
+    // GIMP couples the nodes of the 3^dim cells around a point's cell.
+    if (cache.stencil_size() != n_vertices)
+      for (unsigned int c = 0; c < cache.n_cells(); ++c)
+        {
+          dofs.assign(group_dofs.begin() + group_offsets[c],
+                      group_dofs.begin() + group_offsets[c + 1]);
+          constraints.add_entries_local_to_global(dofs, pattern, false);
+        }
     pattern.compress();
     matrix.reinit(pattern);
 
@@ -381,9 +417,13 @@ namespace qsmpm
     // and the conductance) and the part of the right-hand side that stays
     // the same in all its iterations: the fluxes and, through the matrix,
     // the prescribed pressures.
+    // With linear shape functions a group's nodes are its cell's vertices
+    // in deal.II's order, so that the fluxes of the cell's faces join the
+    // group's right-hand side; with GIMP they are added on their own.
     boundary_rhs.reinit(owned, communicator);
-    FullMatrix<double>    local_matrix(n_vertices, n_vertices);
-    Vector<double>        local_rhs(n_vertices);
+    const bool            vertex_groups = cache.stencil_size() == n_vertices;
+    FullMatrix<double>    local_matrix;
+    Vector<double>        local_rhs, flux_rhs(n_vertices);
     const QGauss<dim - 1> face_quadrature(2);
     FEFaceValues<dim>     face_values(fe,
                                   face_quadrature,
@@ -395,12 +435,27 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         const typename DoFHandler<dim>::active_cell_iterator cell(
           &tria, range.cell->level(), range.cell->index(), &dof_handler);
-        std::copy_n(&cell_dofs[c * n_vertices], n_vertices, dofs.begin());
-        cell_matrix(cache, c, local_matrix);
-        local_rhs = 0.;
-        add_boundary_flux(cell, face_values, local_rhs);
+        dofs.assign(group_dofs.begin() + group_offsets[c],
+                    group_dofs.begin() + group_offsets[c + 1]);
+        group_matrix(cache, c, local_matrix);
+        local_rhs.reinit(dofs.size());
+        if (vertex_groups)
+          add_boundary_flux(cell, face_values, local_rhs);
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, dofs, matrix, boundary_rhs);
+        if (!vertex_groups)
+          {
+            flux_rhs = 0.;
+            add_boundary_flux(cell, face_values, flux_rhs);
+            if (flux_rhs.l2_norm() > 0.)
+              {
+                std::vector<types::global_dof_index> vertex_dofs(n_vertices);
+                cell->get_dof_indices(vertex_dofs);
+                constraints.distribute_local_to_global(flux_rhs,
+                                                       vertex_dofs,
+                                                       boundary_rhs);
+              }
+          }
       }
     matrix.compress(VectorOperation::add);
     boundary_rhs.compress(VectorOperation::add);
@@ -420,27 +475,76 @@ namespace qsmpm
 
   template <int dim>
   void
-  PorePressureSolver<dim>::cell_matrix(const ShapeCache<dim> &cache,
-                                       const unsigned int     c,
-                                       FullMatrix<double>    &matrix) const
+  PorePressureSolver<dim>::collect_group_dofs(const BackgroundGrid<dim> &grid,
+                                              const ShapeCache<dim>     &cache)
   {
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const double           inverse_M =
+    // Node k of a group is the node of its displacement dofs k dim, ...,
+    // k dim + dim - 1 (ShapeCache): the pressure dof of a group node is
+    // found through the vertex that both dofs belong to.
+    const IndexSet &displacement_dofs = grid.locally_relevant_dofs();
+    std::vector<types::global_dof_index> pressure_at(
+      displacement_dofs.n_elements(), numbers::invalid_dof_index);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator
+            displacement_cell(&grid.get_triangulation(),
+                              cell->level(),
+                              cell->index(),
+                              &grid.get_dof_handler());
+          for (const unsigned int v : cell->vertex_indices())
+            pressure_at[displacement_dofs.index_within_set(
+              displacement_cell->vertex_dof_index(v, 0))] =
+              cell->vertex_dof_index(v, 0);
+        }
+
+    group_offsets.resize(cache.n_cells() + 1);
+    group_offsets[0] = 0;
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      group_offsets[c + 1] = group_offsets[c] + cache.n_dofs(c) / dim;
+    group_dofs.resize(group_offsets.back());
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const types::global_dof_index *displacement = cache.global_dofs(c);
+        for (unsigned int k = 0; k < group_offsets[c + 1] - group_offsets[c];
+             ++k)
+          {
+            const types::global_dof_index dof =
+              pressure_at[displacement_dofs.index_within_set(
+                displacement[k * dim])];
+            AssertThrow(dof != numbers::invalid_dof_index, ExcInternalError());
+            group_dofs[group_offsets[c] + k] = dof;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::group_matrix(const ShapeCache<dim> &cache,
+                                        const unsigned int     c,
+                                        FullMatrix<double>    &matrix) const
+  {
+    const double inverse_M =
       parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
     typename ShapeCache<dim>::ValueBuffer    N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const auto                              &range = cache.cell(c);
-    matrix                                         = 0.;
+    const unsigned int n_nodes = group_offsets[c + 1] - group_offsets[c];
+    matrix.reinit(n_nodes, n_nodes);
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         const double         *N     = cache.values(c, p, N_buffer);
         const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+        const unsigned short *nodes = cache.nodes(p);
+        const unsigned int    n     = cache.stencil_size(p);
         const double storage        = volume[p] * (inverse_M + fixed_stress[p]);
         const double conductance =
-          volume[p] * (dt * parameters.mobility + stabilization[p]);
-        for (unsigned int i = 0; i < n_vertices; ++i)
-          for (unsigned int j = 0; j < n_vertices; ++j)
-            matrix(i, j) +=
+          volume[p] * (dt * mobility[p] + stabilization[p]);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            matrix(nodes[i], nodes[j]) +=
               storage * N[i] * N[j] + conductance * (gradN[i] * gradN[j]);
       }
   }
@@ -483,11 +587,10 @@ namespace qsmpm
     MaterialPointSet<dim>               &points,
     const TrilinosWrappers::MPI::Vector &du_ghosted)
   {
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const double           inverse_M =
+    const double inverse_M =
       parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
-    std::vector<types::global_dof_index>     dofs(n_vertices);
-    Vector<double>                           cell_rhs(n_vertices);
+    std::vector<types::global_dof_index>     dofs;
+    Vector<double>                           group_rhs;
     typename ShapeCache<dim>::ValueBuffer    N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const double *du = du_ghosted.trilinos_vector()[0];
@@ -496,17 +599,32 @@ namespace qsmpm
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
-        std::copy_n(&cell_dofs[c * n_vertices], n_vertices, dofs.begin());
+        dofs.assign(group_dofs.begin() + group_offsets[c],
+                    group_dofs.begin() + group_offsets[c + 1]);
         const int *local = cache.local_dofs(c);
-        cell_rhs         = 0.;
+        group_rhs.reinit(dofs.size());
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *N     = cache.values(c, p, N_buffer);
             const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
-            double                eps_v = 0.;
-            for (unsigned int k = 0; k < n_vertices; ++k)
-              for (unsigned int d = 0; d < dim; ++d)
-                eps_v += gradN[k][d] * du[local[k * dim + d]];
+            const unsigned short *nodes = cache.nodes(p);
+            const unsigned int    n     = cache.stencil_size(p);
+            // The volume change of the step over the volume at its start:
+            // tr(grad du) at small strain, det(I + grad du) - 1 at finite
+            // strain.
+            double eps_v = 0.;
+            if (finite_strain)
+              {
+                Tensor<2, dim> delta_F = unit_symmetric_tensor<dim>();
+                for (unsigned int k = 0; k < n; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    delta_F[d] += du[local[nodes[k] * dim + d]] * gradN[k];
+                eps_v = determinant(delta_F) - 1.;
+              }
+            else
+              for (unsigned int k = 0; k < n; ++k)
+                for (unsigned int d = 0; d < dim; ++d)
+                  eps_v += gradN[k][d] * du[local[nodes[k] * dim + d]];
             const double  *state = cache.properties(p) + state_offset;
             Tensor<1, dim> grad_p_n;
             for (unsigned int d = 0; d < dim; ++d)
@@ -514,11 +632,12 @@ namespace qsmpm
             const double source =
               volume[p] *
               (inverse_M * state[0] + fixed_stress[p] * state[1] - b * eps_v);
-            for (unsigned int i = 0; i < n_vertices; ++i)
-              cell_rhs(i) += source * N[i] + volume[p] * stabilization[p] *
-                                               (gradN[i] * grad_p_n);
+            for (unsigned int i = 0; i < n; ++i)
+              group_rhs(nodes[i]) += source * N[i] + volume[p] *
+                                                       stabilization[p] *
+                                                       (gradN[i] * grad_p_n);
           }
-        constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
+        constraints.distribute_local_to_global(group_rhs, dofs, rhs);
       }
     rhs.compress(VectorOperation::add);
     rhs += boundary_rhs;
@@ -536,22 +655,24 @@ namespace qsmpm
     p_ghosted = p_owned;
 
     // The new iterate at the points.
+    std::vector<double> nodal;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
-        double      nodal[n_vertices];
-        for (unsigned int k = 0; k < n_vertices; ++k)
-          nodal[k] = p_ghosted(cell_dofs[c * n_vertices + k]);
+        nodal.resize(group_offsets[c + 1] - group_offsets[c]);
+        for (unsigned int k = 0; k < nodal.size(); ++k)
+          nodal[k] = p_ghosted(group_dofs[group_offsets[c] + k]);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *N     = cache.values(c, p, N_buffer);
             const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+            const unsigned short *nodes = cache.nodes(p);
             double                value = 0.;
             Tensor<1, dim>        gradient;
-            for (unsigned int k = 0; k < n_vertices; ++k)
+            for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
               {
-                value += N[k] * nodal[k];
-                gradient += nodal[k] * gradN[k];
+                value += N[k] * nodal[nodes[k]];
+                gradient += nodal[nodes[k]] * gradN[k];
               }
             double *state = cache.properties(p, points) + state_offset;
             state[1]      = value;

@@ -127,10 +127,20 @@ namespace qsmpm
                                   stress,
                                   ArrayView<double>(new_state.data(),
                                                     n_skeleton));
-    // The pressure of the current iterate acts on the new total stress, and
-    // becomes the committed one: p_n <- p_k, grad p_n <- grad p_k.
-    const double *p = old.state.data() + n_skeleton;
-    stress -= b * p[1] * unit_symmetric_tensor<dim>();
+    // The pressure of the current iterate acts on the new total stress.
+    stress -= b * old.state[n_skeleton + 1] * unit_symmetric_tensor<dim>();
+    write_pressure_state(old, new_state);
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::write_pressure_state(const PointState<dim> &old,
+                                              ArrayView<double> new_state) const
+  {
+    // p_n <- p_k, grad p_n <- grad p_k.
+    const double *p           = old.state.data() + n_skeleton;
     new_state[n_skeleton]     = p[1];
     new_state[n_skeleton + 1] = p[1];
     for (unsigned int d = 0; d < dim; ++d)
@@ -162,6 +172,53 @@ namespace qsmpm
   {
     return skeleton_model->consistent_tangent(skeleton_state(old),
                                               strain_increment);
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::supports_finite_strain() const
+  {
+    return skeleton_model->supports_finite_strain();
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::update_kirchhoff_stress(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    SymmetricTensor<2, dim>           &tau,
+    ArrayView<double>                  new_state) const
+  {
+    skeleton_model->update_kirchhoff_stress(skeleton_state(old),
+                                            kinematics,
+                                            tau,
+                                            ArrayView<double>(new_state.data(),
+                                                              n_skeleton));
+    tau -= determinant(kinematics.F) * b * old.state[n_skeleton + 1] *
+           unit_symmetric_tensor<dim>();
+    write_pressure_state(old, new_state);
+  }
+
+
+
+  template <int dim>
+  Tensor<4, dim>
+  PoroelasticModel<dim>::kirchhoff_tangent(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
+    Tensor<4, dim> c =
+      skeleton_model->kirchhoff_tangent(skeleton_state(old), kinematics);
+    const double scale =
+      determinant(kinematics.F) * b * old.state[n_skeleton + 1];
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int k = 0; k < dim; ++k)
+        c[i][i][k][k] -= scale;
+    return c;
   }
 
 

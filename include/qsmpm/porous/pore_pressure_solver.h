@@ -35,9 +35,11 @@ namespace qsmpm
    *   b d(eps_v) + (p - p_n) / M + dt div q = 0,
    *
    * b the Biot coefficient, M the Biot modulus (1/M = 0: incompressible
-   * grains and fluid), d(eps_v) = tr d(eps) the volume change of the step.
-   * Its weak form is integrated with the material points as quadrature
-   * points, with the grid's Q1 functions N_i for the pressure: row i,
+   * grains and fluid), d(eps_v) the volume change of the step over the
+   * volume at its start. Its weak form is integrated with the material
+   * points as quadrature points, with the grid's shape functions N_i (Q1,
+   * or the GIMP weights of the points, as for the displacement) for the
+   * pressure: row i,
    *
    *   sum_p Omega_p [ N_i (b d(eps_v) + (p - p_n) / M)
    *                  + dt kappa grad N_i . grad p
@@ -49,10 +51,25 @@ namespace qsmpm
    * for isotropic elasticity) and f the entry "Stabilization factor" (1/4
    * by default: on Terzaghi's column it removes the overshoot of 32 % after
    * a sudden load, test terzaghi_consolidation). The point
-   * carries p_n and grad p_n (PoroelasticModel); nodes whose support holds
-   * no point have p = 0 (a free surface inside the grid drains, within a
-   * cell), and so do the nodes on the "Drained boundaries". Other boundaries
-   * are impermeable.
+   * carries p_n and grad p_n (PoroelasticModel). The nodes on the "Drained
+   * boundaries" of the grid have the prescribed pressure. Nodes whose
+   * support holds no point have p = 0, but no point couples them to the
+   * body: the body's other surfaces, on the grid's boundary or inside the
+   * grid, are impermeable.
+   *
+   * <h3>Finite strain</h3>
+   * With `Kinematics = finite strain` the grid moves with the body within
+   * a step, as for the displacement: the equation is integrated over the
+   * configuration at the start of the step (the points' volumes Omega_p
+   * and shape function gradients there), the volume change of the step is
+   * d(eps_v) = det(I + grad du) - 1, exact for any step, and kappa_p =
+   * kappa f(J_p) with J_p = det F at the start of the step ("Mobility
+   * factor"). Taking the geometry and the mobility at the start of the step
+   * is an error of first order in the step, like implicit Euler's. The
+   * skeleton's Kirchhoff stress carries the pressure as tau' - J b p I
+   * (PoroelasticModel). Verified against the large-strain consolidation
+   * of a column (Gibson, England and Hussey 1967; test
+   * large_strain_consolidation).
    *
    * <h3>Fixed-stress split</h3>
    * Within a load step the mechanical problem (with p as data) and the
@@ -76,6 +93,7 @@ namespace qsmpm
       double                    biot_coefficient = 1.;
       double                    biot_modulus     = 0.;
       double                    mobility         = 1.;
+      std::string               mobility_factor  = "1";
       double                    initial_pressure = 0.;
       std::vector<unsigned int> drained_boundaries;
       std::string               boundary_pressure = "0";
@@ -159,11 +177,16 @@ namespace qsmpm
     }
 
   private:
-    /// The matrix of the flow problem on cell @p c of the cache.
+    /// Find the pressure dofs of the nodes of each group of @p cache.
     void
-    cell_matrix(const ShapeCache<dim> &cache,
-                const unsigned int     c,
-                FullMatrix<double>    &matrix) const;
+    collect_group_dofs(const BackgroundGrid<dim> &grid,
+                       const ShapeCache<dim>     &cache);
+
+    /// The matrix of the flow problem on group @p c of the cache.
+    void
+    group_matrix(const ShapeCache<dim> &cache,
+                 const unsigned int     c,
+                 FullMatrix<double>    &matrix) const;
 
     /// Add -dt int N_i q.n over the faces of @p cell on the flux boundaries.
     void
@@ -176,6 +199,10 @@ namespace qsmpm
     /// The pressure on the drained boundaries and the outward flux on the
     /// flux boundaries, functions of x and t.
     FunctionParser<dim> boundary_pressure, boundary_flux;
+    /// The factor of the mobility, a function of J.
+    FunctionParser<1> mobility_factor;
+    /// Whether the points' kinematics is finite strain.
+    bool finite_strain = false;
     /// The length of the step (the load factor is the time).
     double                            dt = 0.;
     MPI_Comm                          communicator;
@@ -189,10 +216,14 @@ namespace qsmpm
     /// The part of the right-hand side that is the same for all iterations
     /// of a step: the fluxes and the prescribed pressures.
     TrilinosWrappers::MPI::Vector boundary_rhs;
-    /// The pressure dofs of the cells of the cache, 2^dim per cell.
-    std::vector<types::global_dof_index> cell_dofs;
-    /// Per point of the cache: Omega_p, L_p and beta_p of the step.
-    std::vector<double> volume, fixed_stress, stabilization;
+    /// The pressure dofs of the nodes of the cache's groups (the cell's
+    /// 2^dim vertices with linear shape functions, the nodes its points
+    /// reach with GIMP): those of group c are [group_offsets[c],
+    /// group_offsets[c + 1]).
+    std::vector<types::global_dof_index> group_dofs;
+    std::vector<unsigned int>            group_offsets;
+    /// Per point of the cache: Omega_p, kappa_p, L_p and beta_p of the step.
+    std::vector<double> volume, mobility, fixed_stress, stabilization;
     unsigned int        state_offset = 0;
     /// Offset of the points' initial total stress in their properties.
     unsigned int initial_stress_offset = 0;

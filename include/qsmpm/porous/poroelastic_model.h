@@ -111,6 +111,30 @@ namespace qsmpm
       const PointState<dim>         &old,
       const SymmetricTensor<2, dim> &strain_increment) const override;
 
+    /// The skeleton's.
+    bool
+    supports_finite_strain() const override;
+
+    /**
+     * Finite strain: the Kirchhoff stress tau = tau' - J b p I, with tau'
+     * the skeleton's and J = det F (the Cauchy stress is sigma' - b p I, as
+     * at small strain).
+     */
+    void
+    update_kirchhoff_stress(const PointState<dim>             &old,
+                            const FiniteStrainKinematics<dim> &kinematics,
+                            SymmetricTensor<2, dim>           &tau,
+                            ArrayView<double> new_state) const override;
+
+    /**
+     * The skeleton's tangent minus that of J b p I at fixed p:
+     * c_ijkl - J b p delta_ij delta_kl (dJ = J tr dl).
+     */
+    Tensor<4, dim>
+    kirchhoff_tangent(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const override;
+
     double
     dissipation(const PointState<dim>  &old,
                 ArrayView<const double> new_state) const override;
@@ -128,6 +152,15 @@ namespace qsmpm
     /// The skeleton's view of a point: effective stress, its own fields.
     PointState<dim>
     skeleton_state(const PointState<dim> &point) const;
+
+    /**
+     * The pressure fields of the trial state: the current iterate p_k (and
+     * its gradient) becomes the committed pressure; the initial total
+     * stress is kept.
+     */
+    void
+    write_pressure_state(const PointState<dim> &old,
+                         ArrayView<double>      new_state) const;
 
     std::unique_ptr<ConstitutiveModel<dim>> skeleton_model;
     const double                            b;
