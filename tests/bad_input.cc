@@ -183,6 +183,14 @@ main(int argc, char *argv[])
   try_input("mobility factor that is no expression",
             "Mobility factor",
             pore_fluid + "  set Mobility factor = J^^2\nend\n");
+  try_input("drained surface region that is no expression",
+            "Drained surface region",
+            pore_fluid + "  set Drained surface region = y >> 1\nend\n");
+  try_input("drained surface region on no face of the body",
+            "Drained surface region",
+            pore_fluid + "  set Drained surface region = y > 5\nend\n" +
+              run_briefly + "end\n",
+            /*run=*/true);
   try_input("mobility factor that is not positive",
             "Mobility factor",
             pore_fluid + "  set Mobility factor = J - 2\nend\n" + run_briefly +

@@ -1,3 +1,5 @@
+#include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <qsmpm/base/utilities.h>
@@ -131,6 +133,39 @@ namespace qsmpm
 
 
   template <int dim>
+  unsigned int
+  QuasiStaticProblem<dim>::drained_surface_condition()
+  {
+    // The points find the drained faces of the body's surface as those of
+    // a surface traction (SurfaceTractions::mark()), one without load.
+    const std::string region = prm_values.pore_fluid.drained_surface_region;
+    const std::string name   = "Pore fluid/Drained surface region = " + region;
+    const auto       &conditions = bcs.surface_tractions();
+    for (unsigned int k = 0; k < conditions.size(); ++k)
+      if (conditions[k].name == name)
+        return k;
+    auto selector = std::make_shared<FunctionParser<dim>>(1);
+    try
+      {
+        selector->initialize(dim == 2 ? "x,y" : "x,y,z", region, {});
+        selector->value(Point<dim>());
+      }
+    catch (const std::exception &exc)
+      {
+        AssertThrow(false,
+                    ExcMessage("Pore fluid: <Drained surface region> = <" +
+                               region + ">: " + Utils::error_message(exc)));
+      }
+    bcs.add_surface_traction(
+      name,
+      [selector](const Point<dim> &x) { return selector->value(x) != 0.; },
+      std::make_shared<Functions::ZeroFunction<dim>>(dim));
+    return conditions.size() - 1;
+  }
+
+
+
+  template <int dim>
   void
   QuasiStaticProblem<dim>::set_model(
     std::unique_ptr<ConstitutiveModel<dim>> new_model)
@@ -162,6 +197,8 @@ namespace qsmpm
                                                   pore_fluid.initial_pressure);
         pore_pressure =
           std::make_unique<PorePressureSolver<dim>>(pore_fluid, communicator);
+        if (!pore_fluid.drained_surface_region.empty())
+          pore_pressure->set_drained_surface(drained_surface_condition());
       }
     material_points = std::make_unique<MaterialPointSet<dim>>(
       background_grid,

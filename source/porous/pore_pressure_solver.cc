@@ -72,6 +72,25 @@ namespace qsmpm
                         "p on the drained boundaries: an expression in x, y "
                         "(z) and the time t.",
                         Patterns::Anything());
+      prm.add_parameter(
+        "Drained surface region",
+        drained_surface_region,
+        "Where the body's own surface is drained, at the pressure "
+        "<Boundary pore pressure>: an expression in x, y (z), non-zero on "
+        "the drained part of the initial surface (found from the points as "
+        "for Boundary conditions/Surface traction region), e.g. 'y > 9.99'. "
+        "The surface follows the body, at small and finite strain: a free "
+        "surface inside the grid, or one that settles away from a grid "
+        "face. The pressure is held there by a penalty (<Drained surface "
+        "penalty>). Empty: none.",
+        Patterns::Anything());
+      prm.add_parameter(
+        "Drained surface penalty",
+        drained_surface_penalty,
+        "f of the penalty gamma = f kappa / h of the drained surface: the "
+        "surface passes the flux gamma (p - p_b), so that p exceeds p_b by "
+        "the flux times h / (f kappa), 1/f of a cell's pressure drop.",
+        Patterns::Double(0.));
       prm.add_parameter("Flux boundaries",
                         flux_boundaries,
                         "Boundary ids of the grid through which the fluid "
@@ -280,6 +299,7 @@ namespace qsmpm
     finite_strain                  = points.get_formulation().finite_strain();
     const bool   constant_mobility = parameters.mobility_factor == "1";
     const double h                 = grid.min_cell_size();
+    cell_size                      = h;
     stress_scale                   = 0.;
 
     const auto                                 &offsets = points.get_offsets();
@@ -421,15 +441,18 @@ namespace qsmpm
     // in deal.II's order, so that the fluxes of the cell's faces join the
     // group's right-hand side; with GIMP they are added on their own.
     boundary_rhs.reinit(owned, communicator);
-    const bool            vertex_groups = cache.stencil_size() == n_vertices;
-    FullMatrix<double>    local_matrix;
-    Vector<double>        local_rhs, flux_rhs(n_vertices);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEFaceValues<dim>     face_values(fe,
+    const bool         vertex_groups = cache.stencil_size() == n_vertices;
+    FullMatrix<double> local_matrix;
+    Vector<double>     local_rhs, flux_rhs(n_vertices);
+    FullMatrix<double> surface_matrix(n_vertices, n_vertices);
+    std::vector<types::global_dof_index> vertex_dofs(n_vertices);
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    face_values(fe,
                                   face_quadrature,
                                   update_values | update_quadrature_points |
                                     update_JxW_values);
     boundary_flux.set_time(t_new);
+    boundary_pressure.set_time(t_new);
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
@@ -443,18 +466,19 @@ namespace qsmpm
           add_boundary_flux(cell, face_values, local_rhs);
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, dofs, matrix, boundary_rhs);
+        // The fluxes with GIMP, and the drained surface: on the cell's
+        // vertices.
+        flux_rhs = 0.;
         if (!vertex_groups)
+          add_boundary_flux(cell, face_values, flux_rhs);
+        surface_matrix = 0.;
+        if (drained_surface != numbers::invalid_unsigned_int)
+          add_drained_surface(cache, points, c, surface_matrix, flux_rhs);
+        if (flux_rhs.l2_norm() > 0. || surface_matrix.frobenius_norm() > 0.)
           {
-            flux_rhs = 0.;
-            add_boundary_flux(cell, face_values, flux_rhs);
-            if (flux_rhs.l2_norm() > 0.)
-              {
-                std::vector<types::global_dof_index> vertex_dofs(n_vertices);
-                cell->get_dof_indices(vertex_dofs);
-                constraints.distribute_local_to_global(flux_rhs,
-                                                       vertex_dofs,
-                                                       boundary_rhs);
-              }
+            cell->get_dof_indices(vertex_dofs);
+            constraints.distribute_local_to_global(
+              surface_matrix, flux_rhs, vertex_dofs, matrix, boundary_rhs);
           }
       }
     matrix.compress(VectorOperation::add);
@@ -546,6 +570,69 @@ namespace qsmpm
           for (unsigned int j = 0; j < n; ++j)
             matrix(nodes[i], nodes[j]) +=
               storage * N[i] * N[j] + conductance * (gradN[i] * gradN[j]);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::add_drained_surface(
+    const ShapeCache<dim>       &cache,
+    const MaterialPointSet<dim> &points,
+    const unsigned int           c,
+    FullMatrix<double>          &matrix,
+    Vector<double>              &cell_rhs) const
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const auto            &offsets    = points.get_offsets();
+    const unsigned int     area_offset =
+      offsets.surface_load + drained_surface * (2 * dim + 1);
+    const auto    &range = cache.cell(c);
+    Tensor<2, dim> jacobian;
+    AssertThrow(BackgroundGrid<dim>::affine_map(range.cell, jacobian),
+                ExcMessage("Pore fluid: <Drained surface region> needs a grid "
+                           "of parallelogram cells."));
+    const Tensor<2, dim> inverse = invert(jacobian);
+    const Point<dim>    &origin  = range.cell->vertex(0);
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const double *data = cache.properties(p);
+        const double  A_0  = data[area_offset];
+        if (A_0 == 0.)
+          continue;
+        // The faces' centre x_f = x_p + F D (D the area-weighted offset of
+        // the point's drained faces in the initial configuration) and their
+        // current area |n da|.
+        Tensor<1, dim> D, a;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            a[d] = data[area_offset + 1 + d];
+            D[d] = data[area_offset + 1 + dim + d] / A_0;
+          }
+        if (finite_strain)
+          D = Utils::read_tensor<dim>(data + offsets.deformation_gradient) * D;
+        const Point<dim> x_f = cache.position(p) + D;
+        // The Q1 functions of the point's cell at x_f (extended beyond the
+        // cell where x_f lies just outside it).
+        const Tensor<1, dim>           xi = inverse * (x_f - origin);
+        std::array<double, n_vertices> N;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            N[v] = 1.;
+            for (unsigned int d = 0; d < dim; ++d)
+              N[v] *= ((v >> d) & 1) ? xi[d] : 1. - xi[d];
+          }
+        const double area  = finite_strain ? a.norm() : A_0;
+        const double gamma = parameters.drained_surface_penalty * mobility[p] /
+                             cell_size * dt * area;
+        const double p_b = boundary_pressure.value(x_f);
+        for (unsigned int i = 0; i < n_vertices; ++i)
+          {
+            cell_rhs(i) += gamma * N[i] * p_b;
+            for (unsigned int j = 0; j < n_vertices; ++j)
+              matrix(i, j) += gamma * N[i] * N[j];
+          }
       }
   }
 

@@ -290,6 +290,14 @@ namespace qsmpm
     timer();
 
   private:
+    /**
+     * The index among the surface tractions of the condition without load
+     * that marks the faces of Pore fluid/Drained surface region (added to
+     * the boundary conditions on the first call).
+     */
+    unsigned int
+    drained_surface_condition();
+
     /// Residual, preconditioner and vectors for the grid's degrees of
     /// freedom (made again after resume()).
     void

@@ -52,10 +52,13 @@ namespace qsmpm
    * by default: on Terzaghi's column it removes the overshoot of 32 % after
    * a sudden load, test terzaghi_consolidation). The point
    * carries p_n and grad p_n (PoroelasticModel). The nodes on the "Drained
-   * boundaries" of the grid have the prescribed pressure. Nodes whose
-   * support holds no point have p = 0, but no point couples them to the
-   * body: the body's other surfaces, on the grid's boundary or inside the
-   * grid, are impermeable.
+   * boundaries" of the grid have the prescribed pressure. The points on
+   * the body's own "Drained surface region" (set_drained_surface()) add
+   * the flux dt gamma A_p N_i(x_f) (p(x_f) - p_b) through their faces
+   * (centre x_f, current area A_p, both moving with the point), gamma =
+   * f kappa_p / h, a penalty. Nodes whose support holds no point have
+   * p = 0, but no point couples them to the body: the body's other
+   * surfaces, on the grid's boundary or inside the grid, are impermeable.
    *
    * <h3>Finite strain</h3>
    * With `Kinematics = finite strain` the grid moves with the body within
@@ -97,6 +100,10 @@ namespace qsmpm
       double                    initial_pressure = 0.;
       std::vector<unsigned int> drained_boundaries;
       std::string               boundary_pressure = "0";
+      /// Expression in x, y (z) non-zero on the drained part of the body's
+      /// initial surface (empty: none).
+      std::string               drained_surface_region;
+      double                    drained_surface_penalty = 100.;
       std::vector<unsigned int> flux_boundaries;
       std::string               boundary_flux           = "0";
       double                    stabilization_factor    = 0.25;
@@ -148,6 +155,18 @@ namespace qsmpm
       return p_ghosted;
     }
 
+    /**
+     * Drain the surface of condition @p index of the points' surface loads
+     * (MaterialPointSet::Offsets::surface_load; a condition without load
+     * that marks the faces of "Drained surface region", added to the
+     * problem's BoundaryDescriptor before the points are made).
+     */
+    void
+    set_drained_surface(const unsigned int index)
+    {
+      drained_surface = index;
+    }
+
     /// The pressure's degrees of freedom.
     const DoFHandler<dim> &
     get_dof_handler() const
@@ -188,6 +207,18 @@ namespace qsmpm
                  const unsigned int     c,
                  FullMatrix<double>    &matrix) const;
 
+    /**
+     * Add the penalty dt gamma A_p N_i(x_f) (p(x_f) - p_b) of the drained
+     * surface points of group @p c (cell @p cell) to @p matrix and
+     * @p cell_rhs (2^dim vertices of the cell).
+     */
+    void
+    add_drained_surface(const ShapeCache<dim>       &cache,
+                        const MaterialPointSet<dim> &points,
+                        const unsigned int           c,
+                        FullMatrix<double>          &matrix,
+                        Vector<double>              &cell_rhs) const;
+
     /// Add -dt int N_i q.n over the faces of @p cell on the flux boundaries.
     void
     add_boundary_flux(
@@ -203,6 +234,10 @@ namespace qsmpm
     FunctionParser<1> mobility_factor;
     /// Whether the points' kinematics is finite strain.
     bool finite_strain = false;
+    /// set_drained_surface() (invalid: none).
+    unsigned int drained_surface = numbers::invalid_unsigned_int;
+    /// The smallest cell size of the grid.
+    double cell_size = 0.;
     /// The length of the step (the load factor is the time).
     double                            dt = 0.;
     MPI_Comm                          communicator;
