@@ -198,7 +198,8 @@ namespace qsmpm
         pore_pressure =
           std::make_unique<PorePressureSolver<dim>>(pore_fluid, communicator);
         if (!pore_fluid.drained_surface_region.empty())
-          pore_pressure->set_drained_surface(drained_surface_condition());
+          pore_pressure->set_drained_surface(drained_surface_condition(),
+                                             surface_tractions);
       }
     material_points = std::make_unique<MaterialPointSet<dim>>(
       background_grid,

@@ -365,7 +365,7 @@ namespace qsmpm
               dof_cell->get_dof_indices(dofs);
               const Point<dim> xi =
                 GeometryInfo<dim>::project_to_unit_cell(found.second);
-              loads.push_back({c, p, k, (unsigned int)load_dofs.size()});
+              loads.push_back({c, p, k, (unsigned int)load_dofs.size(), x_f});
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   const unsigned int component =
@@ -421,6 +421,27 @@ namespace qsmpm
             force[d] = traction[d] * area;
           spread(load, force, values, f_ext);
         }
+  }
+
+
+
+  template <int dim>
+  void
+  SurfaceTractions<dim>::for_each_load(
+    const unsigned int                                         k,
+    const std::function<void(const unsigned int             point,
+                             const Point<dim>              &x_f,
+                             const types::global_dof_index *dofs,
+                             const double                  *values,
+                             const unsigned int *components)> &action) const
+  {
+    for (const Load &load : loads)
+      if (load.condition == k)
+        action(load.point,
+               load.face_centre,
+               &load_dofs[load.first],
+               &load_values[load.first],
+               &load_components[load.first]);
   }
 
 

@@ -444,7 +444,6 @@ namespace qsmpm
     const bool         vertex_groups = cache.stencil_size() == n_vertices;
     FullMatrix<double> local_matrix;
     Vector<double>     local_rhs, flux_rhs(n_vertices);
-    FullMatrix<double> surface_matrix(n_vertices, n_vertices);
     std::vector<types::global_dof_index> vertex_dofs(n_vertices);
     const QGauss<dim - 1>                face_quadrature(2);
     FEFaceValues<dim>                    face_values(fe,
@@ -466,21 +465,21 @@ namespace qsmpm
           add_boundary_flux(cell, face_values, local_rhs);
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, dofs, matrix, boundary_rhs);
-        // The fluxes with GIMP, and the drained surface: on the cell's
-        // vertices.
-        flux_rhs = 0.;
         if (!vertex_groups)
-          add_boundary_flux(cell, face_values, flux_rhs);
-        surface_matrix = 0.;
-        if (drained_surface != numbers::invalid_unsigned_int)
-          add_drained_surface(cache, points, c, surface_matrix, flux_rhs);
-        if (flux_rhs.l2_norm() > 0. || surface_matrix.frobenius_norm() > 0.)
           {
-            cell->get_dof_indices(vertex_dofs);
-            constraints.distribute_local_to_global(
-              surface_matrix, flux_rhs, vertex_dofs, matrix, boundary_rhs);
+            flux_rhs = 0.;
+            add_boundary_flux(cell, face_values, flux_rhs);
+            if (flux_rhs.l2_norm() > 0.)
+              {
+                cell->get_dof_indices(vertex_dofs);
+                constraints.distribute_local_to_global(flux_rhs,
+                                                       vertex_dofs,
+                                                       boundary_rhs);
+              }
           }
       }
+    if (drained_surface != numbers::invalid_unsigned_int)
+      add_drained_surface(cache, points);
     matrix.compress(VectorOperation::add);
     boundary_rhs.compress(VectorOperation::add);
 
@@ -505,9 +504,10 @@ namespace qsmpm
     // Node k of a group is the node of its displacement dofs k dim, ...,
     // k dim + dim - 1 (ShapeCache): the pressure dof of a group node is
     // found through the vertex that both dofs belong to.
-    const IndexSet &displacement_dofs = grid.locally_relevant_dofs();
-    std::vector<types::global_dof_index> pressure_at(
-      displacement_dofs.n_elements(), numbers::invalid_dof_index);
+    relevant_displacement             = grid.locally_relevant_dofs();
+    const IndexSet &displacement_dofs = relevant_displacement;
+    pressure_at.assign(displacement_dofs.n_elements(),
+                       numbers::invalid_dof_index);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         {
@@ -579,61 +579,52 @@ namespace qsmpm
   void
   PorePressureSolver<dim>::add_drained_surface(
     const ShapeCache<dim>       &cache,
-    const MaterialPointSet<dim> &points,
-    const unsigned int           c,
-    FullMatrix<double>          &matrix,
-    Vector<double>              &cell_rhs) const
+    const MaterialPointSet<dim> &points)
   {
+    // SurfaceTractions has found each point's faces' centre x_f and the Q1
+    // values there, on the displacement dofs of the cell that carries its
+    // load; its component-0 dofs are the cell's vertices.
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const auto            &offsets    = points.get_offsets();
     const unsigned int     area_offset =
-      offsets.surface_load + drained_surface * (2 * dim + 1);
-    const auto    &range = cache.cell(c);
-    Tensor<2, dim> jacobian;
-    AssertThrow(BackgroundGrid<dim>::affine_map(range.cell, jacobian),
-                ExcMessage("Pore fluid: <Drained surface region> needs a grid "
-                           "of parallelogram cells."));
-    const Tensor<2, dim> inverse = invert(jacobian);
-    const Point<dim>    &origin  = range.cell->vertex(0);
-    for (unsigned int p = range.first_point; p < range.end_point; ++p)
-      {
-        const double *data = cache.properties(p);
-        const double  A_0  = data[area_offset];
-        if (A_0 == 0.)
-          continue;
-        // The faces' centre x_f = x_p + F D (D the area-weighted offset of
-        // the point's drained faces in the initial configuration) and their
-        // current area |n da|.
-        Tensor<1, dim> D, a;
+      points.get_offsets().surface_load + drained_surface * (2 * dim + 1);
+    FullMatrix<double>                   local_matrix(n_vertices, n_vertices);
+    Vector<double>                       local_rhs(n_vertices);
+    std::vector<types::global_dof_index> dofs(n_vertices);
+    std::array<double, n_vertices>       N;
+    surface_tractions->for_each_load(
+      drained_surface,
+      [&](const unsigned int             p,
+          const Point<dim>              &x_f,
+          const types::global_dof_index *displacement,
+          const double                  *values,
+          const unsigned int            *components) {
+        unsigned int v = 0;
+        for (unsigned int i = 0; i < n_vertices * dim; ++i)
+          if (components[i] == 0)
+            {
+              dofs[v] = pressure_at[relevant_displacement.index_within_set(
+                displacement[i])];
+              N[v]    = values[i];
+              ++v;
+            }
+        // The current area |n da| (A_0 at small strain).
+        const double  *data = cache.properties(p);
+        Tensor<1, dim> a;
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            a[d] = data[area_offset + 1 + d];
-            D[d] = data[area_offset + 1 + dim + d] / A_0;
-          }
-        if (finite_strain)
-          D = Utils::read_tensor<dim>(data + offsets.deformation_gradient) * D;
-        const Point<dim> x_f = cache.position(p) + D;
-        // The Q1 functions of the point's cell at x_f (extended beyond the
-        // cell where x_f lies just outside it).
-        const Tensor<1, dim>           xi = inverse * (x_f - origin);
-        std::array<double, n_vertices> N;
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            N[v] = 1.;
-            for (unsigned int d = 0; d < dim; ++d)
-              N[v] *= ((v >> d) & 1) ? xi[d] : 1. - xi[d];
-          }
-        const double area  = finite_strain ? a.norm() : A_0;
+          a[d] = data[area_offset + 1 + d];
+        const double area  = finite_strain ? a.norm() : data[area_offset];
         const double gamma = parameters.drained_surface_penalty * mobility[p] /
                              cell_size * dt * area;
         const double p_b = boundary_pressure.value(x_f);
         for (unsigned int i = 0; i < n_vertices; ++i)
           {
-            cell_rhs(i) += gamma * N[i] * p_b;
+            local_rhs(i) = gamma * N[i] * p_b;
             for (unsigned int j = 0; j < n_vertices; ++j)
-              matrix(i, j) += gamma * N[i] * N[j];
+              local_matrix(i, j) = gamma * N[i] * N[j];
           }
-      }
+        constraints.distribute_local_to_global(
+          local_matrix, local_rhs, dofs, matrix, boundary_rhs);
+      });
   }
 
 

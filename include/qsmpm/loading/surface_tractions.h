@@ -3,6 +3,7 @@
 
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <memory>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
@@ -121,6 +122,23 @@ namespace qsmpm
     add_pressure_forces(const VectorType &du, VectorType &R) const;
 
     /**
+     * For each point of condition @p k in this step (reinit_step()):
+     * @p action(point, x_f, dofs, values, components) with the point's index
+     * in the ShapeCache, the centre x_f of its faces, and the
+     * dofs_per_cell dofs of the cell whose Q1 functions carry its load with
+     * N_i(x_f) and the component of each. A drained surface of a pore fluid
+     * (PorePressureSolver) is such a condition without load.
+     */
+    void
+    for_each_load(
+      const unsigned int                                         k,
+      const std::function<void(const unsigned int             point,
+                               const Point<dim>              &x_f,
+                               const types::global_dof_index *dofs,
+                               const double                  *values,
+                               const unsigned int *components)> &action) const;
+
+    /**
      * Store the current area vectors of the converged increment
      * @p du_ghosted (with the layout of reinit_step()) on the points.
      */
@@ -170,6 +188,8 @@ namespace qsmpm
       unsigned int point;
       unsigned int condition;
       unsigned int first;
+      /// The centre x_f of the point's loaded faces.
+      Point<dim> face_centre;
     };
 
     /// The step's data (reinit_step()).

@@ -14,6 +14,7 @@
 #include <deal.II/lac/vector.h>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
+#include <qsmpm/loading/surface_tractions.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
 #include <qsmpm/porous/poroelastic_model.h>
@@ -55,7 +56,8 @@ namespace qsmpm
    * boundaries" of the grid have the prescribed pressure. The points on
    * the body's own "Drained surface region" (set_drained_surface()) add
    * the flux dt gamma A_p N_i(x_f) (p(x_f) - p_b) through their faces
-   * (centre x_f, current area A_p, both moving with the point), gamma =
+   * (centre x_f, current area A_p, both moving with the point; x_f and
+   * N_i(x_f) are those SurfaceTractions finds for a load there), gamma =
    * f kappa_p / h, a penalty. Nodes whose support holds no point have
    * p = 0, but no point couples them to the body: the body's other
    * surfaces, on the grid's boundary or inside the grid, are impermeable.
@@ -156,15 +158,19 @@ namespace qsmpm
     }
 
     /**
-     * Drain the surface of condition @p index of the points' surface loads
-     * (MaterialPointSet::Offsets::surface_load; a condition without load
-     * that marks the faces of "Drained surface region", added to the
-     * problem's BoundaryDescriptor before the points are made).
+     * Drain the surface of condition @p index of @p tractions (a condition
+     * without load that marks the faces of "Drained surface region", added
+     * to the problem's BoundaryDescriptor before the points are made): its
+     * points and the Q1 values at their faces' centres, which @p tractions
+     * finds in each step before begin_step(). @p tractions must outlive
+     * this object.
      */
     void
-    set_drained_surface(const unsigned int index)
+    set_drained_surface(const unsigned int           index,
+                        const SurfaceTractions<dim> &tractions)
     {
-      drained_surface = index;
+      drained_surface   = index;
+      surface_tractions = &tractions;
     }
 
     /// The pressure's degrees of freedom.
@@ -209,15 +215,11 @@ namespace qsmpm
 
     /**
      * Add the penalty dt gamma A_p N_i(x_f) (p(x_f) - p_b) of the drained
-     * surface points of group @p c (cell @p cell) to @p matrix and
-     * @p cell_rhs (2^dim vertices of the cell).
+     * surface's points to the matrix and boundary_rhs (not compressed).
      */
     void
     add_drained_surface(const ShapeCache<dim>       &cache,
-                        const MaterialPointSet<dim> &points,
-                        const unsigned int           c,
-                        FullMatrix<double>          &matrix,
-                        Vector<double>              &cell_rhs) const;
+                        const MaterialPointSet<dim> &points);
 
     /// Add -dt int N_i q.n over the faces of @p cell on the flux boundaries.
     void
@@ -236,8 +238,16 @@ namespace qsmpm
     bool finite_strain = false;
     /// set_drained_surface() (invalid: none).
     unsigned int drained_surface = numbers::invalid_unsigned_int;
+    const SurfaceTractions<dim> *surface_tractions = nullptr;
     /// The smallest cell size of the grid.
     double cell_size = 0.;
+    /**
+     * The pressure dof of each node, indexed by its first displacement
+     * dof's position in the grid's locally relevant dofs (the step's).
+     */
+    std::vector<types::global_dof_index> pressure_at;
+    /// The grid's locally relevant (displacement) dofs of the step.
+    IndexSet relevant_displacement;
     /// The length of the step (the load factor is the time).
     double                            dt = 0.;
     MPI_Comm                          communicator;
