@@ -18,6 +18,40 @@ namespace qsmpm
     // convergence in the first sliding step even with line search and
     // four cut-backs); at a tenth it converges in 4-11 iterations.
     constexpr double tangential_scale = 0.1;
+
+    // The active cell that contains @p x among @p cell and the cells that
+    // touch it (reached in at most dim steps across faces); @p cell itself
+    // if none does (x beyond the grid). A point's contact corner lies
+    // within its GIMP domain, at most one cell from the point's cell.
+    template <int dim>
+    typename Triangulation<dim>::active_cell_iterator
+    cell_around(const typename Triangulation<dim>::active_cell_iterator &cell,
+                const Point<dim>                                        &x)
+    {
+      if (cell->point_inside(x))
+        return cell;
+      std::vector<typename Triangulation<dim>::active_cell_iterator> near{cell};
+      std::size_t                                                    begin = 0;
+      for (unsigned int step = 0; step < dim; ++step)
+        {
+          const std::size_t end = near.size();
+          for (std::size_t k = begin; k < end; ++k)
+            for (const unsigned int f : near[k]->face_indices())
+              {
+                if (near[k]->at_boundary(f) ||
+                    !near[k]->neighbor(f)->is_active())
+                  continue;
+                const auto next = near[k]->neighbor(f);
+                if (std::find(near.begin(), near.end(), next) != near.end())
+                  continue;
+                if (next->point_inside(x))
+                  return next;
+                near.push_back(next);
+              }
+          begin = end;
+        }
+      return cell;
+    }
   } // namespace
   template <int dim>
   RigidContact<dim>::RigidContact(const BoundaryDescriptor<dim> &boundary)
@@ -181,11 +215,16 @@ namespace qsmpm
                 // Points that touch the body count too: a body resting on
                 // another is held only by the contact.
                 candidate.penetrates = tied || gap <= 1e-8 * h;
-                // The grid's Q1 functions of the point's cell at the
-                // corner (extrapolated if the corner lies beyond the
-                // cell): the nodes of that cell are in the point's stencil
-                // and in the pattern of the stiffness.
-                const auto &cell = cache->cell(c).cell;
+                // The grid's Q1 functions at the corner, of the cell that
+                // holds it. With linear shape functions that is the
+                // point's own cell (extrapolated if the corner lies beyond
+                // it), whose nodes are the point's stencil. With GIMP the
+                // corner may lie in a cell that touches the point's cell,
+                // whose nodes are in the point's group (and so in the
+                // stiffness's pattern); RigidContact explains why.
+                auto cell = cache->cell(c).cell;
+                if (gimp)
+                  cell = cell_around<dim>(cell, corner);
                 const typename DoFHandler<dim>::active_cell_iterator dof_cell(
                   &grid.get_triangulation(),
                   cell->level(),

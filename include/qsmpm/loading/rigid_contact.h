@@ -34,9 +34,19 @@ namespace qsmpm
    *
    *   u_c(du) = sum_i N_i(x_c) du_i,
    *
-   * with the Q1 functions of the point's cell (extrapolated if x_c lies
-   * beyond it), whose nodes the point's stencil and the stiffness's
-   * pattern hold. The same N_i(x_c) carry the contact force to the nodes,
+   * with the Q1 functions of the cell that holds x_c: with linear shape
+   * functions the point's own cell (extrapolated if x_c lies beyond it),
+   * whose nodes are the point's stencil; with GIMP the cell among the
+   * point's cell and those that touch it that contains x_c (the point's
+   * cell if none does, at the grid's edge), whose nodes are in the point's
+   * group and so in the stiffness's pattern. A GIMP point near the surface
+   * whose centre has crossed into the next cell still has its contact
+   * point in the cell it came from, and that cell's field is the one
+   * that moves its surface: extrapolated from the new cell instead, the
+   * contact point drifted from the surface the next step finds, and a
+   * rigid footing pushed into the soil lost half of its contact points,
+   * and 70 % of its force, when their row crossed a grid line.
+   * The same N_i(x_c) carry the contact force to the nodes,
    * as a traction on the body's surface: with cpGIMP domains, which tile
    * the body, a uniform stress is then in equilibrium with a uniform
    * contact pressure (test contact_rigid_bodies: a plate compacting a
@@ -188,7 +198,8 @@ namespace qsmpm
     {
       unsigned int point;
       unsigned int body;
-      /// The first of its cell's dofs in dof_global etc.
+      /// The first of the dofs of the cell that holds its contact point in
+      /// dof_global etc.
       unsigned int first;
       /// The contact point x_p + a at the start of the step, relative to
       /// the body's reference point moved to the step's end
@@ -251,8 +262,9 @@ namespace qsmpm
     double                      cell_size = 0.;
     std::vector<Candidate>      candidates;
     unsigned int                dofs_per_cell = 0;
-    /// Per candidate, the dofs of its point's cell: global index, index
-    /// in the ghosted layout's storage, component, N_i(x_c).
+    /// Per candidate, the dofs of the cell that holds its contact point:
+    /// global index, index in the ghosted layout's storage, component,
+    /// N_i(x_c).
     std::vector<types::global_dof_index> dof_global;
     std::vector<int>                     dof_local;
     std::vector<unsigned int>            dof_component;
