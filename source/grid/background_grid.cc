@@ -297,6 +297,32 @@ namespace qsmpm
 
 
   template <int dim>
+  std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+  BackgroundGrid<dim>::find_cell_around(
+    const Point<dim>                                        &x,
+    const typename Triangulation<dim>::active_cell_iterator &hint) const
+  {
+    if (!locator)
+      locator = std::make_unique<GridTools::Cache<dim>>(triangulation, mapping);
+    std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+      found;
+    try
+      {
+        found = GridTools::find_active_cell_around_point(*locator, x, hint);
+      }
+    catch (...)
+      {
+        found.first = typename Triangulation<dim>::active_cell_iterator();
+      }
+    if (found.first.state() == IteratorState::valid &&
+        found.first->is_artificial())
+      found.first = typename Triangulation<dim>::active_cell_iterator();
+    return found;
+  }
+
+
+
+  template <int dim>
   const IndexSet &
   BackgroundGrid<dim>::locally_owned_dofs() const
   {

@@ -19,39 +19,6 @@ namespace qsmpm
     // four cut-backs); at a tenth it converges in 4-11 iterations.
     constexpr double tangential_scale = 0.1;
 
-    // The active cell that contains @p x among @p cell and the cells that
-    // touch it (reached in at most dim steps across faces); @p cell itself
-    // if none does (x beyond the grid). A point's contact corner lies
-    // within its GIMP domain, at most one cell from the point's cell.
-    template <int dim>
-    typename Triangulation<dim>::active_cell_iterator
-    cell_around(const typename Triangulation<dim>::active_cell_iterator &cell,
-                const Point<dim>                                        &x)
-    {
-      if (cell->point_inside(x))
-        return cell;
-      std::vector<typename Triangulation<dim>::active_cell_iterator> near{cell};
-      std::size_t                                                    begin = 0;
-      for (unsigned int step = 0; step < dim; ++step)
-        {
-          const std::size_t end = near.size();
-          for (std::size_t k = begin; k < end; ++k)
-            for (const unsigned int f : near[k]->face_indices())
-              {
-                if (near[k]->at_boundary(f) ||
-                    !near[k]->neighbor(f)->is_active())
-                  continue;
-                const auto next = near[k]->neighbor(f);
-                if (std::find(near.begin(), near.end(), next) != near.end())
-                  continue;
-                if (next->point_inside(x))
-                  return next;
-                near.push_back(next);
-              }
-          begin = end;
-        }
-      return cell;
-    }
   } // namespace
   template <int dim>
   RigidContact<dim>::RigidContact(const BoundaryDescriptor<dim> &boundary)
@@ -221,18 +188,22 @@ namespace qsmpm
                 // it), whose nodes are the point's stencil. With GIMP the
                 // corner may lie in a cell that touches the point's cell,
                 // whose nodes are in the point's group (and so in the
-                // stiffness's pattern); RigidContact explains why.
-                auto cell = cache->cell(c).cell;
+                // stiffness's pattern); RigidContact explains why. Beyond
+                // the grid the point's cell is extrapolated.
+                auto found = std::make_pair(cache->cell(c).cell, Point<dim>());
                 if (gimp)
-                  cell = cell_around<dim>(cell, corner);
+                  found = grid.find_cell_around(corner, found.first);
+                if (!gimp || found.first.state() != IteratorState::valid)
+                  found = {cache->cell(c).cell,
+                           grid.get_mapping().transform_real_to_unit_cell(
+                             cache->cell(c).cell, corner)};
+                const auto &[cell, xi] = found;
                 const typename DoFHandler<dim>::active_cell_iterator dof_cell(
                   &grid.get_triangulation(),
                   cell->level(),
                   cell->index(),
                   &grid.get_dof_handler());
                 dof_cell->get_dof_indices(cell_dofs);
-                const Point<dim> xi =
-                  grid.get_mapping().transform_real_to_unit_cell(cell, corner);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   {
                     const unsigned int component =

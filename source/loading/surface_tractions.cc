@@ -271,11 +271,6 @@ namespace qsmpm
     load_dofs.clear();
     load_values.clear();
     load_components.clear();
-    if (!grid_cache)
-      grid_cache =
-        std::make_unique<GridTools::Cache<dim>>(grid.get_triangulation(),
-                                                grid.get_mapping());
-
     const auto               &conditions = boundary.surface_tractions();
     const FiniteElement<dim> &fe         = grid.get_fe();
     dofs_per_cell                        = fe.n_dofs_per_cell();
@@ -320,30 +315,16 @@ namespace qsmpm
               // with linear functions the point's own cell (x_f projected
               // onto it), since only the nodes of cells with points carry
               // the body and the surface may already lie in the next cell.
-              std::pair<typename Triangulation<dim>::active_cell_iterator,
-                        Point<dim>>
-                found;
-              try
+              auto found = grid.find_cell_around(cache->position(p), hint);
+              if (found.first.state() == IteratorState::valid)
                 {
-                  found =
-                    GridTools::find_active_cell_around_point(*grid_cache,
-                                                             cache->position(p),
-                                                             hint);
                   hint = found.first;
                   if (gimp)
-                    found =
-                      GridTools::find_active_cell_around_point(*grid_cache,
-                                                               x_f,
-                                                               hint);
+                    found = grid.find_cell_around(x_f, hint);
                   else
                     found.second =
                       grid.get_mapping().transform_real_to_unit_cell(
                         found.first, x_f);
-                }
-              catch (...)
-                {
-                  found.first =
-                    typename Triangulation<dim>::active_cell_iterator();
                 }
               if (found.first.state() != IteratorState::valid ||
                   found.first->is_artificial())

@@ -9,8 +9,10 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <memory>
 #include <qsmpm/base/parameter_struct.h>
 #include <vector>
 
@@ -161,6 +163,18 @@ namespace qsmpm
     dofs_at_most(const TrilinosWrappers::MPI::Vector &sums,
                  const double                         threshold) const;
 
+    /**
+     * The active cell around @p x and the reference location of x in it,
+     * searched from @p hint outwards (deal.II's
+     * GridTools::find_active_cell_around_point() with a GridTools::Cache
+     * that the grid keeps); an invalid iterator if x lies beyond the grid
+     * or in an artificial cell.
+     */
+    std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+    find_cell_around(
+      const Point<dim>                                        &x,
+      const typename Triangulation<dim>::active_cell_iterator &hint) const;
+
     /// Lower and upper corners of the box.
     const Point<dim> &
     lower_corner() const;
@@ -210,12 +224,14 @@ namespace qsmpm
     FESystem<dim>                             fe;
     MappingQ1<dim>                            mapping;
     DoFHandler<dim>                           dof_handler;
-    IndexSet                                  owned_dofs;
-    IndexSet                                  relevant_dofs;
-    Point<dim>                                box_lower;
-    Point<dim>                                box_upper;
-    std::array<unsigned int, dim>             box_subdivisions;
-    std::vector<unsigned int>                 periodic;
+    /// For find_cell_around(), made at its first use.
+    mutable std::unique_ptr<GridTools::Cache<dim>> locator;
+    IndexSet                                       owned_dofs;
+    IndexSet                                       relevant_dofs;
+    Point<dim>                                     box_lower;
+    Point<dim>                                     box_upper;
+    std::array<unsigned int, dim>                  box_subdivisions;
+    std::vector<unsigned int>                      periodic;
   };
 } // namespace qsmpm
 

@@ -1,7 +1,6 @@
 #ifndef qsmpm_loading_surface_tractions_h
 #define qsmpm_loading_surface_tractions_h
 
-#include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <memory>
@@ -172,9 +171,6 @@ namespace qsmpm
                  const double      *du_local) const;
 
     const BoundaryDescriptor<dim> &boundary;
-
-    /// Finds the cell around a load's position (made at the first step).
-    std::unique_ptr<GridTools::Cache<dim>> grid_cache;
 
     /**
      * The load of one condition of one point in this step: the point in
