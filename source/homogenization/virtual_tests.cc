@@ -117,7 +117,7 @@ namespace qsmpm
       {
         Timer                 timer(communicator, true);
         QuasiStaticProblem<3> problem(communicator);
-        problem.pcout().set_condition(false);
+        problem.pcout().set_condition(prm.solver.verbose);
         problem.grid().make_box(Point<3>(), upper, prm.subdivisions);
         if (prm.boundary_type == BoundaryType::periodic)
           problem.grid().make_periodic({0, 1, 2});

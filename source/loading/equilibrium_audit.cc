@@ -76,11 +76,12 @@ namespace qsmpm
           solver_residual() > residual_tolerance))
       return "";
     std::ostringstream message;
+    // Short enough that Utils::error_message() (which cuts a message of
+    // more than 600 characters in its middle) keeps it whole, with the
+    // run's note on its last converged state after it.
     message << "the converged step to t = " << t_new << " lost "
             << std::setprecision(3) << 100. * imbalance()
-            << " % of the load (the applied load is not carried by the "
-               "displacement conditions; Equilibrium check/Lost load "
-               "tolerance = "
+            << " % of the load (Equilibrium check/Lost load tolerance = "
             << tolerance << "): " << causes(tolerance, residual_tolerance)
             << '.';
     return message.str();
@@ -153,15 +154,16 @@ namespace qsmpm
       {
         std::ostringstream words;
         words << std::setprecision(3) << share(internal)
-              << " % leaves through the grid's edge (the weights of points "
-                 "near it are no partition of unity";
+              << " % leaves through the grid's edge";
         if (n_points_beyond_grid > 0)
-          words
-            << ": " << n_points_beyond_grid
-            << " GIMP point domain(s) reach beyond the grid, most of all at ("
-            << point_beyond_grid << ")";
-        words << "; enlarge the grid, Geometry/Lower corner and Upper "
-                 "corner, by at least half a cell beyond the body)";
+          words << ": " << n_points_beyond_grid
+                << " GIMP point domain(s) reach beyond it, most of all at ("
+                << point_beyond_grid << ")";
+        else
+          words << " (the weights of points near it are no partition of "
+                   "unity)";
+        words << "; enlarge the grid (Geometry/Lower corner, Upper corner) "
+                 "by half a cell or more beyond the body";
         add(words.str());
       }
     if (free_residual.norm() > residual_tolerance * scale)

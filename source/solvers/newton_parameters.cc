@@ -104,7 +104,9 @@ namespace qsmpm
         "constant: GMRES always solves to <Linear tolerance> (the paper); "
         "eisenstat-walker: adapt it to the Newton convergence (Eisenstat "
         "and Walker's choice 2), starting from <Linear tolerance>: loose "
-        "where Newton is far from the solution, tight near it. The "
+        "where Newton is far from the solution, tight near it, and no "
+        "solve (the linear predictor's included) further than the Newton "
+        "target asks. The "
         "stopping test is on the nonlinear residual either way. auto: "
         "eisenstat-walker for elastic models, constant for all others.");
       prm.add_parameter("Line search steps",
