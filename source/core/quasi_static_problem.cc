@@ -1,7 +1,7 @@
 #include <deal.II/base/function.h>
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <iomanip>
+#include <qsmpm/base/parsed_region.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
@@ -144,21 +144,11 @@ namespace qsmpm
     for (unsigned int k = 0; k < conditions.size(); ++k)
       if (conditions[k].name == name)
         return k;
-    auto selector = std::make_shared<FunctionParser<dim>>(1);
-    try
-      {
-        selector->initialize(dim == 2 ? "x,y" : "x,y,z", region, {});
-        selector->value(Point<dim>());
-      }
-    catch (const std::exception &exc)
-      {
-        AssertThrow(false,
-                    ExcMessage("Pore fluid: <Drained surface region> = <" +
-                               region + ">: " + Utils::error_message(exc)));
-      }
     bcs.add_surface_traction(
       name,
-      [selector](const Point<dim> &x) { return selector->value(x) != 0.; },
+      parse_region<dim>(region,
+                        "Pore fluid: <Drained surface region>",
+                        "on the drained surface"),
       std::make_shared<Functions::ZeroFunction<dim>>(dim));
     return conditions.size() - 1;
   }

@@ -3,6 +3,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/lac/vector.h>
 #include <iostream>
+#include <qsmpm/base/parsed_region.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
 #include <qsmpm/loading/parsed_rigid_body.h>
@@ -330,31 +331,12 @@ namespace qsmpm
                                  ">, and the others must be 0."));
       }
 
-    // The region: true where the expression is non-zero.
-    auto region = std::make_shared<FunctionParser<dim>>(1);
-    try
-      {
-        region->initialize(dim == 2 ? "x,y" : "x,y,z",
-                           parameters.surface_region,
-                           {});
-        Vector<double> value(1);
-        evaluate_quietly<dim>(*region, Point<dim>(), value);
-      }
-    catch (const std::exception &exc)
-      {
-        AssertThrow(false,
-                    ExcMessage("Boundary conditions: <Surface traction "
-                               "region> = <" +
-                               parameters.surface_region +
-                               ">: " + Utils::error_message(exc) +
-                               " (an expression in " +
-                               (dim == 2 ? "x, y" : "x, y, z") +
-                               ", non-zero on the loaded surface)."));
-      }
     boundary.add_surface_traction(
       "Boundary conditions/Surface traction region = " +
         parameters.surface_region,
-      [region](const Point<dim> &x) { return region->value(x) != 0.; },
+      parse_region<dim>(parameters.surface_region,
+                        "Boundary conditions: <Surface traction region>",
+                        "on the loaded surface"),
       traction,
       type);
   }

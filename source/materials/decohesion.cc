@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deal.II/base/function_parser.h>
 #include <memory>
+#include <qsmpm/base/parsed_region.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/materials/decohesion.h>
 #include <qsmpm/materials/linear_elastic.h>
@@ -27,17 +27,6 @@ namespace qsmpm
       return Tensor<1, dim>(p / p.norm());
     }
 
-    /// The cracking region from a parsed expression (true where > 0.5).
-    template <int dim>
-    std::function<bool(const Point<dim> &)>
-    parse_region(const std::string &expression)
-    {
-      auto parser = std::make_shared<FunctionParser<dim>>(1);
-      parser->initialize(dim == 2 ? "x,y" : "x,y,z",
-                         expression,
-                         std::map<std::string, double>());
-      return [parser](const Point<dim> &x) { return parser->value(x) > 0.5; };
-    }
   } // namespace
 
 
@@ -135,7 +124,10 @@ namespace qsmpm
                  parse_normal<dim>(parameters.crack_normal),
                  parameters.crack_band_width)
   {
-    crack_region = parse_region<dim>(parameters.cracking_region);
+    crack_region = parse_region<dim>(parameters.cracking_region,
+                                     "decohesion: <Cracking region>",
+                                     "where cracks may start",
+                                     RegionTest::above_one_half);
     set_shear_retention(parameters.shear_retention);
   }
 

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cmath>
-#include <deal.II/base/function_parser.h>
 #include <limits>
 #include <memory>
+#include <qsmpm/base/parsed_region.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/materials/smeared_cracks.h>
 #include <sstream>
@@ -100,24 +100,10 @@ namespace qsmpm
     , compliance(invert(C))
   {
     parameters.check();
-    const std::string expression = parameters.cracking_region;
-    auto              parser     = std::make_shared<FunctionParser<dim>>(1);
-    try
-      {
-        parser->initialize(dim == 2 ? "x,y" : "x,y,z",
-                           expression,
-                           std::map<std::string, double>());
-        parser->value(Point<dim>());
-      }
-    catch (const std::exception &exc)
-      {
-        AssertThrow(false,
-                    ExcMessage("smeared cracks: <Cracking region> = <" +
-                               expression + ">: " + Utils::error_message(exc)));
-      }
-    crack_region = [parser](const Point<dim> &x) {
-      return parser->value(x) > 0.5;
-    };
+    crack_region = parse_region<dim>(parameters.cracking_region,
+                                     "smeared cracks: <Cracking region>",
+                                     "where cracks may start",
+                                     RegionTest::above_one_half);
     // Local stability of the band: the softening slope of T must stay
     // below the band's stiffness M / L for the largest L (= h).
     const double L_max =

@@ -251,6 +251,10 @@ driver_case traction_id_missing "Traction boundaries" 1 \
   $'subsection Boundary conditions\n set Traction boundaries = 9\nend'
 driver_case surface_region_syntax "Surface traction region" 1 \
   $'subsection Boundary conditions\n set Surface traction region = x >\nend'
+driver_case decohesion_region_syntax "Cracking region" 1 \
+  $'subsection Material\n set Model = decohesion\n subsection decohesion\n  set Crack band width = 0.25\n  set Cracking region = x >\n end\nend'
+driver_case smeared_cracks_region_syntax "Cracking region" 1 \
+  $'subsection Material\n set Model = smeared cracks\n subsection smeared cracks\n  set Crack band width = 0.25\n  set Cracking region = x >\n end\nend'
 driver_case surface_region_empty "selects no face" 2 \
   $'subsection Boundary conditions\n set Surface traction region = x < -5\nend'
 driver_case surface_pressure_components "Surface traction type" 1 \
