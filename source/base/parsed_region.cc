@@ -8,6 +8,28 @@
 namespace qsmpm
 {
   template <int dim>
+  void
+  evaluate_quietly(const Function<dim> &f,
+                   const Point<dim>    &point,
+                   Vector<double>      &values)
+  {
+    std::ostringstream    swallowed;
+    std::streambuf *const original = std::cerr.rdbuf(swallowed.rdbuf());
+    try
+      {
+        f.vector_value(point, values);
+      }
+    catch (...)
+      {
+        std::cerr.rdbuf(original);
+        throw;
+      }
+    std::cerr.rdbuf(original);
+  }
+
+
+
+  template <int dim>
   std::function<bool(const Point<dim> &)>
   parse_region(const std::string &expression,
                const std::string &entry,
@@ -15,21 +37,16 @@ namespace qsmpm
                const RegionTest   test)
   {
     auto parser = std::make_shared<FunctionParser<dim>>(1);
-    // muparser prints its own report to std::cerr before deal.II throws:
-    // the user should see one line that names the entry.
-    std::ostringstream    swallowed;
-    std::streambuf *const original = std::cerr.rdbuf(swallowed.rdbuf());
     try
       {
         parser->initialize(FunctionParser<dim>::default_variable_names(),
                            expression,
                            {});
-        parser->value(Point<dim>());
-        std::cerr.rdbuf(original);
+        Vector<double> value(1);
+        evaluate_quietly<dim>(*parser, Point<dim>(), value);
       }
     catch (const std::exception &exc)
       {
-        std::cerr.rdbuf(original);
         AssertThrow(
           false,
           ExcMessage(
@@ -45,6 +62,10 @@ namespace qsmpm
 
 
 
+  template void
+  evaluate_quietly<2>(const Function<2> &, const Point<2> &, Vector<double> &);
+  template void
+  evaluate_quietly<3>(const Function<3> &, const Point<3> &, Vector<double> &);
   template std::function<bool(const Point<2> &)>
   parse_region<2>(const std::string &,
                   const std::string &,

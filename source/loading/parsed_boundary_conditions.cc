@@ -26,33 +26,6 @@ namespace qsmpm
       return dim == 2 ? "0; 0" : "0; 0; 0";
     }
 
-    // Evaluate @p f at @p point with std::cerr silenced. deal.II compiles an
-    // expression at its first evaluation and, for a syntax error or an
-    // unknown variable, prints a five-line description to std::cerr before
-    // it throws; the exception already holds the reason, and the user should
-    // see one line that names the entry (see check_functions()).
-    template <int dim>
-    void
-    evaluate_quietly(const Function<dim> &f,
-                     const Point<dim>    &point,
-                     Vector<double>      &values)
-    {
-      std::ostringstream    swallowed;
-      std::streambuf *const original = std::cerr.rdbuf(swallowed.rdbuf());
-      try
-        {
-          f.vector_value(point, values);
-        }
-      catch (...)
-        {
-          std::cerr.rdbuf(original);
-          throw;
-        }
-      std::cerr.rdbuf(original);
-    }
-
-
-
     // The small language of <Dirichlet boundaries>. An item is
     // "<boundary id>:<components>", e.g. "0:xy" or "2:n"; the ids are those
     // of the box (BackgroundGrid), so anything else is a mistake in the

@@ -1,7 +1,9 @@
 #ifndef qsmpm_base_parsed_region_h
 #define qsmpm_base_parsed_region_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
+#include <deal.II/lac/vector.h>
 #include <functional>
 #include <string>
 
@@ -19,13 +21,26 @@ namespace qsmpm
   };
 
   /**
+   * Evaluate @p f at @p point with std::cerr silenced. deal.II compiles an
+   * expression at its first evaluation and, for a syntax error or an
+   * unknown variable, prints a five-line description to std::cerr before
+   * it throws; the exception already holds the reason, and the user should
+   * see one line that names the entry.
+   */
+  template <int dim>
+  void
+  evaluate_quietly(const Function<dim> &f,
+                   const Point<dim>    &point,
+                   Vector<double>      &values);
+
+  /**
    * The region of space that the expression in x, y (and z) of a .prm entry
    * describes ("Cracking region", "Surface traction region", "Drained
    * surface region"), as a predicate on points. The expression is parsed
-   * and evaluated at the origin here, so that a mistake in it stops the
-   * run at once with one line: "<@p entry> = <expression>: what the parser
-   * found (an expression in x, y, non-zero @p meaning)." (muparser's own
-   * report on the standard error is swallowed).
+   * and evaluated at the origin here (evaluate_quietly()), so that a
+   * mistake in it stops the run at once with one line: "<@p entry> =
+   * <expression>: what the parser found (an expression in x, y, non-zero
+   * @p meaning)."
    */
   template <int dim>
   std::function<bool(const Point<dim> &)>

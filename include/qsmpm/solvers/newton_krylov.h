@@ -300,7 +300,7 @@ namespace qsmpm
           // iterations, the same stiffness.
           const double tolerance =
             parameters.forcing == NewtonParameters::Forcing::eisenstat_walker ?
-              std::max(parameters.linear_tolerance, 0.5 * target / norm) :
+              no_further_than(parameters.linear_tolerance, target, norm) :
               parameters.linear_tolerance;
           norm = predict(op, du, R, evaluation, report, tolerance);
         }
@@ -333,7 +333,7 @@ namespace qsmpm
           if (parameters.forcing == NewtonParameters::Forcing::eisenstat_walker)
             forcing = (n > 0 || norm < previous_norm) ?
                         eisenstat_walker(forcing, norm, previous_norm, target) :
-                        std::max(forcing, 0.5 * target / norm);
+                        no_further_than(forcing, target, norm);
           previous_norm = norm;
 
           // A.1 step 4: J s = -R with constrained components of s zero.
@@ -394,7 +394,20 @@ namespace qsmpm
       if (safeguard > 0.1)
         eta = std::max(eta, safeguard);
       eta = std::min(eta, eta_max);
-      return std::max(eta, 0.5 * target / norm);
+      return no_further_than(eta, target, norm);
+    }
+
+    /**
+     * The relative GMRES tolerance @p tolerance, raised where it would
+     * solve further than the Newton target asks: to half of @p target
+     * relative to the current residual @p norm.
+     */
+    static double
+    no_further_than(const double tolerance,
+                    const double target,
+                    const double norm)
+    {
+      return std::max(tolerance, 0.5 * target / norm);
     }
 
     /**
