@@ -31,6 +31,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/base/utilities.h>
@@ -136,7 +137,8 @@ namespace Consolidation
       prm.add_parameter("Mandel tolerance",
                         mandel_tolerance,
                         "Largest accepted error of the peak centre "
-                        "pressure, as a fraction of the exact peak.",
+                        "pressure and of the plate's settlement at every "
+                        "step, as fractions of the exact ones.",
                         Patterns::Double(0.));
       prm.add_parameter("Output directory",
                         directory,
@@ -170,14 +172,14 @@ namespace Consolidation
 
   private:
     void
-    setup_problem(QuasiStaticProblem<2> &problem,
-                  const std::string     &name,
-                  const Point<2>        &upper,
-                  const unsigned int     cells_x,
-                  const unsigned int     cells_y,
-                  const unsigned int     drained_boundary,
-                  const double           final_time,
-                  const unsigned int     steps);
+    setup_problem(QuasiStaticProblem<2>             &problem,
+                  const std::string                 &name,
+                  const Point<2>                    &body,
+                  const double                       h,
+                  const std::array<unsigned int, 2> &margin,
+                  const std::string                 &drained_region,
+                  const double                       final_time,
+                  const unsigned int                 steps);
 
     /// The range of fixed-stress iterations per step, GMRES iterations per
     /// Newton iteration and the wall time @p seconds of a run, as a line.
@@ -251,39 +253,62 @@ namespace Consolidation
 
   // @sect4{Consolidation::setup_problem}
   //
-  // Common to both problems: a box of square cells with its lower corner
-  // at the origin, filled with points; rollers on its left (id 0) and
-  // bottom (id 2) sides, which are symmetry planes of Mandel's specimen and
-  // the walls and base of Terzaghi's column; the pore fluid drains through
-  // one side; equal time steps.
+  // Common to both problems: the body 0 < x < body[0], 0 < y < body[1],
+  // filled with points, in a grid of square cells of size h with its lower
+  // corner at the origin; rollers on the grid's left (id 0) and bottom
+  // (id 2) sides, which are symmetry planes of Mandel's specimen and the
+  // walls and base of Terzaghi's column; equal time steps.
+  //
+  // The grid reaches @p margin cells beyond the body's side that moves
+  // (Mandel's free side swells, Terzaghi's top settles): points that move
+  // out of the last cell of a grid that ends at the body would leave it
+  // (Mandel's specimen on 64 x 64 cells did in its first step), and a
+  // drained grid face would lose the material beside it (Terzaghi's column
+  // on 128 cells at T_v = 0.84). The drained side is therefore the body's
+  // own surface, `Drained surface region`, which follows the points; the
+  // other surfaces are impermeable.
   void
-  Consolidation::setup_problem(QuasiStaticProblem<2> &problem,
-                               const std::string     &name,
-                               const Point<2>        &upper,
-                               const unsigned int     cells_x,
-                               const unsigned int     cells_y,
-                               const unsigned int     drained_boundary,
-                               const double           final_time,
-                               const unsigned int     steps)
+  Consolidation::setup_problem(QuasiStaticProblem<2>             &problem,
+                               const std::string                 &name,
+                               const Point<2>                    &body,
+                               const double                       h,
+                               const std::array<unsigned int, 2> &margin,
+                               const std::string &drained_region,
+                               const double       final_time,
+                               const unsigned int steps)
   {
     problem.pcout().set_condition(
       parameters.progress &&
       Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    auto &p                         = problem.parameters();
-    p                               = library_parameters;
-    p.pore_fluid.enabled            = true;
-    p.pore_fluid.drained_boundaries = {drained_boundary};
+    auto &p              = problem.parameters();
+    p                    = library_parameters;
+    p.pore_fluid.enabled = true;
+    p.pore_fluid.drained_boundaries.clear();
+    p.pore_fluid.drained_surface_region = drained_region;
     p.pore_fluid.flux_boundaries.clear();
     p.load_stepping.final_load_factor = final_time;
     p.load_stepping.n_steps           = steps;
     p.load_stepping.growth_factor     = 1.;
     p.output.directory                = parameters.directory + "/" + name;
 
-    problem.grid().make_box(Point<2>(), upper, {{cells_x, cells_y}});
+    std::array<unsigned int, 2> cells;
+    Point<2>                    upper;
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const double n = body[d] / h;
+        AssertThrow(std::abs(n - std::round(n)) < 1e-9 * n,
+                    ExcMessage("consolidation: the " + name +
+                               " problem's sides must be multiples of its "
+                               "cell size."));
+        cells[d] = static_cast<unsigned int>(std::round(n)) + margin[d];
+        upper[d] = cells[d] * h;
+      }
+    problem.grid().make_box(Point<2>(), upper, cells);
     problem.set_model(std::make_unique<LinearElastic<2>>(soil.E, soil.nu));
-    problem.points().fill([](const Point<2> &) { return true; },
-                          p.material_points.points_per_direction,
-                          p.material_points.placement);
+    problem.points().fill(
+      [&](const Point<2> &x) { return x[0] < body[0] && x[1] < body[1]; },
+      p.material_points.points_per_direction,
+      p.material_points.placement);
     const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
     auto      &bcs  = problem.boundary_conditions();
     bcs.add_dirichlet_boundary(0, {}, zero, /*normal_only=*/true);
@@ -342,9 +367,9 @@ namespace Consolidation
   // @sect4{Consolidation::run_terzaghi}
   //
   // The column is one cell wide, with rollers on both sides (the right
-  // side, id 1, too), the load q on its top (id 3), which drains. After
-  // each step at T_v = 0.1, 0.5 or 1 the L2 error of the points' pressure
-  // is taken, relative to q.
+  // side, id 1, too), the load q on its top, which drains. After each step
+  // at T_v = 0.1, 0.5 or 1 the L2 error of the points' pressure is taken,
+  // relative to q.
   std::array<double, 3>
   Consolidation::run_terzaghi()
   {
@@ -357,25 +382,38 @@ namespace Consolidation
                 ExcMessage("consolidation: Column steps must be a multiple "
                            "of 10."));
 
+    // The load and the drainage are on the column's top, y = H, which
+    // settles into the empty row of cells above it: a traction on the
+    // body's surface (added before the points are made, which carry its
+    // area), and the drained surface there.
+    const double          h = H / cells;
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     problem.return_large_blocks_to_system();
+    const std::string top = "y > " + Utilities::to_string(H - h / 4);
+    problem.boundary_conditions().add_surface_traction(
+      "column load",
+      [=](const Point<2> &x) { return x[1] > H - h / 4; },
+      std::make_shared<Functions::ConstantFunction<2>>(
+        std::vector<double>{0., -q}));
     setup_problem(
-      problem, "terzaghi", Point<2>(H / cells, H), 1, cells, 3, t_end, steps);
-    auto &bcs = problem.boundary_conditions();
-    bcs.add_dirichlet_boundary(1,
-                               {},
-                               std::make_shared<Functions::ZeroFunction<2>>(2),
-                               /*normal_only=*/true);
-    bcs.add_traction(3,
-                     std::make_shared<Functions::ConstantFunction<2>>(
-                       std::vector<double>{0., -q}));
+      problem, "terzaghi", Point<2>(h, H), h, {{0, 1}}, top, t_end, steps);
+    problem.boundary_conditions().add_dirichlet_boundary(
+      1,
+      {},
+      std::make_shared<Functions::ZeroFunction<2>>(2),
+      /*normal_only=*/true);
 
+    // Each error is taken in the first step that reaches its T_v, against
+    // the exact pressure at that step's own time: a step cut back on the
+    // way need not end on T_v exactly. A time that no step reached keeps
+    // its NaN, which fails the check.
     const std::array<double, 3> times = {{0.1, 0.5, 1.0}};
-    std::array<double, 3>       errors{};
+    std::array<double, 3>       errors;
+    errors.fill(std::numeric_limits<double>::quiet_NaN());
     problem.set_step_callback([&](const StepReport &report) {
       const double Tv = report.load_factor / t_end;
       for (unsigned int k = 0; k < times.size(); ++k)
-        if (std::abs(Tv - times[k]) < 1e-6)
+        if (std::isnan(errors[k]) && Tv > times[k] * (1. - 1e-9))
           {
             double sum = 0, volume = 0;
             for (const auto &[X, Y, V, p] : point_pressures(problem))
@@ -410,7 +448,7 @@ namespace Consolidation
   //
   // The quarter 0 < x < a, 0 < y < b: rollers on the symmetry planes x = 0
   // and y = 0 (impermeable), the plate on top (id 3, impermeable), the
-  // free side x = a (id 1) drained. The centre pressure is the mean
+  // free side x = a drained. The centre pressure is the mean
   // pressure of the points of the first column of cells, compared with the
   // exact pressure at the same points: the exact centre pressure at x = 0
   // differs from it by O(h^2) only (dp/dx = 0 there).
@@ -425,31 +463,31 @@ namespace Consolidation
     const double         t_end = parameters.final_time * a * a / c;
     const unsigned int   cells = parameters.specimen_cells;
     const double         h     = a / cells;
-    const unsigned int   cells_y =
-      static_cast<unsigned int>(std::round(b / h)); // square cells
-    AssertThrow(cells_y > 0 && std::abs(cells_y * h - b) < 1e-9 * b,
-                ExcMessage("consolidation: Specimen half-height must be a "
-                           "multiple of half-width / cells."));
 
+    // The free side x = a swells at first (the undrained response) and
+    // drains: one empty column of cells beyond it, and the drained surface
+    // on the body's side x = a.
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     problem.return_large_blocks_to_system();
     setup_problem(problem,
                   "mandel",
                   Point<2>(a, b),
-                  cells,
-                  cells_y,
-                  1,
+                  h,
+                  {{1, 0}},
+                  "x > " + Utilities::to_string(a - h / 4),
                   t_end,
                   parameters.specimen_steps);
 
-    // The plate: boundary 3 moves as one along y (RigidPlates), loaded by
-    // the traction F / a on it, whose resultant is F. Its motion is not
-    // given: it is what the force does to the specimen.
+    // The plate: boundary 3 moves as one along y (RigidPlates; the nodes
+    // of the empty column carry no material and are not part of it),
+    // loaded by the traction F / a on 0 < x < a, whose resultant is F. Its
+    // motion is not given: it is what the force does to the specimen.
     auto &bcs = problem.boundary_conditions();
     bcs.add_rigid_plate(3);
-    bcs.add_traction(3,
-                     std::make_shared<Functions::ConstantFunction<2>>(
-                       std::vector<double>{0., -F / a}));
+    bcs.add_traction(
+      3,
+      std::make_shared<VectorFunctionFromScalarFunctionObject<2>>(
+        [=](const Point<2> &x) { return x[0] < a ? -F / a : 0.; }, 1, 2));
 
     // After each step: the centre pressure (computed, and exact at the same
     // points), and the plate's settlement over b, the vertical strain
@@ -459,7 +497,17 @@ namespace Consolidation
       double tau, pressure, exact_pressure, strain, exact_strain;
     };
     std::vector<Record> history;
+    // The free side's points move out by up to F nu_u / (2 G) (4.2 mm
+    // here) at t = 0+. Where that is more than their distance to the grid
+    // line x = a (h / 4 with 2 x 2 points per cell: finer than about 60
+    // cells over a) they cross it, and with linear shape functions the
+    // cell-crossing error makes the specimen too soft there (on 64 x 64
+    // cells the settlement ends 10 % above the exact one). The largest x
+    // of any point tells whether that happened.
+    double largest_x = 0;
     problem.set_step_callback([&](const StepReport &report) {
+      for (const auto &particle : problem.points().get_particle_handler())
+        largest_x = std::max(largest_x, particle.get_location()[0]);
       std::vector<double> sums(3, 0.);
       for (const auto &[X, Y, V, p] : point_pressures(problem))
         if (X < h)
@@ -522,7 +570,8 @@ namespace Consolidation
               << record.exact_strain << '\n';
       }
     pcout << "Mandel's problem: a = " << a << " m, b = " << b << " m, " << cells
-          << " x " << cells_y << " cells, " << problem.step_reports().size()
+          << " x " << std::lround(b / h) << " cells, "
+          << problem.step_reports().size()
           << " steps to c t / a^2 = " << parameters.final_time << "\n  "
           << iterations(problem, timer.wall_time()) << '\n'
           << std::setprecision(5) << "  peak centre pressure / p0: computed "
@@ -532,6 +581,14 @@ namespace Consolidation
           << std::setprecision(3) << "  error of the peak " << 100 * peak_error
           << " %, largest error of the plate's settlement "
           << 100 * strain_error << " %\n";
+    largest_x = Utilities::MPI::max(largest_x, MPI_COMM_WORLD);
+    if (largest_x > a && !library_parameters.material_points.formulation.gimp())
+      pcout << "  Points of the free side crossed the grid line x = a (up "
+               "to x = "
+            << std::setprecision(4) << largest_x
+            << "): with linear shape functions the cell-crossing error "
+               "spoils the settlement; use Material points/Shape functions "
+               "= cpGIMP on this grid.\n";
     return {peak_error, strain_error};
   }
 
@@ -544,7 +601,8 @@ namespace Consolidation
     const std::array<double, 3> terzaghi      = run_terzaghi();
     const auto [peak_error, settlement_error] = run_mandel();
 
-    bool passed = peak_error <= parameters.mandel_tolerance;
+    bool passed = peak_error <= parameters.mandel_tolerance &&
+                  settlement_error <= parameters.mandel_tolerance;
     for (const double e : terzaghi)
       passed = passed && e <= parameters.terzaghi_tolerance;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -560,8 +618,9 @@ namespace Consolidation
       }
     pcout << (passed ? "OK" : "FAILED")
           << ": Terzaghi L2 errors <= " << parameters.terzaghi_tolerance
-          << " of q, Mandel peak error <= " << parameters.mandel_tolerance
-          << " (summary.txt in " << parameters.directory << ")" << std::endl;
+          << " of q, Mandel peak and settlement errors <= "
+          << parameters.mandel_tolerance << " (summary.txt in "
+          << parameters.directory << ")" << std::endl;
     return passed;
   }
 } // namespace Consolidation
