@@ -88,6 +88,7 @@ namespace Polycrystal
     std::vector<std::string> boundary_conditions  = {"mixed"};
     double                   strain               = 0.004;
     unsigned int             n_load_steps         = 2;
+    unsigned int             test_groups          = 0;
     unsigned int             n_realizations       = 1;
     std::string              output_directory     = "polycrystal-output";
 
@@ -176,6 +177,15 @@ namespace Polycrystal
                         n_load_steps,
                         "Load steps per test.",
                         Patterns::Integer(1));
+      prm.add_parameter("Test groups",
+                        test_groups,
+                        "The six tests are independent and run at once in "
+                        "this many groups of MPI ranks, each test on the "
+                        "ranks of one group. 0: one group per rank (at most "
+                        "six); 1: every test on all ranks, one after the "
+                        "other. Each rank of a group of one holds a whole "
+                        "sample (memory).",
+                        Patterns::Integer(0));
       prm.add_parameter("Number of realizations",
                         n_realizations,
                         "M samples with seeds (grain seed + r, texture seed "
@@ -608,6 +618,7 @@ namespace Polycrystal
         vt.points_per_direction = par.points_per_direction;
         vt.strain               = par.strain;
         vt.n_load_steps         = par.n_load_steps;
+        vt.test_groups          = par.test_groups;
         vt.solver               = solver;
         vt.output_directory     = par.output_directory + "/tests_" + bc + "_r" +
                               std::to_string(realization);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
@@ -5,6 +6,7 @@
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/homogenization/virtual_tests.h>
+#include <type_traits>
 
 namespace qsmpm
 {
@@ -99,6 +101,93 @@ namespace qsmpm
   VirtualTests::run(const ModelFactory &make_model,
                     const MaterialId   &material_id)
   {
+    test_reports.assign(6, TestReport());
+    C_volume   = Matrix6{};
+    C_reaction = Matrix6{};
+    for (auto &row : mask)
+      row.fill(false);
+
+    // The groups of ranks: contiguous ranks, test number n of the list to
+    // group n mod n_groups, so that each group gets normal and shear tests.
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_tests = prm.tests.size();
+    const unsigned int n_groups =
+      std::max(1u,
+               std::min({prm.test_groups == 0 ? n_ranks : prm.test_groups,
+                         n_ranks,
+                         n_tests}));
+    const auto group_of_rank = [&](const unsigned int r) {
+      return r * n_groups / n_ranks;
+    };
+    const unsigned int group = group_of_rank(rank);
+    MPI_Comm           group_communicator;
+    const int          ierr =
+      MPI_Comm_split(communicator, group, rank, &group_communicator);
+    AssertThrowMPI(ierr);
+
+    // A test that fails on one group must stop every rank: the others
+    // would wait for its results below. Its message travels to all. With
+    // Verbose, the first rank prints the steps of its own group's tests.
+    std::string error;
+    for (unsigned int n = 0; n < n_tests; ++n)
+      if (n % n_groups == group && error.empty())
+        {
+          try
+            {
+              test_reports[prm.tests[n]] =
+                run_test(prm.tests[n],
+                         group_communicator,
+                         prm.solver.verbose && rank == 0,
+                         make_model,
+                         material_id);
+            }
+          catch (const std::exception &exc)
+            {
+              error = Utils::error_message(exc);
+            }
+        }
+    MPI_Comm_free(&group_communicator);
+    Utils::throw_if_any_rank(error, communicator);
+
+    // Every rank gets every test's report from the first rank of the group
+    // that ran it (a report is plain data).
+    static_assert(std::is_trivially_copyable_v<TestReport>);
+    for (unsigned int n = 0; n < n_tests; ++n)
+      {
+        unsigned int root = 0;
+        while (group_of_rank(root) != n % n_groups)
+          ++root;
+        MPI_Bcast(&test_reports[prm.tests[n]],
+                  sizeof(TestReport),
+                  MPI_BYTE,
+                  root,
+                  communicator);
+      }
+    points = dealii::Utilities::MPI::max(points, communicator);
+    cells  = dealii::Utilities::MPI::max(cells, communicator);
+
+    for (const unsigned int k : prm.tests)
+      for (unsigned int a = 0; a < 6; ++a)
+        {
+          const TestReport &report = test_reports[k];
+          C_volume[a][k]           = report.stress_volume[a] / prm.strain;
+          C_reaction[a][k]         = report.stress_reaction[a] / prm.strain;
+          mask[a][k]               = report.reaction_measured[a];
+        }
+  }
+
+
+
+  VirtualTests::TestReport
+  VirtualTests::run_test(const unsigned int  k,
+                         const MPI_Comm      group,
+                         const bool          verbose,
+                         const ModelFactory &make_model,
+                         const MaterialId   &material_id)
+  {
     const double L = prm.side_length;
     Point<3>     centre, upper;
     for (unsigned int d = 0; d < 3; ++d)
@@ -107,166 +196,153 @@ namespace qsmpm
         upper[d]  = L;
       }
     const double area = L * L;
-    test_reports.assign(6, TestReport());
-    C_volume   = Matrix6{};
-    C_reaction = Matrix6{};
-    for (auto &row : mask)
-      row.fill(false);
 
-    for (const unsigned int k : prm.tests)
+    Timer                 timer(group, true);
+    QuasiStaticProblem<3> problem(group);
+    problem.pcout().set_condition(verbose);
+    problem.grid().make_box(Point<3>(), upper, prm.subdivisions);
+    if (prm.boundary_type == BoundaryType::periodic)
+      problem.grid().make_periodic({0, 1, 2});
+    problem.set_model(make_model());
+    // The material ids are given to fill(), so that the model
+    // initializes each point's state for its id.
+    std::array<unsigned int, 3> n_per_direction;
+    n_per_direction.fill(prm.points_per_direction);
+    problem.points().fill([](const Point<3> &) { return true; },
+                          MaterialPointSet<3>::reference_rule(
+                            MaterialPointSet<3>::Placement::regular,
+                            n_per_direction),
+                          material_id ?
+                            material_id :
+                            MaterialId([](const Point<3> &) { return 0u; }));
+    const auto &offsets = problem.points().get_offsets();
+    points              = problem.points().n_global_points();
+    cells = problem.grid().get_triangulation().n_global_active_cells();
+
+    // The macroscopic displacement gradient H of the test.
+    const unsigned int i = voigt_i[k], j = voigt_j[k];
+    Tensor<2, 3>       H;
+    auto              &bcs = problem.boundary_conditions();
+    // Per condition: its face and whether all components are prescribed.
+    std::vector<std::pair<unsigned int, bool>> faces;
+    std::array<bool, 3>                        all{{true, true, true}};
+    if (prm.boundary_type == BoundaryType::mixed)
       {
-        Timer                 timer(communicator, true);
-        QuasiStaticProblem<3> problem(communicator);
-        problem.pcout().set_condition(prm.solver.verbose);
-        problem.grid().make_box(Point<3>(), upper, prm.subdivisions);
-        if (prm.boundary_type == BoundaryType::periodic)
-          problem.grid().make_periodic({0, 1, 2});
-        problem.set_model(make_model());
-        // The material ids are given to fill(), so that the model
-        // initializes each point's state for its id.
-        std::array<unsigned int, 3> n_per_direction;
-        n_per_direction.fill(prm.points_per_direction);
-        problem.points().fill(
-          [](const Point<3> &) { return true; },
-          MaterialPointSet<3>::reference_rule(
-            MaterialPointSet<3>::Placement::regular, n_per_direction),
-          material_id ? material_id :
-                        MaterialId([](const Point<3> &) { return 0u; }));
-        const auto &offsets = problem.points().get_offsets();
-        points              = problem.points().n_global_points();
-        cells = problem.grid().get_triangulation().n_global_active_cells();
-
-        // The macroscopic displacement gradient H of the test.
-        const unsigned int i = voigt_i[k], j = voigt_j[k];
-        Tensor<2, 3>       H;
-        auto              &bcs = problem.boundary_conditions();
-        // Per condition: its face and whether all components are prescribed.
-        std::vector<std::pair<unsigned int, bool>> faces;
-        std::array<bool, 3>                        all{{true, true, true}};
-        if (prm.boundary_type == BoundaryType::mixed)
+        H[i][j]      = prm.strain;
+        const auto g = std::make_shared<LinearDisplacement>(H, centre);
+        for (const unsigned int f : {2 * j, 2 * j + 1})
           {
-            H[i][j]      = prm.strain;
-            const auto g = std::make_shared<LinearDisplacement>(H, centre);
-            for (const unsigned int f : {2 * j, 2 * j + 1})
+            bcs.add_dirichlet_boundary(f, all, g);
+            faces.emplace_back(f, true);
+          }
+        const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
+        for (unsigned int d = 0; d < 3; ++d)
+          if (d != j)
+            for (const unsigned int f : {2 * d, 2 * d + 1})
               {
-                bcs.add_dirichlet_boundary(f, all, g);
-                faces.emplace_back(f, true);
+                bcs.add_dirichlet_boundary(f, {}, zero, true);
+                faces.emplace_back(f, false);
               }
-            const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
-            for (unsigned int d = 0; d < 3; ++d)
-              if (d != j)
-                for (const unsigned int f : {2 * d, 2 * d + 1})
-                  {
-                    bcs.add_dirichlet_boundary(f, {}, zero, true);
-                    faces.emplace_back(f, false);
-                  }
-          }
-        else
-          {
-            // The symmetric macroscopic strain tensor of the test.
-            H[i][j] = (i == j ? prm.strain : 0.5 * prm.strain);
-            H[j][i] = H[i][j];
-          }
-        if (prm.boundary_type == BoundaryType::periodic)
-          bcs.set_macroscopic_displacement_gradient(
-            [H](const double t) { return t * H; }, centre);
-        else if (prm.boundary_type == BoundaryType::affine)
-          {
-            const auto g = std::make_shared<LinearDisplacement>(H, centre);
-            for (unsigned int f = 0; f < 6; ++f)
-              {
-                bcs.add_dirichlet_boundary(f, all, g);
-                faces.emplace_back(f, true);
-              }
-          }
-
-        auto &p                           = problem.parameters();
-        p.nonlinear_solver                = prm.solver;
-        p.load_stepping.n_steps           = prm.n_load_steps;
-        p.load_stepping.final_load_factor = 1.;
-        p.output.interval                 = 0;
-        p.output.write_increment          = false;
-        p.output.directory =
-          prm.output_directory + "/test_" + std::to_string(k);
-        p.material_points.update_volumes = prm.update_volumes;
-        problem.run();
-
-        TestReport &report = test_reports[k];
-        for (const auto &step : problem.step_reports())
-          {
-            report.newton_iterations += step.newton.newton_iterations;
-            report.gmres_iterations += step.newton.linear_iterations;
-          }
-
-        // Volume averages of stress and strain at the points.
-        double sums[13] = {};
-        for (const auto &particle : problem.points().get_particle_handler())
-          {
-            const double *data   = particle.get_properties().data();
-            const double  volume = data[offsets.volume];
-            const auto sigma = Utils::read_symmetric<3>(data + offsets.stress);
-            const auto eps   = Utils::read_symmetric<3>(data + offsets.strain);
-            for (unsigned int a = 0; a < 6; ++a)
-              {
-                sums[a] += volume * sigma[voigt_i[a]][voigt_j[a]];
-                sums[6 + a] +=
-                  volume * eps[voigt_i[a]][voigt_j[a]] * (a < 3 ? 1. : 2.);
-              }
-            sums[12] += volume;
-          }
-        dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 13),
-                                    communicator,
-                                    ArrayView<double>(sums, 13));
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            report.stress_volume[a] = sums[a] / sums[12];
-            report.mean_strain[a]   = sums[6 + a] / sums[12];
-          }
-
-        // Reaction forces per face, averaged over the pair of faces.
-        const auto                 &reactions = problem.reactions();
-        std::array<Tensor<1, 3>, 6> F;
-        std::array<bool, 6>         full{}, loaded{};
-        for (unsigned int c = 0; c < faces.size(); ++c)
-          {
-            F[faces[c].first]      = reactions[c];
-            full[faces[c].first]   = faces[c].second;
-            loaded[faces[c].first] = true;
-          }
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            const unsigned int ii = voigt_i[a], jj = voigt_j[a];
-            double             sum = 0;
-            unsigned int       n   = 0;
-            // sigma_ii (normal): measured wherever the faces carry a
-            // condition (mixed and affine: the normal component is
-            // prescribed on every face; periodic: none). sigma_ij from the
-            // faces normal to x_j (component i) and to x_i (component j),
-            // where prescribed.
-            for (const auto &[comp, dir] :
-                 {std::make_pair(ii, jj), std::make_pair(jj, ii)})
-              {
-                if (!(loaded[2 * dir] && loaded[2 * dir + 1]) ||
-                    (comp != dir && !(full[2 * dir] && full[2 * dir + 1])))
-                  continue;
-                sum += (F[2 * dir + 1][comp] - F[2 * dir][comp]) / (2. * area);
-                ++n;
-                if (ii == jj)
-                  break;
-              }
-            report.reaction_measured[a] = n > 0;
-            report.stress_reaction[a]   = n > 0 ? sum / n : 0.;
-          }
-
-        for (unsigned int a = 0; a < 6; ++a)
-          {
-            C_volume[a][k]   = report.stress_volume[a] / prm.strain;
-            C_reaction[a][k] = report.stress_reaction[a] / prm.strain;
-            mask[a][k]       = report.reaction_measured[a];
-          }
-        timer.stop();
-        report.wall_time = timer.wall_time();
       }
+    else
+      {
+        // The symmetric macroscopic strain tensor of the test.
+        H[i][j] = (i == j ? prm.strain : 0.5 * prm.strain);
+        H[j][i] = H[i][j];
+      }
+    if (prm.boundary_type == BoundaryType::periodic)
+      bcs.set_macroscopic_displacement_gradient(
+        [H](const double t) { return t * H; }, centre);
+    else if (prm.boundary_type == BoundaryType::affine)
+      {
+        const auto g = std::make_shared<LinearDisplacement>(H, centre);
+        for (unsigned int f = 0; f < 6; ++f)
+          {
+            bcs.add_dirichlet_boundary(f, all, g);
+            faces.emplace_back(f, true);
+          }
+      }
+
+    auto &p                           = problem.parameters();
+    p.nonlinear_solver                = prm.solver;
+    p.load_stepping.n_steps           = prm.n_load_steps;
+    p.load_stepping.final_load_factor = 1.;
+    p.output.interval                 = 0;
+    p.output.write_increment          = false;
+    p.output.directory = prm.output_directory + "/test_" + std::to_string(k);
+    p.material_points.update_volumes = prm.update_volumes;
+    problem.run();
+
+    TestReport report;
+    for (const auto &step : problem.step_reports())
+      {
+        report.newton_iterations += step.newton.newton_iterations;
+        report.gmres_iterations += step.newton.linear_iterations;
+      }
+
+    // Volume averages of stress and strain at the points.
+    double sums[13] = {};
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const double *data   = particle.get_properties().data();
+        const double  volume = data[offsets.volume];
+        const auto    sigma  = Utils::read_symmetric<3>(data + offsets.stress);
+        const auto    eps    = Utils::read_symmetric<3>(data + offsets.strain);
+        for (unsigned int a = 0; a < 6; ++a)
+          {
+            sums[a] += volume * sigma[voigt_i[a]][voigt_j[a]];
+            sums[6 + a] +=
+              volume * eps[voigt_i[a]][voigt_j[a]] * (a < 3 ? 1. : 2.);
+          }
+        sums[12] += volume;
+      }
+    dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 13),
+                                group,
+                                ArrayView<double>(sums, 13));
+    for (unsigned int a = 0; a < 6; ++a)
+      {
+        report.stress_volume[a] = sums[a] / sums[12];
+        report.mean_strain[a]   = sums[6 + a] / sums[12];
+      }
+
+    // Reaction forces per face, averaged over the pair of faces.
+    const auto                 &reactions = problem.reactions();
+    std::array<Tensor<1, 3>, 6> F;
+    std::array<bool, 6>         full{}, loaded{};
+    for (unsigned int c = 0; c < faces.size(); ++c)
+      {
+        F[faces[c].first]      = reactions[c];
+        full[faces[c].first]   = faces[c].second;
+        loaded[faces[c].first] = true;
+      }
+    for (unsigned int a = 0; a < 6; ++a)
+      {
+        const unsigned int ii = voigt_i[a], jj = voigt_j[a];
+        double             sum = 0;
+        unsigned int       n   = 0;
+        // sigma_ii (normal): measured wherever the faces carry a
+        // condition (mixed and affine: the normal component is
+        // prescribed on every face; periodic: none). sigma_ij from the
+        // faces normal to x_j (component i) and to x_i (component j),
+        // where prescribed.
+        for (const auto &[comp, dir] :
+             {std::make_pair(ii, jj), std::make_pair(jj, ii)})
+          {
+            if (!(loaded[2 * dir] && loaded[2 * dir + 1]) ||
+                (comp != dir && !(full[2 * dir] && full[2 * dir + 1])))
+              continue;
+            sum += (F[2 * dir + 1][comp] - F[2 * dir][comp]) / (2. * area);
+            ++n;
+            if (ii == jj)
+              break;
+          }
+        report.reaction_measured[a] = n > 0;
+        report.stress_reaction[a]   = n > 0 ? sum / n : 0.;
+      }
+
+    timer.stop();
+    report.wall_time = timer.wall_time();
+    return report;
   }
 
 

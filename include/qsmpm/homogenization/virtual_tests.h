@@ -73,6 +73,17 @@ namespace qsmpm
       std::string output_directory = "output";
       /// Tests to run (Voigt indices); default all six.
       std::vector<unsigned int> tests = {0, 1, 2, 3, 4, 5};
+      /**
+       * The tests are independent: they run at once in this many groups of
+       * ranks, each test on the ranks of one group (the tests of a group
+       * one after the other). 0: one group per rank, at most as many groups
+       * as tests; 1: every test on all ranks. A group of fewer ranks holds
+       * more of its sample per rank, and its tests scale better than one
+       * sample spread over all ranks. The results are those of a run on
+       * the group's ranks, so they do not depend on the grouping beyond
+       * the solver's tolerances.
+       */
+      unsigned int test_groups = 0;
     };
 
     /// Result of one test.
@@ -147,6 +158,14 @@ namespace qsmpm
     relative_asymmetry(const Matrix6 &C);
 
   private:
+    /// Test @p k on the ranks of @p group (all of them take part).
+    TestReport
+    run_test(const unsigned int  k,
+             const MPI_Comm      group,
+             const bool          verbose,
+             const ModelFactory &make_model,
+             const MaterialId   &material_id);
+
     Parameters                         prm;
     MPI_Comm                           communicator;
     Matrix6                            C_volume{};
