@@ -34,6 +34,7 @@
 #include <limits>
 #include <memory>
 #include <qsmpm/base/parameter_struct.h>
+#include <qsmpm/base/parsed_region.h>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
@@ -392,7 +393,7 @@ namespace Consolidation
     const std::string top = "y > " + Utilities::to_string(H - h / 4);
     problem.boundary_conditions().add_surface_traction(
       "column load",
-      [=](const Point<2> &x) { return x[1] > H - h / 4; },
+      parse_region<2>(top, "consolidation: column top", "on the column's top"),
       std::make_shared<Functions::ConstantFunction<2>>(
         std::vector<double>{0., -q}));
     setup_problem(
