@@ -131,10 +131,12 @@ namespace qsmpm
         "largest nodal pressure or stress component at the "
         "start of the step, whichever is larger (the stress the loads have "
         "added: without Material points/Initial stress and its Cam Clay "
-        "-p0 I). The displacement solves "
-        "stop at Nonlinear solver/Tolerance (1e-6) of the "
-        "forces, which blurs the pressure at about that "
-        "level: keep this ten times larger.",
+        "-p0 I). Each displacement solve after the step's first reduces "
+        "the forces of the pressure change by 1e-2, down to 1e-12 of the "
+        "forces in the body, so that this may be far below Nonlinear "
+        "solver/Tolerance (1e-8 converges on Terzaghi's column). The "
+        "remainders add up over the steps: many short steps need a "
+        "smaller value.",
         Patterns::Double(0.));
       prm.add_parameter("Maximum coupling iterations",
                         max_coupling_iterations,

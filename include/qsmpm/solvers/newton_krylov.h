@@ -85,22 +85,28 @@ namespace qsmpm
      * du_0 has the residual norm @p reference on the free degrees of
      * freedom and @p force_level on all of them (the rows of the supports
      * hold their reactions, so this is the size of the forces in the
-     * body): gamma max(floor, ||R(du_0)||, 1e-6 force_level), without the
-     * second term if not NewtonParameters::relative_to_load. The last
+     * body): gamma max(floor, ||R(du_0)||, 1e-6 force_level). The last
      * term keeps a step whose load hardly changes from asking for a
      * residual below round-off; like the first two it is measured in the
      * units of the forces, so the test gives the same iterates whatever
      * the units (with the floor 0, the default).
+     *
+     * Without NewtonParameters::relative_to_load, @p reference is the
+     * residual norm of the solve's first iterate and the target is
+     * gamma max(floor, reference): the caller's floor is then the guard
+     * against round-off (the fixed-stress iterations of a pore fluid).
      */
     inline double
     stopping_target(const NewtonParameters &parameters,
                     const double            reference,
                     const double            force_level)
     {
+      if (!parameters.relative_to_load)
+        return parameters.tolerance *
+               std::max(parameters.residual_floor, reference);
       return parameters.tolerance *
-             std::max({parameters.residual_floor,
-                       parameters.relative_to_load ? reference : 0.,
-                       1e-6 * force_level});
+             std::max(
+               {parameters.residual_floor, reference, 1e-6 * force_level});
     }
 
     /// What one GMRES solve did.
@@ -285,7 +291,10 @@ namespace qsmpm
       report.force_level      = force_level;
       report.residual_history.push_back(norm);
       const double target =
-        internal::stopping_target(parameters, reference, force_level);
+        internal::stopping_target(parameters,
+                                  parameters.relative_to_load ? reference :
+                                                                norm,
+                                  force_level);
 
       double forcing = parameters.linear_tolerance, previous_norm = reference;
       // auto that no caller resolved (QuasiStaticProblem does, by the

@@ -22,13 +22,16 @@ namespace qsmpm
     /// An absolute floor of that test, in the units of the forces (the
     /// paper's 1); 0, the default, makes the test independent of the units.
     double residual_floor = 0.;
-    /// Whether the stopping test counts ||R_0||, the residual of the
-    /// step's prescribed increments (true, the paper). The fixed-stress
+    /// Whether the stopping test is relative to ||R_0||, the residual of
+    /// the step's prescribed increments (true, the paper), or to the
+    /// residual of the solve's first iterate (false). The fixed-stress
     /// iterations of a pore fluid set it false after their first solve:
     /// each later solve restarts from a converged increment after a small
-    /// change of the pore pressure, which a test relative to the step's
-    /// load would not resolve (the solve would return at once, and the
-    /// pressure would stop changing by the same amount in every iteration).
+    /// change of the pore pressure, and must resolve the forces of that
+    /// change, whatever their size against the step's load (a test
+    /// relative to the load, or to a fixed floor, lets the solve return at
+    /// once when they are small, and the pressure then changes by the same
+    /// amount in every iteration).
     bool         relative_to_load = true;
     unsigned int max_iterations   = 20;
     /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
