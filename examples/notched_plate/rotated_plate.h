@@ -203,8 +203,11 @@ namespace NotchedPlate
     measure_cracks(Result &result) const;
 
     /// The cracks for a picture: each point's position in the plate's
-    /// frame (xi, eta) and the energy its cracks dissipated over G_f (0 to
-    /// 1 per crack), gathered on rank 0 into @p file.
+    /// frame (xi, eta), the energy its cracks dissipated over G_f (0 to
+    /// 1 per crack), and that energy in the point's volume over G_f (a
+    /// length: sum_k D_k / L_k Omega_p / G_f, per unit thickness; summed
+    /// over the points, the crack_energy of Result over G_f), gathered on
+    /// rank 0 into @p file.
     void
     write_cracks(const std::string &file) const;
 
@@ -382,18 +385,26 @@ namespace NotchedPlate
   {
     const auto &model =
       dynamic_cast<const SmearedCracks<dim> &>(problem.points().get_model());
-    const auto         &offsets = problem.points().get_offsets();
-    std::vector<double> local;
+    const auto &offsets = problem.points().get_offsets();
+    std::array<typename SmearedCracks<dim>::CrackSummary, dim> cracks;
+    std::vector<double>                                        local;
     for (const auto &particle : problem.points().get_particle_handler())
       {
-        const double D = model.dissipated_over_fracture_energy(
-          {particle.get_properties().data() + offsets.state,
-           model.n_state_components()});
+        const auto                    data = particle.get_properties();
+        const ArrayView<const double> state(data.data() + offsets.state,
+                                            model.n_state_components());
+        const double D = model.dissipated_over_fracture_energy(state);
         if (D > 0.)
           {
+            double             energy = 0.;
+            const unsigned int count  = model.crack_summaries(state, cracks);
+            for (unsigned int k = 0; k < count; ++k)
+              energy += cracks[k].dissipated / cracks[k].length *
+                        data[offsets.initial_volume];
             const auto [xi, eta] =
               plate_frame(problem.points().initial_location(particle));
-            local.insert(local.end(), {xi, eta, D});
+            local.insert(local.end(),
+                         {xi, eta, D, energy / model.fracture_energy()});
           }
       }
     const auto all = Utilities::MPI::gather(MPI_COMM_WORLD, local, 0);
@@ -403,10 +414,12 @@ namespace NotchedPlate
       std::filesystem::path(file).parent_path());
     std::ofstream out(file);
     AssertThrow(out, ExcMessage("Cannot write <" + file + ">."));
-    out << "xi,eta,dissipated_over_Gf\n" << std::setprecision(6);
+    out << "xi,eta,dissipated_over_Gf,energy_over_Gf_m\n"
+        << std::setprecision(6);
     for (const auto &part : all)
-      for (unsigned int i = 0; i + 2 < part.size(); i += 3)
-        out << part[i] << ',' << part[i + 1] << ',' << part[i + 2] << '\n';
+      for (unsigned int i = 0; i + 3 < part.size(); i += 4)
+        out << part[i] << ',' << part[i + 1] << ',' << part[i + 2] << ','
+            << part[i + 3] << '\n';
   }
 
 
