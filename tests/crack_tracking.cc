@@ -32,6 +32,12 @@
 //    20 degrees out of it: the permissions by the same test with the eight
 //    corners of each cell (the plane crosses the cell), and its path point
 //    at its cell's centre.
+// 4. `Crack tracking localization` = 0.02 on the 2D grid, one crack as in
+//    1.: with its separation on the initial branch (2e-6, the elastic
+//    limit is tau_nf / K_0 = 1.2e-5: nothing dissipated) the permissions
+//    are those of 1.; with a separation of delta_0 / 2 (the linear law's
+//    D = G_f / 2 there, above 0.02 G_f) the body is localized and every
+//    point whose cell the path does not cross is held back, far ones too.
 // The same output on 1 and 2 ranks (the cracked points are gathered).
 #include "tests.h"
 
@@ -107,8 +113,11 @@ namespace
   class Test
   {
   public:
-    /// @p n unit cells per direction, cracking where x < @p region_end.
-    Test(const unsigned int n, const double region_end)
+    /// @p n unit cells per direction, cracking where x < @p region_end,
+    /// `Crack tracking localization` @p localization.
+    Test(const unsigned int n,
+         const double       region_end,
+         const double       localization = 0.)
       : grid(MPI_COMM_WORLD)
       , region_end(region_end)
     {
@@ -126,6 +135,7 @@ namespace
       parameters.crack_band_width                 = 1.;
       parameters.crack_tracking                   = true;
       parameters.tracking_radius                  = 2.;
+      parameters.tracking_localization            = localization;
       parameters.cracking_region =
         "x < " + std::to_string(region_end) + " ? 1 : 0";
       model  = std::make_unique<SmearedCracks<dim>>(parameters);
@@ -178,10 +188,13 @@ namespace
       return a;
     }
 
-    /// Run the update and compare the permissions with the corner test.
+    /// Run the update and compare the permissions with the corner test
+    /// (if @p localized, a point off every path's cells is held back even
+    /// far from the paths).
     void
     update_and_check(const std::vector<Path<dim>> &paths,
-                     const std::string            &step)
+                     const std::string            &step,
+                     const bool                    localized = false)
     {
       CrackTracking<dim>       tracking(*model);
       const unsigned long long held_back =
@@ -209,7 +222,7 @@ namespace
                 near    = true;
                 crossed = crossed || crosses(path, c);
               }
-          const bool may = !near || crossed;
+          const bool may = (!near && !localized) || crossed;
           expected_held += !may;
           wrong +=
             (may != (allowed == 1.)) || (allowed != 1. && allowed != -1.);
@@ -220,7 +233,8 @@ namespace
       outside_changed = Utilities::MPI::sum(outside_changed, MPI_COMM_WORLD);
       deallog << step << ": " << in_region
               << " points without a crack in the cracking region, "
-              << expected_held << " of them near a path but off its cells"
+              << expected_held
+              << " of them off the paths' cells and near one (or localized)"
               << std::endl;
       check_that(step + ": every permission as the corner test", wrong == 0);
       check_that(step + ": the number held back returned",
@@ -281,6 +295,18 @@ main(int argc, char *argv[])
   check("one crack: its path point unchanged",
         test.anchor_near(A).distance(first.anchor),
         1e-12);
+
+  // Localization after 0.02 G_f: tau_nf = G_f = 1e-3, delta_0 = 2.
+  for (const double separation : {2e-6, 1.})
+    {
+      Test<dim> test4(12, 10., 0.02);
+      test4.start_crack(A, unit_at<dim>(30.), separation);
+      test4.update_and_check({first},
+                             separation < 1. ?
+                               "localization, the crack on its initial branch" :
+                               "localization, the crack at delta_0 / 2",
+                             separation == 1.);
+    }
 
   // 3D: a plane crack.
   {

@@ -263,6 +263,20 @@ namespace qsmpm
           state[anchor + 1 + d] = anchors[first_local + i][d];
       }
 
+    // Localized: a crack has dissipated `Crack tracking localization` of
+    // G_f somewhere; new paths may then start only near existing ones.
+    double largest = 0.;
+    if (model.tracking_localization() > 0.)
+      for (auto &particle : particles)
+        largest =
+          std::max(largest,
+                   model.dissipated_over_fracture_energy(
+                     ArrayView<const double>(
+                       particle.get_properties().data() + first, n_state)));
+    const bool localized = model.tracking_localization() > 0. &&
+                           Utilities::MPI::max(largest, communicator) >=
+                             model.tracking_localization();
+
     // The permissions for the next step. A small tolerance lets a path
     // that runs exactly through the corners of cells (at 45 degrees, from
     // a cell's centre) include the cells that touch it there.
@@ -279,7 +293,7 @@ namespace qsmpm
           in_band =
             in_band || line.offset(centre) <= line.half_width * (1. + 1e-9);
         });
-        state[allowed] = (!near || in_band) ? 1. : -1.;
+        state[allowed] = ((!near && !localized) || in_band) ? 1. : -1.;
         held_back += (state[allowed] < 0.);
       }
     return Utilities::MPI::sum(held_back, communicator);

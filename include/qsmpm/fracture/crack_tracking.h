@@ -35,6 +35,11 @@ namespace qsmpm
    * Cells, not points, decide: all points of a cell see the same normal
    * strain across a band (SmearedCracks, "The smearing length").
    *
+   * With `Crack tracking localization` f > 0, once one crack has
+   * dissipated f G_f (per unit crack area) the body counts as localized:
+   * from then on a point away from all paths is held back as well, so that
+   * new cracks grow only in the bands of the existing paths.
+   *
    * A point that has started a crack in the step just committed gets its
    * path point from the nearest path within r (the one whose line passes
    * closest to its cell's centre): the projection of its cell's centre
@@ -60,7 +65,8 @@ namespace qsmpm
      * Anchor the cracks that started in the step just committed and set
      * every point's permission (`crack_allowed`) for the next step. Returns
      * the number of points (on all ranks) held back: in the cracking region,
-     * without a crack, near a crack path but outside its band.
+     * without a crack, near a crack path (anywhere, once localized) but
+     * outside its band.
      */
     unsigned long long
     update(MaterialPointSet<dim> &points, const MPI_Comm communicator) const;

@@ -219,6 +219,9 @@ namespace qsmpm
       /// Crack tracking (CrackTracking) and its radius in cell sizes.
       bool   crack_tracking  = false;
       double tracking_radius = 2.;
+      /// With crack tracking: once a crack has dissipated this fraction of
+      /// G_f, no new path starts away from the existing ones (0: off).
+      double tracking_localization = 0.;
 
       void
       add_parameters(ParameterHandler &prm);
@@ -304,6 +307,15 @@ namespace qsmpm
     tracking_radius() const
     {
       return tracking_radius_in_cells * band_width;
+    }
+
+    /// `Crack tracking localization`: the fraction of G_f that one crack
+    /// must have dissipated before new paths may start only near existing
+    /// ones (0: never).
+    double
+    tracking_localization() const
+    {
+      return localization;
     }
 
     /// L for the crack normal @p n.
@@ -457,6 +469,7 @@ namespace qsmpm
     const Softening               softening;
     const bool                    tracking;
     const double                  tracking_radius_in_cells;
+    const double                  localization;
     /// M = lambda + 2 mu.
     const double M;
     /// K = lambda + 2 mu / dim, the bulk modulus of C (plane stress: with
