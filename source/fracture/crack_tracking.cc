@@ -157,12 +157,21 @@ namespace qsmpm
     std::vector<double>                           anchored, started;
     std::vector<double *>                         local_started;
     std::array<typename Model::CrackSummary, dim> cracks;
+    // The largest energy a point's cracks have dissipated per unit crack
+    // area (for `Crack tracking localization`).
+    double largest = 0.;
     for (auto &particle : particles)
       {
-        double *state = particle.get_properties().data() + first;
-        if (model.crack_summaries(ArrayView<const double>(state, n_state),
-                                  cracks) == 0)
+        double            *state = particle.get_properties().data() + first;
+        const unsigned int n_cracks =
+          model.crack_summaries(ArrayView<const double>(state, n_state),
+                                cracks);
+        if (n_cracks == 0)
           continue;
+        double dissipated = 0.;
+        for (unsigned int k = 0; k < n_cracks; ++k)
+          dissipated += cracks[k].dissipated;
+        largest                 = std::max(largest, dissipated);
         const double half_width = 0.5 * cracks[0].length;
         if (state[anchor] > 0.)
           {
@@ -265,17 +274,10 @@ namespace qsmpm
 
     // Localized: a crack has dissipated `Crack tracking localization` of
     // G_f somewhere; new paths may then start only near existing ones.
-    double largest = 0.;
-    if (model.tracking_localization() > 0.)
-      for (auto &particle : particles)
-        largest =
-          std::max(largest,
-                   model.dissipated_over_fracture_energy(
-                     ArrayView<const double>(
-                       particle.get_properties().data() + first, n_state)));
-    const bool localized = model.tracking_localization() > 0. &&
-                           Utilities::MPI::max(largest, communicator) >=
-                             model.tracking_localization();
+    const bool localized =
+      model.tracking_localization() > 0. &&
+      Utilities::MPI::max(largest, communicator) >=
+        model.tracking_localization() * model.fracture_energy();
 
     // The permissions for the next step. A small tolerance lets a path
     // that runs exactly through the corners of cells (at 45 degrees, from
