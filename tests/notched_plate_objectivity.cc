@@ -3,30 +3,32 @@
 // from the source tree: a plate 0.4 m x 0.2 m with a notch 0.06 m deep,
 // E = 30 GPa, nu = 0.2, tau_nf = 3 MPa, G_f = 100 J/m^2, h = W/24, 2 x 2
 // points per cell, cracking anywhere with crack tracking, slip softening
-// with beta = 0.5, opening control) at three of its four angles, the grid
-// at 0, 15 and 30 degrees to the load axis, on all ranks of
-// MPI_COMM_WORLD. The references are the problem's, not the code's:
+// with beta = 0.5, crack tracking localization 0.02, crack-parallel
+// softening, opening control) at three of its four angles, the grid at 0,
+// 15 and 30 degrees to the load axis, on all ranks of MPI_COMM_WORLD. The
+// references are the problem's, not the code's:
 //
 // - every run breaks the plate (the load falls below 2 % of its peak);
 // - the crack normal (the energy-weighted mean of the cracks' normals) is
-//   the load axis, within 5 degrees (the issue's tolerance; measured 0.0,
-//   0.9 and 0.6 degrees);
+//   the load axis, within 5 degrees (the issue's tolerance; measured 0.1,
+//   0.4 and 0.3 degrees);
 // - the crack runs straight across the ligament: the least-squares line
 //   through the points that dissipated at least G_f / 2 is within 3
-//   degrees of the ligament (measured 0.0, 1.1, 0.9; without crack
+//   degrees of the ligament (measured 0.0, 1.3, 0.1; without crack
 //   tracking 6.5 degrees at 15: the band bends towards the grid's lines);
 // - the peak loads agree: each within 2 % of their mean (the issue's
-//   tolerance; measured 0.1 %);
-// - the energy the points' cracks dissipated is the fracture energy of the
-//   ligament, G_f (W - a0) = 14 J/m, within 4 % (measured 1.005, 0.966,
-//   1.012);
+//   tolerance; measured 0.1-0.6 %);
+// - the energy the points' cracks dissipated, with what the unfinished
+//   cracks of the band still hold at the stop (their points' elastic
+//   energy: run on to 0.2 % of the peak, the band dissipates it), is the
+//   fracture energy of the ligament, G_f (W - a0) = 14 J/m, within 4 %
+//   (measured 0.974, 0.988, 1.001);
 // - the work of the grips up to the end of the run (2 % of the peak) is
-//   G_f (W - a0) within 8 %. The issue asks for 2 %; measured 1.029, 1.016,
-//   1.068: the rest is the elastic energy that broken points release
-//   (Failed points = no tension) and the tail of the curve. The tolerance
-//   states what is reached, and fails if the band locks again: without
-//   crack tracking and slip softening the ratio is 1.27 at 30 degrees,
-//   with Failed points = keep cracks 1.93 at 15 degrees and still rising.
+//   G_f (W - a0) within 3 %. The issue asks for 2 %; measured 0.988,
+//   1.013, 1.021. The tolerance fails if the band locks again: without
+//   crack-parallel softening the ratio is 1.032 at 30 degrees, without
+//   crack tracking and slip softening 1.27, with Failed points = keep
+//   cracks 1.93 at 15 degrees and still rising.
 #include "rotated_plate.h"
 #include "tests.h"
 
@@ -68,12 +70,12 @@ main(int argc, char *argv[])
       check_that(at + "the plate broke", !r.failed);
       check(at + "|crack normal - load axis| (degrees)", r.normal - angle, 5.);
       check(at + "|crack path - ligament| (degrees)", r.path_angle, 3.);
-      check(at + "|cracks' energy / (G_f (W - a0)) - 1|",
-            r.crack_energy / G_f_ligament - 1.,
+      check(at + "|(cracks' energy + held) / (G_f (W - a0)) - 1|",
+            (r.crack_energy + r.stored_energy) / G_f_ligament - 1.,
             0.04);
       check(at + "|work / (G_f (W - a0)) - 1|",
             r.work / G_f_ligament - 1.,
-            0.08);
+            0.03);
       peaks.push_back(r.peak);
     }
   const double mean = (peaks[0] + peaks[1] + peaks[2]) / 3.;

@@ -71,6 +71,19 @@
 //    the dissipation up to failure are G_f / L to 1e-3 and 1e-6 as in 1.
 // 6. Bad entries: Maximum cracks per point = 3 in 2D and Threshold angle =
 //    0 stop with a message naming the entry.
+// 10. Crack-parallel softening: the path of 8 (pull along n at 30 degrees,
+//    stretch eps_tt = 0.5 tau_nf / E along t). Plane-stress elasticity
+//    with sigma n = T n gives the unfaded stress along the crack,
+//    E eps_tt + nu sigma_nn; with the entry it is that times T(delta*) /
+//    tau_nf, delta* the committed history (the implicit law's secant) and
+//    T the linear law written out here (T = tau_nf (delta_0 - delta*) /
+//    (delta_0 - delta_e), delta_e = tau_nf / K_0, K_0 = 100 E' / L), at
+//    every increment after the crack starts, to 1e-9 tau_nf; the traction
+//    across the crack is that of the same run without the entry, to 1e-9
+//    tau_nf (sigma_nn is not touched); at failure the point carries less
+//    than 1e-3 tau_nf (without the entry E eps_tt = 0.5 tau_nf), and the
+//    switch to no tension releases less than 1e-6 of the energy
+//    sigma_tt^2 / (2 E) that it releases without the entry (8).
 #include "tests.h"
 
 #include <qsmpm/base/utilities.h>
@@ -486,5 +499,61 @@ main()
               p.dissipated / (G_f / L) - 1.,
               1e-6);
       }
+  }
+
+  deallog << "10. Crack-parallel softening" << std::endl;
+  {
+    auto p_fade               = parameters();
+    p_fade.parallel_softening = true;
+    const SmearedCracks<2> fade(p_fade);
+    const double           theta = 30.;
+    const auto [nn, tt]          = directions(theta);
+    const double L =
+      h * (std::cos(theta * M_PI / 180.) + std::sin(theta * M_PI / 180.));
+    const double E_plane = E / (1. - nu * nu);
+    const double delta_0 = 2. * G_f / tau, delta_e = tau / (100. * E_plane / L);
+    const double e_tt   = 0.5 * tau / E;
+    const double e_peak = 1.5 * tau / E_plane;
+    const double e_end  = 1.2 * delta_0 / L;
+    // The committed history of the (first) crack in the state.
+    const unsigned int history     = 2 + 2 * 2 * 2;
+    const unsigned int failed_flag = fade.n_state_components() - 1;
+    MaterialPoint      p = make_point(fade), q = make_point(model);
+    double             worst_tt = 0., worst_nn = 0.;
+    for (unsigned int i = 0; i < 4000 && p.state[failed_flag] == 0.; ++i)
+      {
+        const double delta_star = p.state[history];
+        const bool   cracked    = count(p) > 0;
+        const auto   d_eps =
+          pull(p, theta, i < 1000 ? e_peak / 1000. : (e_end - e_peak) / 3000.) +
+          (i < 1000 ? e_tt / 1000. : 0.) * tt;
+        step(fade, p, d_eps);
+        step(model, q, d_eps);
+        if (!cracked)
+          continue;
+        const double T =
+          delta_star <= delta_e ?
+            tau :
+            std::max(tau * (delta_0 - delta_star) / (delta_0 - delta_e), 0.);
+        const double sigma_nn = p.stress * nn;
+        const double unfaded  = E * (p.strain * tt) + nu * sigma_nn;
+        worst_tt =
+          std::max(worst_tt, std::abs(p.stress * tt - T / tau * unfaded));
+        worst_nn = std::max(worst_nn, std::abs(sigma_nn - q.stress * nn));
+      }
+    check_that("  the point is flagged failed", p.state[failed_flag] == 1.);
+    check("  max |sigma_tt - T(delta*) / tau_nf (E eps_tt + nu sigma_nn)| / "
+          "tau_nf",
+          worst_tt / tau,
+          1e-9);
+    check("  max |sigma_nn - sigma_nn without the entry| / tau_nf",
+          worst_nn / tau,
+          1e-9);
+    check("  |sigma| / tau_nf at failure", p.stress.norm() / tau, 1e-3);
+    const double dissipated = p.dissipated;
+    step(fade, p, e_tt * tt);
+    check("  energy released by the switch / (sigma_tt^2 / 2E) of 8",
+          (p.dissipated - dissipated) / (0.5 * E * e_tt * e_tt),
+          1e-6);
   }
 }

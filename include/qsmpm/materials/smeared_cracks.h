@@ -222,6 +222,9 @@ namespace qsmpm
       /// With crack tracking: once a crack has dissipated this fraction of
       /// G_f, no new path starts away from the existing ones (0: off).
       double tracking_localization = 0.;
+      /// The stress along the plane of a point's single crack fades with
+      /// the crack's softening (`Crack-parallel softening`).
+      bool parallel_softening = false;
 
       void
       add_parameters(ParameterHandler &prm);
@@ -419,6 +422,18 @@ namespace qsmpm
     SymmetricTensor<2, dim>
     stress_of(const SymmetricTensor<2, dim> &eps, const Cracks &cracks) const;
 
+    /**
+     * `Crack-parallel softening`: for a point with one crack, remove the
+     * fraction 1 - T(delta*) / tau_nf of the stress along the crack's
+     * plane, P sigma P with P = I - n n (delta* the history the step's
+     * secant uses: fixed within a step, so that @p sigma stays linear in
+     * the jumps). The traction on the crack's plane, sigma n, is
+     * unchanged. Does nothing otherwise.
+     */
+    void
+    fade_parallel_stress(const Cracks            &cracks,
+                         SymmetricTensor<2, dim> &sigma) const;
+
     /// The cohesive traction of crack @p k at @p jump, and its derivative.
     Tensor<1, dim>
     traction(const Cracks         &cracks,
@@ -470,6 +485,7 @@ namespace qsmpm
     const bool                    tracking;
     const double                  tracking_radius_in_cells;
     const double                  localization;
+    const bool                    parallel_softening;
     /// M = lambda + 2 mu.
     const double M;
     /// K = lambda + 2 mu / dim, the bulk modulus of C (plane stress: with
