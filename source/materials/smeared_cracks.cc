@@ -465,6 +465,18 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  SmearedCracks<dim>::step_history(const Cracks      &cracks,
+                                   const unsigned int k) const
+  {
+    return cracks.history[k] + (integration == DamageIntegration::impl_ex ?
+                                  cracks.increment[k] :
+                                  0.);
+  }
+
+
+
+  template <int dim>
   void
   SmearedCracks<dim>::fade_parallel_stress(const Cracks            &cracks,
                                            SymmetricTensor<2, dim> &sigma) const
@@ -472,9 +484,7 @@ namespace qsmpm
     if (!parallel_softening || cracks.count != 1)
       return;
     const double L = cracks.length[0];
-    const double h =
-      cracks.history[0] +
-      (integration == DamageIntegration::impl_ex ? cracks.increment[0] : 0.);
+    const double h = step_history(cracks, 0);
     if (h <= tau_nf / initial_stiffness(L))
       return;
     const double         omega = 1. - cohesive_traction(h, L) / tau_nf;
@@ -624,11 +634,9 @@ namespace qsmpm
                    std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
     // IMPL-EX: the history of the step is extrapolated from the last one
     // and fixed, so that the traction is linear in the jump within a step.
-    const bool   impl_ex    = integration == DamageIntegration::impl_ex;
-    const bool   loading    = !impl_ex && delta > cracks.history[k];
-    const double delta_star = impl_ex ?
-                                cracks.history[k] + cracks.increment[k] :
-                                (loading ? delta : cracks.history[k]);
+    const bool loading =
+      integration != DamageIntegration::impl_ex && delta > cracks.history[k];
+    const double delta_star = loading ? delta : step_history(cracks, k);
     const double K0         = initial_stiffness(L);
     const double Kc         = contact_stiffness(L);
     // The secant q = T(delta*) / delta* (K0 on the initial branch).
@@ -944,16 +952,12 @@ namespace qsmpm
     std::array<double, max_unknowns * max_unknowns> matrix{};
     for (unsigned int k = 0; k < m; ++k)
       {
-        const Tensor<1, dim> &n = cracks.normal[k];
-        const double          L = cracks.length[k];
-        const double          h =
-          cracks.history[k] + (integration == DamageIntegration::impl_ex ?
-                                 cracks.increment[k] :
-                                 0.);
-        const double         q    = secant(h, L);
-        const bool           open = cracks.jump[k] * n >= 0.;
-        const Tensor<2, dim> nn   = outer_product(n, n);
-        const Tensor<2, dim> S =
+        const Tensor<1, dim> &n    = cracks.normal[k];
+        const double          L    = cracks.length[k];
+        const double          q    = secant(step_history(cracks, k), L);
+        const bool            open = cracks.jump[k] * n >= 0.;
+        const Tensor<2, dim>  nn   = outer_product(n, n);
+        const Tensor<2, dim>  S =
           q * (shear_weight() * (unit_symmetric_tensor<dim>() - nn)) +
           (open ? q : contact_stiffness(L)) * nn;
         for (unsigned int j = 0; j < m; ++j)

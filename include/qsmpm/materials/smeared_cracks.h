@@ -423,6 +423,15 @@ namespace qsmpm
     stress_of(const SymmetricTensor<2, dim> &eps, const Cracks &cracks) const;
 
     /**
+     * The history delta* of crack @p k that the secant of a step uses: the
+     * committed one, plus (IMPL-EX) the last step's increment, fixed within
+     * the step. (With the implicit law a loading crack uses its trial
+     * separation instead; see traction().)
+     */
+    double
+    step_history(const Cracks &cracks, const unsigned int k) const;
+
+    /**
      * `Crack-parallel softening`: for a point with one crack, remove the
      * fraction 1 - T(delta*) / tau_nf of the stress along the crack's
      * plane, P sigma P with P = I - n n (delta* the history the step's
