@@ -617,6 +617,10 @@ namespace qsmpm
                                         out + written_offsets.stress);
             out[written_offsets.J]      = J;
             out[written_offsets.volume] = volume;
+            if (written_offsets.fbar_volume_excess !=
+                numbers::invalid_unsigned_int)
+              out[written_offsets.fbar_volume_excess] +=
+                trace(scratch.grad_du[i]) - trace(scratch.strain_increment[i]);
           }
         else
           {
@@ -700,6 +704,10 @@ namespace qsmpm
                                        written_offsets.deformation_gradient);
             out[written_offsets.J]      = J;
             out[written_offsets.volume] = J * data[offsets.initial_volume];
+            if (written_offsets.fbar_volume_excess !=
+                numbers::invalid_unsigned_int)
+              out[written_offsets.fbar_volume_excess] +=
+                std::log(det_delta_F / mean_volume_change);
           }
         else
           {

@@ -22,6 +22,8 @@ namespace qsmpm
       line << "  cut-backs " << cut_backs;
     if (newton.line_search_steps > 0)
       line << "  line search " << newton.line_search_steps;
+    if (newton.stagnated)
+      line << "  stagnated at 1e-6 of the forces";
     if (null_modes_held > 0)
       line << "  held modes " << null_modes_held;
     return line.str();

@@ -124,11 +124,24 @@ namespace qsmpm
               half[d] =
                 gimp ? data[offsets.initial_half_length + d] :
                        0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
+            // With F-bar, the point's own volume change replaces the
+            // cell's that F-bar stores: the contact point moves in a step
+            // with the grid's motion at it, and the box of the next step
+            // must start where that left it. With the cell's volume change
+            // the contact force jumped between two steps at the same
+            // position by the penalty times the difference (a footing's
+            // force by up to 10 %, and Newton stalled under a load held
+            // constant).
+            const double excess =
+              offsets.fbar_volume_excess != numbers::invalid_unsigned_int ?
+                data[offsets.fbar_volume_excess] :
+                0.;
             const Tensor<2, dim> F =
               finite ?
-                Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
+                std::exp(excess / dim) *
+                  Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
                 Tensor<2, dim>(
-                  unit_symmetric_tensor<dim>() +
+                  (1. + excess / dim) * unit_symmetric_tensor<dim>() +
                   Utils::read_symmetric<dim>(data + offsets.strain));
             for (unsigned int b = 0; b < bodies.size(); ++b)
               {

@@ -250,6 +250,9 @@ namespace qsmpm
       offsets.contact = layout.size();
     for (const auto &body : contact_bodies)
       layout.add("contact_" + body, dim, Kind::vector);
+    if (!contact_bodies.empty() && formulation.fbar())
+      offsets.fbar_volume_excess =
+        layout.add("fbar_volume_excess", 1, Kind::scalar);
     offsets.state = layout.size();
     for (const auto &field : model.state_fields())
       layout.add(field.name, field.n_components, Kind::scalar);

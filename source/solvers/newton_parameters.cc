@@ -10,7 +10,17 @@ namespace qsmpm
       prm.add_parameter("Tolerance",
                         tolerance,
                         "gamma of the Newton stopping test ||R(du_n)|| <= "
-                        "gamma max(floor, ||R(du_0)||) (paper A.1, step 2).",
+                        "gamma max(floor, ||R(du_0)||, 1e-6 F) (paper A.1, "
+                        "step 2), F the forces in the body (||R(du_0)|| on "
+                        "all rows, the supports' reactions included). A "
+                        "Newton iteration that does not halve a residual "
+                        "already below 1e-6 F ends the step as converged "
+                        "(\"stagnated at 1e-6 of the forces\" in its "
+                        "progress line): under a load held constant a "
+                        "step starts in equilibrium up to the points' "
+                        "motion, and the kinks of contact and plasticity "
+                        "keep Newton from reaching the target relative to "
+                        "that tiny first residual.",
                         Patterns::Double(0., 1.));
       prm.add_parameter("Residual floor",
                         residual_floor,

@@ -114,6 +114,13 @@ namespace qsmpm
       /// With rigid bodies only: per body, the contact traction on the
       /// point's surface (dim doubles each; RigidContact).
       unsigned int contact = numbers::invalid_unsigned_int;
+      /// With rigid bodies and F-bar only: the point's own volumetric
+      /// strain minus the one F-bar gives it (its cell's mean), summed over
+      /// the steps (small strain: traces of the increments; finite strain:
+      /// logarithms of their determinants). The point's box, with which
+      /// it touches a body, follows the grid's motion with it
+      /// (RigidContact).
+      unsigned int fbar_volume_excess = numbers::invalid_unsigned_int;
       /// First of the constitutive model's own fields.
       unsigned int state;
     };

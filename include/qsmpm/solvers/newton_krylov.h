@@ -39,6 +39,10 @@ namespace qsmpm
     /// The force level of the stopping test (internal::stopping_target())
     /// at the first iterate: ||R|| there.
     double force_level = 0.;
+    /// Converged because a Newton iteration did not halve a residual
+    /// already below 1e-6 of the force level (internal::force_noise()),
+    /// above the stopping target.
+    bool stagnated = false;
   };
 
 
@@ -81,6 +85,25 @@ namespace qsmpm
     }
 
     /**
+     * The size of a residual that is noise against the forces in the body,
+     * @p force_level (||R|| on all degrees of freedom, the supports'
+     * reactions included): 1e-6 of them. It bounds Newton's target from
+     * below (stopping_target()), and a Newton iteration that cannot lower a
+     * residual of that size ends the solve as converged
+     * (NewtonReport::stagnated): a step whose load does not change (a load
+     * held constant) starts in equilibrium up to the points' motion in the
+     * last step, and its target, relative to that tiny first residual,
+     * then lies below what the kinks of contact and plasticity let Newton
+     * reach (a footing held at a constant force on von Mises soil stalled
+     * at 6e-7 of the forces with a target of 3e-12 of them).
+     */
+    inline double
+    force_noise(const double force_level)
+    {
+      return 1e-6 * force_level;
+    }
+
+    /**
      * The target of Newton's stopping test for a step whose first guess
      * du_0 has the residual norm @p reference on the free degrees of
      * freedom and @p force_level on all of them (the rows of the supports
@@ -104,9 +127,9 @@ namespace qsmpm
       if (!parameters.relative_to_load)
         return parameters.tolerance *
                std::max(parameters.residual_floor, reference);
-      return parameters.tolerance *
-             std::max(
-               {parameters.residual_floor, reference, 1e-6 * force_level});
+      return parameters.tolerance * std::max({parameters.residual_floor,
+                                              reference,
+                                              force_noise(force_level)});
     }
 
     /// What one GMRES solve did.
@@ -360,19 +383,38 @@ namespace qsmpm
             }
 
           // A.1 step 5, with an optional backtracking line search.
-          double alpha = 1.;
+          double alpha     = 1.;
+          bool   stagnated = false;
           for (unsigned int k = 0;; ++k)
             {
               trial = du;
               trial.add(alpha, s);
               const Evaluation trial_evaluation = op.residual(trial, R);
               const double     trial_norm = internal::free_norm(op, R, rhs);
-              if (k == parameters.max_line_search_steps ||
-                  (std::isfinite(trial_norm) &&
-                   trial_norm <= (1. - 1e-4 * alpha) * norm))
+              const bool       decrease   = std::isfinite(trial_norm) &&
+                                    trial_norm <= (1. - 1e-4 * alpha) * norm;
+              if (decrease || k == parameters.max_line_search_steps)
                 {
-                  norm       = trial_norm;
-                  evaluation = trial_evaluation;
+                  // Below the forces' noise, an iteration that does not
+                  // halve the residual is no longer Newton's convergence
+                  // but the kinks of contact and plasticity (or the
+                  // finite differences) at that scale: the solve stops,
+                  // at the trial if it lowered the residual.
+                  stagnated = parameters.relative_to_load &&
+                              norm <= internal::force_noise(force_level) &&
+                              !(decrease && trial_norm <= 0.5 * norm);
+                  if (stagnated && !decrease)
+                    {
+                      // R holds the trial's residual: the one of du again.
+                      evaluation = op.residual(du, R);
+                      trial      = du;
+                      alpha      = 0.;
+                    }
+                  else
+                    {
+                      norm       = trial_norm;
+                      evaluation = trial_evaluation;
+                    }
                   break;
                 }
               alpha *= 0.5;
@@ -382,6 +424,13 @@ namespace qsmpm
           report.newton_iterations = n + 1;
           report.residual_history.push_back(norm);
           print_iteration(report, norm, linear, alpha);
+          if (stagnated)
+            {
+              report.final_residual = norm;
+              report.converged      = true;
+              report.stagnated      = true;
+              return report;
+            }
         }
     }
 
