@@ -616,6 +616,7 @@ namespace qsmpm
         report.inexact_linear_solves += next.inexact_linear_solves;
         report.line_search_steps += next.line_search_steps;
         report.final_residual = next.final_residual;
+        report.stagnated      = report.stagnated || next.stagnated;
         if (!report.converged || change <= parameters.coupling_tolerance)
           return;
         if (coupling_iterations >= parameters.max_coupling_iterations)

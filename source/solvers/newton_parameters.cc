@@ -14,13 +14,14 @@ namespace qsmpm
                         "step 2), F the forces in the body (||R(du_0)|| on "
                         "all rows, the supports' reactions included). A "
                         "Newton iteration that does not halve a residual "
-                        "already below 1e-6 F ends the step as converged "
-                        "(\"stagnated at 1e-6 of the forces\" in its "
-                        "progress line): under a load held constant a "
-                        "step starts in equilibrium up to the points' "
-                        "motion, and the kinks of contact and plasticity "
-                        "keep Newton from reaching the target relative to "
-                        "that tiny first residual.",
+                        "already below 1e-6 F ends the step (or, with a "
+                        "pore fluid, the solve of a fixed-stress "
+                        "iteration) as converged (\"stagnated at 1e-6 of "
+                        "the forces\" in its progress line): under a load "
+                        "held constant a step starts in equilibrium up to "
+                        "the points' motion, and the kinks of contact and "
+                        "plasticity keep Newton from reaching the target "
+                        "relative to that tiny first residual.",
                         Patterns::Double(0., 1.));
       prm.add_parameter("Residual floor",
                         residual_floor,

@@ -105,13 +105,16 @@ namespace qsmpm
 
     /**
      * The smallest size of the increments of interest for the
-     * Jacobian-free products (JacobianFreeOperator): with rigid bodies,
-     * their motion in the step at every degree of freedom; else the
-     * constructor's @p increment_floor (0 by default). A step of a
+     * Jacobian-free products (JacobianFreeOperator): the constructor's
+     * @p increment_floor (0 by default) or, if larger, the rigid bodies'
+     * motion in the step at every degree of freedom. A step of a
      * consolidating body under a constant load moves it by a tiny amount
      * while its stresses are large: finite differences relative to that
      * increment would be round-off (QuasiStaticProblem gives a floor of
-     * 1e-6 of typical_increment_norm() with a pore fluid).
+     * 1e-6 of typical_increment_norm() with a pore fluid). The floor holds
+     * with rigid bodies too: a footing held at a constant force does not
+     * move by a prescribed motion, and without the floor its consolidating
+     * soil's Newton iterations stalled (the products were round-off).
      */
     double
     increment_scale_floor() const
@@ -122,7 +125,8 @@ namespace qsmpm
       // of the step) is none.
       const double motion =
         contact->motion_scale(residual_evaluator.ghosted_layout());
-      return motion > 1e-10 * typical_increment_norm() ? motion : 0.;
+      return std::max(increment_floor,
+                      motion > 1e-10 * typical_increment_norm() ? motion : 0.);
     }
 
     /**

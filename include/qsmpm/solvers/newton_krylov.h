@@ -400,8 +400,7 @@ namespace qsmpm
                   // but the kinks of contact and plasticity (or the
                   // finite differences) at that scale: the solve stops,
                   // at the trial if it lowered the residual.
-                  stagnated = parameters.relative_to_load &&
-                              norm <= internal::force_noise(force_level) &&
+                  stagnated = norm <= internal::force_noise(force_level) &&
                               !(decrease && trial_norm <= 0.5 * norm);
                   if (stagnated && !decrease)
                     {
