@@ -30,6 +30,7 @@
 // about 6 % of dq away from Terzaghi's (this test then fails). A skeleton with
 // a wrong bulk modulus, a wrong coupling or a lost initial stress fails by far
 // more.
+#include "cam_clay_column.h"
 #include "prm_text.h"
 #include "tests.h"
 
@@ -53,23 +54,6 @@ namespace
       }
     return dq * p;
   }
-
-  /// terzaghi.prm with @p edits (a line's text and its replacement; the
-  /// line must be there), run with its output into @p directory; returns
-  /// probes.csv.
-  std::string
-  run(const std::vector<std::pair<std::string, std::string>> &edits,
-      const std::string                                      &directory)
-  {
-    // Terzaghi's theory is geometrically linear: the points keep their
-    // volumes (with the default update, the initial stress p0 times the
-    // volume change adds forces of p0 dq / E_oed = 1.1 % of dq).
-    const std::string text =
-      edited_example("consolidation/terzaghi.prm", edits, directory) +
-      "subsection Material points\n  set Update volumes = false\nend\n";
-    run_from_text<2>(text);
-    return directory + "/probes.csv";
-  }
 } // namespace
 
 int
@@ -78,22 +62,14 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   qsmpm_tests::MPILogInitAll       log;
 
-  const std::string cam_clay = run({{"  set Model = linear elastic\n",
-                                     "  set Model = Modified Cam Clay\n"
-                                     "  subsection Modified Cam Clay\n"
-                                     "    set Shear modulus = 6e5\n"
-                                     "    set Swelling index = 0.02\n"
-                                     "    set Compression index = 0.1\n"
-                                     "    set Critical state slope = 1.2\n"
-                                     "    set Initial pressure = 2e4\n"
-                                     "    set Overconsolidation ratio = 2\n"
-                                     "  end\n"},
-                                    {"set Function expression = 0; -1e4",
-                                     "set Function expression = 0; -20100"}},
-                                   "cam-clay-out");
-  const std::string linear   = run({{"set Function expression = 0; -1e4",
-                                     "set Function expression = 0; -100"}},
-                                 "linear-out");
+  const std::string cam_clay =
+    run_column({cam_clay_skeleton("2"),
+                {"set Function expression = 0; -1e4",
+                 "set Function expression = 0; -20100"}},
+               "cam-clay-out");
+  const std::string linear = run_column({{"set Function expression = 0; -1e4",
+                                          "set Function expression = 0; -100"}},
+                                        "linear-out");
 
   const auto         rows = read_csv(cam_clay), reference = read_csv(linear);
   const unsigned int t_col = csv_column(cam_clay, "load_factor");

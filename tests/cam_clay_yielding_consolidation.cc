@@ -27,6 +27,7 @@
 // - The skeleton did yield: the settlement is more than 1.5 times that of
 //   the elastic skeleton under the same surcharge, dq y / E_oed with E_oed
 //   = K + 4 G / 3 = 1.8 MPa at p0 (measured 1.96 times).
+#include "cam_clay_column.h"
 #include "prm_text.h"
 #include "tests.h"
 
@@ -38,30 +39,14 @@ namespace
 {
   constexpr double dq = 1e3, E_oed = 1.8e6;
 
-  /// terzaghi.prm with Cam Clay and the replacements @p edits, run with its
-  /// output into @p directory; returns probes.csv.
+  /// The Cam Clay column, normally consolidated, with the replacements
+  /// @p edits, run with its output into @p directory; returns probes.csv.
   std::string
   run(std::vector<std::pair<std::string, std::string>> edits,
       const std::string                               &directory)
   {
-    edits.insert(edits.begin(),
-                 {"  set Model = linear elastic\n",
-                  "  set Model = Modified Cam Clay\n"
-                  "  subsection Modified Cam Clay\n"
-                  "    set Shear modulus = 6e5\n"
-                  "    set Swelling index = 0.02\n"
-                  "    set Compression index = 0.1\n"
-                  "    set Critical state slope = 1.2\n"
-                  "    set Initial pressure = 2e4\n"
-                  "    set Overconsolidation ratio = 1\n"
-                  "  end\n"});
-    // As in cam_clay_consolidation: the points keep their volumes, so that
-    // both runs solve the same geometrically linear problem.
-    const std::string text =
-      edited_example("consolidation/terzaghi.prm", edits, directory) +
-      "subsection Material points\n  set Update volumes = false\nend\n";
-    run_from_text<2>(text);
-    return directory + "/probes.csv";
+    edits.insert(edits.begin(), cam_clay_skeleton("1"));
+    return run_column(edits, directory);
   }
 
   double

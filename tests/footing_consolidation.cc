@@ -55,17 +55,6 @@ namespace
     run_from_text<2>(text);
   }
 
-  /// The column @p column of a CSV file, row by row.
-  std::vector<double>
-  column(const std::string &csv, const std::string &name)
-  {
-    const unsigned int  c = csv_column(csv, name);
-    std::vector<double> values;
-    for (const auto &row : read_csv(csv))
-      values.push_back(row[c]);
-    return values;
-  }
-
   const std::pair<std::string, std::string> dry{"set Enabled = true",
                                                 "set Enabled = false"};
 } // namespace
@@ -79,11 +68,11 @@ main(int argc, char **argv)
   deallog << "1. footing-consolidation.prm" << std::endl;
   {
     run("footing-consolidation.prm", {}, "consolidation-out");
-    const auto u = column("consolidation-out/probes.csv", "probe0_u_y");
+    const auto u = csv_values("consolidation-out/probes.csv", "probe0_u_y");
     const auto p =
-      column("consolidation-out/probes.csv", "probe1_pore_pressure");
+      csv_values("consolidation-out/probes.csv", "probe1_pore_pressure");
     const auto U =
-      column("consolidation-out/reactions.csv", "consolidation_degree");
+      csv_values("consolidation-out/reactions.csv", "consolidation_degree");
 
     // Loaded in one step: the load's time is 1e-5 s.
     const std::vector<std::pair<std::string, std::string>> one_step = {
@@ -93,25 +82,22 @@ main(int argc, char **argv)
     drained.push_back(dry);
     run("footing-consolidation.prm", drained, "drained-out");
     const double s_drained =
-      -column("drained-out/probes.csv", "probe0_u_y").back();
+      -csv_values("drained-out/probes.csv", "probe0_u_y").back();
 
-    const double G = 1e6 / (2. * 1.3), nu_u = 0.4999;
+    const double nu_u      = 0.4999;
     auto         undrained = drained;
-    undrained.push_back(
-      {"set Young's modulus = 1e6",
-       "set Young's modulus = " + std::to_string(2. * G * (1. + nu_u))});
-    undrained.push_back({"set Poisson's ratio = 0.3",
-                         "set Poisson's ratio = " + std::to_string(nu_u)});
+    for (const auto &edit : same_shear_modulus("1e6", "0.3", nu_u))
+      undrained.push_back(edit);
     undrained.push_back({"set Points per cell per direction = 2",
                          "set Points per cell per direction = 2\n"
                          "  set Volumetric locking = F-bar"});
     run("footing-consolidation.prm", undrained, "undrained-out");
     const double s_undrained =
-      -column("undrained-out/probes.csv", "probe0_u_y").back();
+      -csv_values("undrained-out/probes.csv", "probe0_u_y").back();
     const double p_undrained =
       -(1. + nu_u) / 3. *
-      (column("undrained-out/probes.csv", "probe1_stress_xx").back() +
-       column("undrained-out/probes.csv", "probe1_stress_yy").back());
+      (csv_values("undrained-out/probes.csv", "probe1_stress_xx").back() +
+       csv_values("undrained-out/probes.csv", "probe1_stress_yy").back());
 
     bool monotone = true;
     for (unsigned int i = 1; i < u.size(); ++i)
@@ -137,7 +123,8 @@ main(int argc, char **argv)
   {
     // The pressure on the footing of half-width a = 1 at the end, over c.
     const auto q_end = [](const std::string &directory) {
-      return column(directory + "/reactions.csv", "footing_Fy").back() / 100.;
+      return csv_values(directory + "/reactions.csv", "footing_Fy").back() /
+             100.;
     };
     run("footing-undrained.prm", {}, "undrained-footing-out");
     const double q_undrained = q_end("undrained-footing-out");

@@ -49,12 +49,7 @@ namespace
               const std::string                                      &directory)
   {
     run_from_text<2>(edited_example(file, edits, directory));
-    const std::string   csv = directory + "/reactions.csv";
-    const unsigned int  c   = csv_column(csv, "footing_u");
-    std::vector<double> u;
-    for (const auto &row : read_csv(csv))
-      u.push_back(row[c]);
-    return u;
+    return csv_values(directory + "/reactions.csv", "footing_u");
   }
 } // namespace
 
@@ -82,13 +77,9 @@ main(int argc, char **argv)
     {"set Number of steps = 20000000", "set Number of steps = 1"}};
   const double s_drained = settlements(one_step, "drained-out").back();
 
-  const double G = 1e6 / (2. * 1.3), nu_u = 0.499;
-  auto         undrained = one_step;
-  undrained.push_back(
-    {"set Young's modulus = 1e6",
-     "set Young's modulus = " + std::to_string(2. * G * (1. + nu_u))});
-  undrained.push_back({"set Poisson's ratio = 0.3",
-                       "set Poisson's ratio = " + std::to_string(nu_u)});
+  auto undrained = one_step;
+  for (const auto &edit : same_shear_modulus("1e6", "0.3", 0.499))
+    undrained.push_back(edit);
   const double s_undrained = settlements(undrained, "undrained-out").back();
 
   bool   monotone = true;

@@ -132,6 +132,34 @@ namespace qsmpm_tests
         return i;
     throw std::runtime_error(filename + " has no column " + name);
   }
+
+  /// The column @p name of a CSV file, row by row.
+  inline std::vector<double>
+  csv_values(const std::string &filename, const std::string &name)
+  {
+    const unsigned int  c = csv_column(filename, name);
+    std::vector<double> values;
+    for (const auto &row : read_csv(filename))
+      values.push_back(row[c]);
+    return values;
+  }
+
+  /// The edits (for edited_example()) that replace an isotropic elastic
+  /// material's entries "set Young's modulus = @p E" and "set Poisson's
+  /// ratio = @p nu" by those of a nearly incompressible solid of the same
+  /// shear modulus: nu_u and E_u = 2 G (1 + nu_u). An elastic skeleton
+  /// with incompressible pore water responds so when loaded undrained.
+  inline std::vector<std::pair<std::string, std::string>>
+  same_shear_modulus(const std::string &E,
+                     const std::string &nu,
+                     const double       nu_u)
+  {
+    const double G = std::stod(E) / (2. * (1. + std::stod(nu)));
+    return {{"set Young's modulus = " + E,
+             "set Young's modulus = " + std::to_string(2. * G * (1. + nu_u))},
+            {"set Poisson's ratio = " + nu,
+             "set Poisson's ratio = " + std::to_string(nu_u)}};
+  }
 } // namespace qsmpm_tests
 
 #endif
