@@ -5,15 +5,18 @@
 // up to 10 steps; for every other model the paper's settings.
 //
 // 1. resolve() itself: the three cases, and entries that are not auto
-//    are kept.
+//    are kept; the preconditioner's auto (direct up to 20000 dofs in 2D,
+//    1500 in 3D, or the threshold given).
 // 2. A strip under a partial traction (the benchmark strip, 32 x 32 cells,
-//    5 load steps), linear elastic, from .prm text with no solver entry
-//    against the same with the paper's settings written out: the points'
-//    displacements agree to 1e-6 of the largest (both solved to a Newton
-//    tolerance of 1e-9: the two paths differ by what Newton leaves, not by
-//    the answer), and the defaults need fewer GMRES iterations (the reason
-//    for them: the extrapolated guess of a proportional load meets the
-//    stopping test in one Newton iteration).
+//    5 load steps), linear elastic, with AMG, from .prm text with no other
+//    solver entry against the same with the paper's settings written out:
+//    the points' displacements agree to 1e-6 of the largest (both solved
+//    to a Newton tolerance of 1e-9: the two paths differ by what Newton
+//    leaves, not by the answer), and the defaults need fewer GMRES
+//    iterations (the reason for them: the extrapolated guess of a
+//    proportional load meets the stopping test in one Newton iteration).
+//    With no solver entry at all (2178 dofs: the direct factorization)
+//    the displacements agree to 1e-6 as well.
 // 3. The same strip with von Mises plasticity (yield stress 600; it yields
 //    under the loaded half's edge, below the punch's limit load, about
 //    (2 + pi) 600 / sqrt 3 = 1780): the defaults are the paper's, so the
@@ -31,7 +34,9 @@ namespace
   using Forcing      = NewtonParameters::Forcing;
 
   std::string
-  strip_prm(const std::string &model, const bool paper_settings)
+  strip_prm(const std::string &model,
+            const bool         paper_settings,
+            const std::string &preconditioner)
   {
     std::ostringstream prm;
     prm << "set Dimension = 2\n"
@@ -51,6 +56,8 @@ namespace
         << "  end\nend\n"
         << "subsection Load stepping\n  set Number of steps = 5\nend\n"
         << "subsection Nonlinear solver\n  set Tolerance = 1e-9\n";
+    if (!preconditioner.empty())
+      prm << "  set Preconditioner = " << preconditioner << "\n";
     if (paper_settings)
       prm << "  set Preconditioner reuse steps = 1\n"
           << "  set Forcing term = constant\n"
@@ -69,10 +76,13 @@ namespace
   };
 
   Run
-  run(const std::string &model, const bool paper_settings)
+  run(const std::string &model,
+      const bool         paper_settings,
+      const std::string &preconditioner = "")
   {
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    initialize_from_text(problem, strip_prm(model, paper_settings));
+    initialize_from_text(problem,
+                         strip_prm(model, paper_settings, preconditioner));
     Run result;
     problem.set_step_callback(
       [&](const QuasiStaticProblem<2>::StepReport &report) {
@@ -131,16 +141,28 @@ main(int argc, char **argv)
              kept.preconditioner_reuse_steps == 3 &&
                kept.forcing == Forcing::constant &&
                kept.initial_guess == InitialGuess::boundary_values);
+  NewtonParameters threshold_given;
+  threshold_given.direct_threshold = 300;
+  check_that("preconditioner auto: direct up to 20000 dofs in 2D, 1500 in "
+             "3D, or the threshold given",
+             defaults.preconditioner == "auto" &&
+               defaults.direct_threshold_for(2) == 20000 &&
+               defaults.direct_threshold_for(3) == 1500 &&
+               threshold_given.direct_threshold_for(3) == 300);
 
   deallog << "2. Linear elastic strip: defaults against the paper's settings"
           << std::endl;
-  const Run elastic_auto  = run("linear elastic", false);
-  const Run elastic_paper = run("linear elastic", true);
+  const Run elastic_auto  = run("linear elastic", false, "amg");
+  const Run elastic_paper = run("linear elastic", true, "amg");
   check("max |u_auto - u_paper| / max |u|",
         difference(elastic_paper, elastic_auto),
         1e-6);
   check_that("fewer GMRES iterations with the defaults",
              elastic_auto.gmres < elastic_paper.gmres);
+  const Run elastic_direct = run("linear elastic", false);
+  check("no solver entry (direct): max |u_direct - u_paper| / max |u|",
+        difference(elastic_paper, elastic_direct),
+        1e-6);
 
   deallog << "3. Von Mises strip: the defaults are the paper's settings"
           << std::endl;

@@ -252,7 +252,7 @@ namespace qsmpm
         std::string type       = solver_prm.preconditioner;
         if (type == "auto")
           type = background_grid.get_dof_handler().n_dofs() <=
-                     solver_prm.direct_threshold ?
+                     solver_prm.direct_threshold_for(dim) ?
                    "direct" :
                    "amg";
         preconditioner =
