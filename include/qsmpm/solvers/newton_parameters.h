@@ -42,7 +42,7 @@ namespace qsmpm
     double sqrt_eps_prec = 1e-7;
     /// none, jacobi, amg, direct (see Preconditioner) or auto (direct up
     /// to direct_threshold_for(dim) dofs, amg above).
-    std::string preconditioner = "auto";
+    std::string preconditioner = "amg";
     /// With preconditioner = auto: the largest number of dofs for direct;
     /// 0 = by the dimension (direct_threshold_for()).
     unsigned int direct_threshold = 0;
