@@ -119,12 +119,10 @@ namespace qsmpm
      * With preconditioner = auto, the largest number of dofs for which a
      * problem in @p dim dimensions gets the direct factorization:
      * direct_threshold, or with 0 (the default) 20000 in 2D and 1500 in
-     * 3D. KLU's factors of a 3D stiffness fill in far faster than those of
-     * a 2D one (measured on a von Mises cube with the driver, one
-     * factorization against one AMG set-up: 2 ms against 4 ms at 375
-     * dofs, 13 ms against 22 ms at 1029, 72 ms against 21 ms at 2187,
-     * 2.3 s against 0.11 s at 6591); in 2D a factorization of 13,122
-     * dofs took 71 ms against AMG's 51 ms.
+     * 3D, where KLU's factors fill in far faster and a factorization
+     * costs more than AMG's set-up from about 1500 dofs on (measured with
+     * benchmarks/cube-preconditioner.prm; doc/benchmarks.md, "Direct or
+     * AMG by default").
      */
     unsigned int
     direct_threshold_for(const unsigned int dim) const;
