@@ -10,14 +10,22 @@
 // checks that "direct" also works where K (elastic at the committed state)
 // is only an approximation of the Jacobian: same reaction as with AMG.
 // Preconditioner = auto must take the direct factorization below its
-// threshold of dofs and AMG above.
+// threshold of dofs and AMG above. Direct retry: a step that AMG cannot
+// solve (GMRES starved to 2 iterations per Newton iteration, Newton to 3)
+// is solved with the direct factorization without a cut-back, the weight
+// balanced as above, and the next step goes back to AMG; without the retry
+// the same run ends in an error, which without a preconditioner names
+// GMRES's stall (Newton gives up after two GMRES solves in a row that reach
+// their limit with less than a tenth of the residual removed).
 #include "tests.h"
 
 #include <deal.II/base/function.h>
+#include <functional>
 #include <iostream>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <qsmpm/materials/von_mises.h>
+#include <sstream>
 
 // Top displacement (0, -0.005 t): pressed down by 0.5 % of the height.
 class Press : public Function<2>
@@ -39,6 +47,7 @@ struct Result
   double                        gmres_per_newton;
   Tensor<1, 2>                  reaction;
   unsigned int                  steps;
+  unsigned int                  cut_backs;
   unsigned int                  builds;
   TrilinosWrappers::MPI::Vector increment;
 };
@@ -47,7 +56,9 @@ Result
 solve(const std::string &preconditioner,
       const bool         plastic,
       const unsigned int reuse_steps      = 1,
-      const unsigned int direct_threshold = 20000)
+      const unsigned int direct_threshold = 20000,
+      const std::function<void(qsmpm::QuasiStaticProblem<2>::Parameters &)>
+        &adjust = {})
 {
   constexpr int                dim = 2;
   qsmpm::QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
@@ -89,16 +100,20 @@ solve(const std::string &preconditioner,
   prm.nonlinear_solver.direct_threshold           = direct_threshold;
   prm.output.directory                            = "results";
   prm.output.interval                             = 0;
+  if (adjust)
+    adjust(prm);
   problem.run();
-  unsigned int newton = 0, gmres = 0;
+  unsigned int newton = 0, gmres = 0, cut_backs = 0;
   for (const auto &report : problem.step_reports())
     {
       newton += report.newton.newton_iterations;
       gmres += report.newton.linear_iterations;
+      cut_backs += report.cut_backs;
     }
   return {double(gmres) / newton,
           problem.reactions()[0],
           static_cast<unsigned int>(problem.step_reports().size()),
+          cut_backs,
           problem.n_preconditioner_builds(),
           problem.increment()};
 }
@@ -145,6 +160,59 @@ main(int argc, char *argv[])
     "  auto, threshold 4000: GMRES iterations per Newton step (amg)",
     solve("auto", false, 1, 4000).gmres_per_newton,
     3.);
+
+  // Direct retry. AMG cannot reach the linear tolerance 1e-8 in two GMRES
+  // iterations (it needs 3 or more, above), nor Newton the tolerance 1e-10
+  // in three iterations with such corrections; the direct factorization
+  // needs one GMRES iteration per Newton step. Two load steps: each fails
+  // with AMG and is tried again with the direct factorization, so
+  // preconditioners are built four times (AMG, direct, AMG, direct) if
+  // AMG returns after the retried step, three if the direct factorization
+  // stayed.
+  deallog << "Direct retry: GMRES with AMG starved (2 iterations per Newton "
+             "step, 3 Newton steps), 2 load steps"
+          << std::endl;
+  const auto starve = [](const bool retry) {
+    return [retry](qsmpm::QuasiStaticProblem<2>::Parameters &prm) {
+      prm.nonlinear_solver.max_linear_iterations = 2;
+      prm.nonlinear_solver.max_iterations        = 3;
+      prm.nonlinear_solver.direct_retry          = retry;
+      prm.load_stepping.n_steps                  = 2;
+    };
+  };
+  const Result retried = solve("amg", false, 1, 20000, starve(true));
+  check("  retried: |R_y - weight| / weight",
+        std::abs(retried.reaction[1] - 2e-3) / 2e-3,
+        1e-8);
+  check_that("  retried: 2 steps, no cut-back",
+             retried.steps == 2 && retried.cut_backs == 0);
+  check_that("  retried: 4 preconditioners built (AMG again after a retry)",
+             retried.builds == 4);
+  // Without the retry every attempt fails; GMRES, starved, removes less
+  // than a tenth of its residual (without a preconditioner surely), so
+  // Newton ends each attempt after two such solves (NewtonKrylov's stall
+  // test) and the error names the stall.
+  for (const std::string preconditioner : {"amg", "none"})
+    {
+      std::string error;
+      try
+        {
+          solve(preconditioner, false, 1, 20000, starve(false));
+        }
+      catch (const std::exception &e)
+        {
+          // deal.II wraps the message's lines: one space between words.
+          std::istringstream words(e.what());
+          for (std::string word; words >> word;)
+            error += word + " ";
+        }
+      check_that("  " + preconditioner +
+                   " without Direct retry: the run ends in an error",
+                 !error.empty());
+      if (preconditioner == "none")
+        check_that("  none: the error names GMRES's stall",
+                   error.find("GMRES stalled") != std::string::npos);
+    }
 
   deallog << "von Mises block, 16 x 8 cells, pressed to 5 x the yield strain "
              "in 8 steps"

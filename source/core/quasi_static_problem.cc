@@ -245,19 +245,8 @@ namespace qsmpm
           points(),
           cache,
           prm_values.material_points.update_volumes);
-        // auto: a direct factorization for small problems, where its cost
-        // is that of a few AMG set-ups and it needs no tuning; AMG above,
-        // where the fill-in of the factors grows faster than the dofs.
-        const auto &solver_prm = prm_values.nonlinear_solver;
-        std::string type       = solver_prm.preconditioner;
-        if (type == "auto")
-          type = background_grid.get_dof_handler().n_dofs() <=
-                     solver_prm.direct_threshold_for(dim) ?
-                   "direct" :
-                   "amg";
-        preconditioner =
-          Preconditioner<dim>(Preconditioner<dim>::parse_type(type),
-                              solver_prm.amg_null_space == "rigid body modes");
+        preconditioner = make_preconditioner();
+        direct_retry   = false;
         preconditioner_reuse.reset();
         last_load_increment = 0.;
         if (preconditioner.needs_matrix())
@@ -266,6 +255,26 @@ namespace qsmpm
     du.reinit(background_grid.locally_owned_dofs(), communicator);
     R.reinit(du);
     f_ext.reinit(du);
+  }
+
+
+
+  template <int dim>
+  Preconditioner<dim>
+  QuasiStaticProblem<dim>::make_preconditioner() const
+  {
+    // auto: a direct factorization for small problems, where its cost is
+    // that of a few AMG set-ups and it needs no tuning; AMG above, where
+    // the fill-in of the factors grows faster than the dofs.
+    const auto &solver_prm = prm_values.nonlinear_solver;
+    std::string type       = solver_prm.preconditioner;
+    if (type == "auto")
+      type = background_grid.get_dof_handler().n_dofs() <=
+                 solver_prm.direct_threshold_for(dim) ?
+               "direct" :
+               "amg";
+    return Preconditioner<dim>(Preconditioner<dim>::parse_type(type),
+                               solver_prm.amg_null_space == "rigid body modes");
   }
 
 
@@ -1003,6 +1012,13 @@ namespace qsmpm
         return true;
       }
     const unsigned int cut_backs = stepper.n_cut_backs();
+    if (direct_retry)
+      {
+        // The step AMG could not solve is done: AMG again for the next.
+        preconditioner = make_preconditioner();
+        direct_retry   = false;
+        preconditioner_reuse.reset();
+      }
     if (stepper.path_following())
       stepper.accept(t_new, force_new);
     else
@@ -1063,6 +1079,14 @@ namespace qsmpm
                  << std::endl;
         return;
       }
+    if (switch_to_direct())
+      {
+        progress << "  step " << stepper.step() + 1 << ": failed with AMG ("
+                 << newton.failure
+                 << "), trying again with the direct factorization"
+                 << std::endl;
+        return;
+      }
     progress << "  step " << stepper.step() + 1 << ": t = " << t_old;
     if (stepper.path_following())
       progress << ", " << LoadStepper::to_string(stepper.control()) << " "
@@ -1071,6 +1095,24 @@ namespace qsmpm
       progress << " -> " << t_new;
     progress << " failed (" << newton.failure << "), cutting back" << std::endl;
     stepper.reject(newton.failure);
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::switch_to_direct()
+  {
+    const auto &solver_prm = prm_values.nonlinear_solver;
+    if (!solver_prm.direct_retry || direct_retry ||
+        preconditioner.type() != Preconditioner<dim>::Type::amg ||
+        background_grid.get_dof_handler().n_dofs() >
+          solver_prm.direct_threshold_for(dim))
+      return false;
+    preconditioner = Preconditioner<dim>(Preconditioner<dim>::Type::direct);
+    direct_retry   = true;
+    preconditioner_reuse.reset();
+    return true;
   }
 
 

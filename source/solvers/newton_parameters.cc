@@ -43,7 +43,12 @@ namespace qsmpm
                         Patterns::Double(0., 1.));
       prm.add_parameter("Maximum linear iterations",
                         max_linear_iterations,
-                        "GMRES iterations per Newton step at most.",
+                        "GMRES iterations per Newton step at most. A "
+                        "Newton solve in which GMRES reaches this limit "
+                        "twice in a row having removed less than a tenth "
+                        "of its residual fails at once (the step is then "
+                        "cut back) instead of going on with corrections "
+                        "that hardly lower the residual.",
                         Patterns::Integer(1));
       prm.add_parameter("GMRES restart",
                         gmres_restart,
@@ -67,13 +72,13 @@ namespace qsmpm
                         "serves where AMG fails on a nearly singular "
                         "plastic stiffness (a rigid footing on von Mises "
                         "soil at its limit load, a/h = 16, 1 rank: with "
-                        "amg GMRES reached its iteration limit in five "
-                        "steps, each cut back; with direct none), but each "
-                        "of its applications costs more than an AMG cycle "
-                        "(at 13,122 dofs in 2D 3.4 ms more), which "
-                        "dominates where the Jacobian is far from the "
-                        "stiffness and GMRES needs many iterations either "
-                        "way (perfect plasticity).",
+                        "amg alone five steps were cut back, with direct "
+                        "none; <Direct retry> takes it for the steps AMG "
+                        "fails), but each of its applications costs more "
+                        "than an AMG cycle (at 13,122 dofs in 2D 3.4 ms "
+                        "more), which dominates where the Jacobian is far "
+                        "from the stiffness and GMRES needs many "
+                        "iterations either way (perfect plasticity).",
                         Patterns::Selection("none|jacobi|amg|direct|auto"));
       prm.add_parameter(
         "AMG near null space",
@@ -96,6 +101,27 @@ namespace qsmpm
                         "(KLU's factors of a 3D stiffness fill in much "
                         "faster).",
                         Patterns::Integer(0));
+      prm.add_parameter(
+        "Direct retry",
+        direct_retry,
+        "With <Preconditioner> = amg: a load step that fails is tried "
+        "again with the direct factorization before its increment is cut "
+        "back, if the problem has at most <Direct solver threshold> "
+        "degrees of freedom (0: 20000 in 2D, 1500 in 3D); the step after "
+        "it goes back to AMG. It pays where the factorization solves what "
+        "AMG cannot: at the knee of the load curve of a smooth rigid "
+        "footing on von Mises soil (a/h = 16, 1 rank) Newton with AMG "
+        "failed in three steps that the factorization solved in 7-8 "
+        "iterations, 40 steps in 96 s with the two-rank answer against "
+        "114 s, five cut-backs and a pressure 0.2 % higher without. It "
+        "costs where the factorization fails as well or is the slower "
+        "preconditioner (the prescribed-node footing of examples/footing "
+        "with F-bar: a/h = 16 224-267 s against 132 s, a/h = 8 about "
+        "twice the time), hence false by default. (A cut-back changes the path "
+        "of the "
+        "plastic points, and so the answer, within the error of the "
+        "steps.)",
+        Patterns::Bool());
       prm.add_parameter(
         "Preconditioner reuse steps",
         preconditioner_reuse_steps,

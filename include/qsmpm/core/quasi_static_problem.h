@@ -356,12 +356,31 @@ namespace qsmpm
               ProbeWriter<dim>  &probes);
 
     /// After a failed attempt at t_old -> t_new: try again with a new
-    /// preconditioner, or cut the increment back.
+    /// preconditioner (see switch_to_direct()), or cut the increment back.
     void
     reject_step(LoadStepper        &stepper,
                 const NewtonReport &newton,
                 const double        t_old,
                 const double        t_new);
+
+    /**
+     * Whether a step that failed with AMG is tried again with the direct
+     * factorization (NewtonParameters::direct_retry): the preconditioner is
+     * AMG and the problem has at most
+     * NewtonParameters::direct_threshold_for() dofs. If so, the
+     * preconditioner is replaced until the next accepted step (cut-backs of
+     * the step included), after which AMG returns. At the knee of a rigid
+     * footing's load curve on von Mises soil, Newton with AMG stalled in
+     * steps where GMRES converged in every iteration as well as in steps
+     * where it did not, and the direct factorization solved both kinds.
+     */
+    bool
+    switch_to_direct();
+
+    /// The preconditioner of the settings (Preconditioner, with auto
+    /// decided by the number of dofs).
+    Preconditioner<dim>
+    make_preconditioner() const;
 
     /// reactions.csv, probes.csv and the fields of an accepted step to
     /// @p t_new (@p stop: the last step of the run).
@@ -469,7 +488,10 @@ namespace qsmpm
     {
       return surface_tractions.has_pressure() ? &surface_tractions : nullptr;
     }
-    Preconditioner<dim>     preconditioner;
+    Preconditioner<dim> preconditioner;
+    /// Whether #preconditioner is the direct factorization that replaced
+    /// AMG for a step that failed with it (switch_to_direct()).
+    bool                    direct_retry = false;
     PreconditionerReuse     preconditioner_reuse;
     PathFollowingSetup<dim> path_following;
     StepConstraints         step_constraints;

@@ -46,6 +46,10 @@ namespace qsmpm
     /// With preconditioner = auto: the largest number of dofs for direct;
     /// 0 = by the dimension (direct_threshold_for()).
     unsigned int direct_threshold = 0;
+    /// With preconditioner = amg: a step that fails is tried again with
+    /// the direct factorization before it is cut back, if the problem has
+    /// at most direct_threshold_for() dofs (QuasiStaticProblem).
+    bool direct_retry = false;
     /// AMG's near-null space: "rigid body modes" (translations and
     /// rotations) or "translations" (see Preconditioner).
     std::string amg_null_space = "rigid body modes";
