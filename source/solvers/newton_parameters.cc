@@ -47,8 +47,9 @@ namespace qsmpm
                         "Newton solve in which GMRES reaches this limit "
                         "twice in a row having removed less than a tenth "
                         "of its residual fails at once (the step is then "
-                        "cut back) instead of going on with corrections "
-                        "that hardly lower the residual.",
+                        "cut back, or first retried, see <Direct retry>) "
+                        "instead of going on with corrections that hardly "
+                        "lower the residual.",
                         Patterns::Integer(1));
       prm.add_parameter("GMRES restart",
                         gmres_restart,
