@@ -20,23 +20,32 @@ namespace qsmpm
   {
     /**
      * A process that no MPI launcher started (`./compact_tension b15.prm`)
-     * is a singleton: MPI_COMM_WORLD is this one process. Open MPI still
-     * tries all its point-to-point layers for it, and the cm layer probes
-     * the high-speed networks (libfabric, PSM): 0.25 s of the 0.9 s that
-     * `qsmpm --version` takes on the development machine. Such a process
-     * sends messages only to itself, which the ob1 layer does. So, before
-     * main() and with it MPI_Init(), a singleton gets OMPI_MCA_pml = ob1,
-     * unless the user has chosen a point-to-point layer already. A process
-     * that mpirun, mpiexec or srun started (they set OMPI_COMM_WORLD_SIZE,
-     * PMIX_RANK or PMI_RANK) is left alone, and other MPI libraries ignore
-     * the variable.
+     * is a singleton: MPI_COMM_WORLD is this one process. Open MPI treats
+     * it as if it might grow, and MPI_Init pays for that twice:
+     * - It tries all its point-to-point layers, and the cm layer probes the
+     *   high-speed networks (libfabric, PSM): 0.25 s of the 0.9 s that
+     *   `qsmpm --version` took on the development machine. Such a process
+     *   sends messages only to itself, which the ob1 layer does, so it gets
+     *   OMPI_MCA_pml = ob1.
+     * - It starts a daemon (orted) beside itself, which MPI_Comm_spawn
+     *   would need; qsmpm never spawns, so it gets
+     *   OMPI_MCA_ess_singleton_isolated = 1 (no daemon): a program that
+     *   links only MPI 0.23 -> 0.05 s, `qsmpm` on a 2 x 2 grid 0.66 ->
+     *   0.47 s (benchmarks.md, "Start-up").
+     * Both are set before main() and with it MPI_Init(), unless the user has
+     * set them already. A process that mpirun, mpiexec or srun started (they
+     * set OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK) is left alone, and
+     * other MPI libraries ignore the variables.
      */
-    [[maybe_unused]] const bool singleton_pml_chosen = [] {
+    [[maybe_unused]] const bool singleton_settings_chosen = [] {
       for (const char *launched :
            {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
         if (std::getenv(launched) != nullptr)
           return false;
-      return setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0) == 0;
+      return setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0) == 0 &&
+             setenv("OMPI_MCA_ess_singleton_isolated",
+                    "1",
+                    /*overwrite=*/0) == 0;
     }();
   } // namespace
 
