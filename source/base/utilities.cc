@@ -23,15 +23,14 @@ namespace qsmpm
      * is a singleton: MPI_COMM_WORLD is this one process. Open MPI treats
      * it as if it might grow, and MPI_Init pays for that twice:
      * - It tries all its point-to-point layers, and the cm layer probes the
-     *   high-speed networks (libfabric, PSM): 0.25 s of the 0.9 s that
-     *   `qsmpm --version` took on the development machine. Such a process
-     *   sends messages only to itself, which the ob1 layer does, so it gets
+     *   high-speed networks (libfabric, PSM). Such a process sends
+     *   messages only to itself, which the ob1 layer does, so it gets
      *   OMPI_MCA_pml = ob1.
      * - It starts a daemon (orted) beside itself, which MPI_Comm_spawn
      *   would need; qsmpm never spawns, so it gets
-     *   OMPI_MCA_ess_singleton_isolated = 1 (no daemon): a program that
-     *   links only MPI 0.23 -> 0.05 s, `qsmpm` on a 2 x 2 grid 0.66 ->
-     *   0.47 s (benchmarks.md, "Start-up").
+     *   OMPI_MCA_ess_singleton_isolated = 1 (no daemon).
+     * What each saves is measured in doc/benchmarks.md, "Start-up of a
+     * process without mpirun".
      * Both are set before main() and with it MPI_Init(), unless the user has
      * set them already. A process that mpirun, mpiexec or srun started (they
      * set OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK) is left alone, and
