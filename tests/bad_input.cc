@@ -5,6 +5,10 @@
 //  - a missing parameter file,
 //  - finite strain with a small-strain model or without volume updates,
 //    GIMP with a macroscopic displacement gradient,
+//  - contact between bodies given wrongly (one body, an id that is no
+//    number or in two bodies, points of no body) or with what it does not
+//    take (GIMP, a traction on a grid face), a region expression that is
+//    none,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points.
 //
@@ -277,6 +281,46 @@ main(int argc, char *argv[])
             "    set Crack band width = 0.1\n"
             "    set Crack tracking = true\n"
             "  end\n"
+            "end\n");
+
+  // Contact between bodies (several bodies on a multi-field grid).
+  const std::string two_bodies = "subsection Material points\n"
+                                 "  set Material id = if(x < 0.5, 0, 1)\n"
+                                 "end\n"
+                                 "subsection Contact between bodies\n";
+  try_input("contact between bodies with one body",
+            "Contact between bodies",
+            two_bodies + "  set Bodies = 0\nend\n");
+  try_input("contact between bodies with a body that is no material id",
+            "Contact between bodies",
+            two_bodies + "  set Bodies = 0; x\nend\n");
+  try_input("contact between bodies with a material id in two bodies",
+            "Contact between bodies",
+            two_bodies + "  set Bodies = 0; 0, 1\nend\n");
+  try_input("contact between bodies with points of no body",
+            "Contact between bodies",
+            two_bodies + "  set Bodies = 0; 2\nend\n" + run_briefly + "end\n",
+            /*run=*/true);
+  try_input("contact between bodies with GIMP",
+            "GIMP",
+            two_bodies + "  set Bodies = 0; 1\nend\n" +
+              "subsection Material points\n"
+              "  set Shape functions = cpGIMP\n"
+              "end\n" +
+              run_briefly + "end\n",
+            /*run=*/true);
+  try_input("contact between bodies with a traction on a grid face",
+            "Contact between bodies",
+            two_bodies + "  set Bodies = 0; 1\nend\n" + run_briefly +
+              "end\n"
+              "subsection Boundary conditions\n"
+              "  set Traction boundaries = 3\n"
+              "end\n",
+            /*run=*/true);
+  try_input("region expression that is no expression",
+            "Region expression",
+            "subsection Material points\n"
+            "  set Region expression = x <\n"
             "end\n");
 
   // A missing file: deal.II's message names it.

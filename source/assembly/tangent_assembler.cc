@@ -27,20 +27,22 @@ namespace qsmpm
       constexpr unsigned int n_vertices  = GeometryInfo<dim>::vertices_per_cell;
       const IndexSet        &relevant    = grid.locally_relevant_dofs();
       const auto            &dof_handler = grid.get_dof_handler();
+      // dim dofs per node, or dim per body on a multi-field grid.
+      const unsigned int node_dofs = grid.n_node_dofs();
 
       // The relevant nodes, numbered by the position of their first dof in
       // the relevant set, and the cells around each (counted, then filled).
       const auto node_of = [&](const index_type first_dof) {
-        return relevant.index_within_set(first_dof) / dim;
+        return relevant.index_within_set(first_dof) / node_dofs;
       };
-      const std::size_t                  n_nodes = relevant.n_elements() / dim;
-      std::vector<std::size_t>           start(n_nodes + 1, 0);
+      const std::size_t        n_nodes = relevant.n_elements() / node_dofs;
+      std::vector<std::size_t> start(n_nodes + 1, 0);
       std::array<index_type, n_vertices> first;
       const auto                         cell_nodes = [&](const auto &cell) {
         for (unsigned int v = 0; v < n_vertices; ++v)
           {
             first[v] = cell->vertex_dof_index(v, 0);
-            for (unsigned int d = 1; d < dim; ++d)
+            for (unsigned int d = 1; d < node_dofs; ++d)
               Assert(cell->vertex_dof_index(v, d) == first[v] + d,
                      ExcMessage("The dofs of a vertex are not consecutive."));
           }
@@ -80,10 +82,10 @@ namespace qsmpm
           last = std::unique(begin, last);
           columns.clear();
           for (auto u = begin; u != last; ++u)
-            for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int d = 0; d < node_dofs; ++d)
               columns.push_back(*u + d);
-          const index_type row = relevant.nth_index_in_set(n * dim);
-          for (unsigned int d = 0; d < dim; ++d)
+          const index_type row = relevant.nth_index_in_set(n * node_dofs);
+          for (unsigned int d = 0; d < node_dofs; ++d)
             pattern.add_entries(row + d, columns.begin(), columns.end(), true);
         }
     }
@@ -225,9 +227,10 @@ namespace qsmpm
     // With room for the 3^dim nodes a node couples with on a regular grid
     // (none on a rank that owns no rows: deal.II 9.4 then stops, reporting
     // more than 2^31 entries).
-    const unsigned int row_length = grid.locally_owned_dofs().n_elements() > 0 ?
-                                      dim * Utilities::fixed_power<dim>(3u) :
-                                      0;
+    const unsigned int row_length =
+      grid.locally_owned_dofs().n_elements() > 0 ?
+        grid.n_node_dofs() * Utilities::fixed_power<dim>(3u) :
+        0;
     TrilinosWrappers::SparsityPattern pattern(grid.locally_owned_dofs(),
                                               grid.locally_owned_dofs(),
                                               writable_rows,

@@ -24,6 +24,7 @@ namespace qsmpm
     EquilibriumAudit<dim>::Parameters::declare_parameters(prm);
     OutputWriter<dim>::Parameters::declare_parameters(prm);
     PorePressureSolver<dim>::Parameters::declare_parameters(prm);
+    BodyContact<dim>::Parameters::declare_parameters(prm);
   }
 
 
@@ -39,6 +40,7 @@ namespace qsmpm
     equilibrium_check.parse_parameters(prm);
     output.parse_parameters(prm);
     pore_fluid.parse_parameters(prm);
+    body_contact.parse_parameters(prm);
   }
 
 
@@ -97,9 +99,26 @@ namespace qsmpm
 
   template <int dim>
   void
+  QuasiStaticProblem<dim>::set_body_contact(
+    const typename BodyContact<dim>::Parameters &parameters)
+  {
+    prm_values.body_contact = parameters;
+    body_contact.initialize(parameters);
+    if (body_contact.enabled())
+      {
+        background_grid.set_n_bodies(body_contact.n_bodies());
+        cache.set_bodies(body_contact.body_of_material());
+      }
+  }
+
+
+
+  template <int dim>
+  void
   QuasiStaticProblem<dim>::initialize(ParameterHandler &prm)
   {
     prm_values.parse_parameters(prm);
+    set_body_contact(prm_values.body_contact);
     background_grid.make_box(prm_values.geometry);
     // The conditions first: the points carry the area of each surface
     // traction.
@@ -309,7 +328,9 @@ namespace qsmpm
                             t_new,
                             constraints,
                             held_dofs,
-                            stabilization());
+                            stabilization(),
+                            &body_contact,
+                            !keep_contact_set);
       step_constraints.reinit(std::move(constraints),
                               background_grid.locally_owned_dofs(),
                               communicator);
@@ -522,9 +543,41 @@ namespace qsmpm
     // A step that failed (and is tried again with a smaller increment, or
     // a new preconditioner) starts from the linear predictor.
     last_load_increment = 0.;
+    keep_contact_set    = false;
     if (!report.converged)
-      return false;
-    audit_equilibrium(t_new);
+      {
+        contact_iterations = 0;
+        return false;
+      }
+    // Bodies that pull on each other come apart, bodies that would overlap
+    // touch: the step is solved again with the new contact set.
+    if (body_contact.enabled() && [&] {
+          // The contact forces are the residual of the tied dofs before
+          // condensation, which adds them to the other body's rows.
+          VectorType R_raw(R);
+          residual->evaluate(du, R_raw);
+          return body_contact.update(background_grid, du, R_raw);
+        }())
+      {
+        if (++contact_iterations >= prm_values.body_contact.max_iterations)
+          {
+            contact_iterations = 0;
+            report.converged   = false;
+            report.failure =
+              "the contact set between the bodies changed "
+              "in every one of " +
+              std::to_string(prm_values.body_contact.max_iterations) +
+              " solves (Contact between bodies/Max contact "
+              "iterations)";
+            return false;
+          }
+        progress << "  contact between bodies changed, solving again"
+                 << std::endl;
+        keep_contact_set = true;
+        return advance(t_old, t_new, report);
+      }
+    contact_iterations = 0;
+    audit_equilibrium(t_new, report.initial_residual);
     if (extrapolate)
       last_load_increment = t_new - t_old;
     commit_step();
@@ -656,6 +709,10 @@ namespace qsmpm
                                                   double            &t_new,
                                                   double            &force_new)
   {
+    AssertThrow(!body_contact.enabled(),
+                ExcMessage("Contact between bodies/Bodies: path following "
+                           "(Load stepping/Control) cannot be used with "
+                           "several bodies yet."));
     const double t_old = stepper.current();
     AssertThrow(!pore_pressure,
                 ExcMessage("Pore fluid: path following (Load stepping/"
@@ -733,7 +790,7 @@ namespace qsmpm
     t_new = t_old + delta_lambda;
     if (!report.converged)
       return false;
-    audit_equilibrium(t_new);
+    audit_equilibrium(t_new, report.initial_residual);
     commit_step();
     return true;
   }
@@ -794,7 +851,8 @@ namespace qsmpm
 
   template <int dim>
   void
-  QuasiStaticProblem<dim>::audit_equilibrium(const double t_new)
+  QuasiStaticProblem<dim>::audit_equilibrium(const double t_new,
+                                             const double step_force_scale)
   {
     // The applied load includes the pressures and the contact forces at
     // the solution.
@@ -815,7 +873,10 @@ namespace qsmpm
     // A body's contact force is a support's reaction: the loss is measured
     // against it too (two tied bodies that hold a body between them apply
     // forces that cancel, and no displacement condition need carry any).
-    double scale = run_state.load_scale;
+    // The step's own forces count as well: a step that only moves a body
+    // that carries no load (a block sliding to another) has no other
+    // scale, and Newton removed its initial residual to its tolerance.
+    double scale = std::max(run_state.load_scale, step_force_scale);
     for (const auto &load : body_loads)
       scale = std::max(scale, load.force.norm());
     if (contact_loads() != nullptr)
@@ -919,6 +980,27 @@ namespace qsmpm
                                      OutputWriter<dim> &writer,
                                      ProbeWriter<dim>  &probes)
   {
+    if (body_contact.enabled())
+      {
+        // What acts on grid nodes or faces would have to be shared among
+        // the bodies' fields, and the pore pressure and path following
+        // are not written for several fields.
+        const auto unsupported = [](const bool used, const std::string &what) {
+          AssertThrow(!used,
+                      ExcMessage("Contact between bodies/Bodies: " + what +
+                                 " cannot be used with several bodies yet."));
+        };
+        unsupported(!bcs.tractions().empty(), "Tractions on grid faces");
+        unsupported(!bcs.point_loads().empty(), "Point loads");
+        unsupported(!bcs.rigid_bodies().empty(), "Rigid bodies");
+        unsupported(!bcs.rigid_plates().empty(), "Rigid plates");
+        unsupported(!bcs.surface_tractions().empty(), "Surface tractions");
+        unsupported(!background_grid.periodic_directions().empty(),
+                    "A periodic grid (Geometry/Periodic)");
+        unsupported(pore_pressure != nullptr, "A pore fluid");
+        unsupported(prm_values.material_points.ghost_penalty > 0.,
+                    "The ghost penalty");
+      }
     const bool from_checkpoint = run_state.resuming();
     if (from_checkpoint)
       {
@@ -1145,6 +1227,11 @@ namespace qsmpm
           column_names.push_back(bcs.rigid_bodies()[b].name + "_u");
           columns.push_back(run_state.body_displacements[b]);
         }
+    if (body_contact.enabled())
+      {
+        column_names.push_back("contact_force_between_bodies");
+        columns.push_back(body_contact.total_normal_force());
+      }
     if (pore_pressure)
       {
         column_names.push_back("consolidation_degree");

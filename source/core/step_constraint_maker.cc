@@ -99,7 +99,9 @@ namespace qsmpm
     const double                                      t_new,
     AffineConstraints<double>                        &constraints,
     IndexSet                                         &held_dofs,
-    const GhostPenalty<dim>                          *ghost_penalty)
+    const GhostPenalty<dim>                          *ghost_penalty,
+    BodyContact<dim>                                 *body_contact,
+    const bool                                        new_contact_set)
   {
     displacement_constraints.make(grid, t_old, t_new, constraints);
 
@@ -153,6 +155,16 @@ namespace qsmpm
           lower + 0.5 * (upper - lower),
           lower.distance(upper),
           communicator);
+      }
+
+    // Where two bodies press on each other, their fields are tied (after
+    // the displacement conditions, which they respect; between nodes that
+    // both have material).
+    if (body_contact != nullptr && body_contact->enabled())
+      {
+        if (new_contact_set)
+          body_contact->reinit_step(grid, cache, points, inactive);
+        body_contact->add_constraints(constraints);
       }
 
     // Nodes with no point in their support have no equation: fix their

@@ -96,9 +96,23 @@ namespace qsmpm
   BackgroundGrid<dim>::BackgroundGrid(const MPI_Comm communicator)
     : communicator(communicator)
     , triangulation(communicator)
-    , fe(FE_Q<dim>(1), dim)
+    , fe(std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim))
     , dof_handler(triangulation)
   {
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::set_n_bodies(const unsigned int n)
+  {
+    AssertThrow(n >= 1, ExcMessage("A grid needs at least one body."));
+    AssertThrow(triangulation.n_active_cells() == 0,
+                ExcMessage("BackgroundGrid::set_n_bodies() must come before "
+                           "make_box()."));
+    bodies = n;
+    fe     = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim * n);
   }
 
 
@@ -244,7 +258,7 @@ namespace qsmpm
   void
   BackgroundGrid<dim>::distribute_dofs()
   {
-    dof_handler.distribute_dofs(fe);
+    dof_handler.distribute_dofs(*fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
   }
@@ -282,7 +296,7 @@ namespace qsmpm
   const FESystem<dim> &
   BackgroundGrid<dim>::get_fe() const
   {
-    return fe;
+    return *fe;
   }
 
 

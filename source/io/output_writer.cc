@@ -203,12 +203,21 @@ namespace qsmpm
     ghosted = du;
     DataOut<dim> data_out;
     data_out.attach_dof_handler(grid.get_dof_handler());
+    // One vector per body on a multi-field grid.
+    std::vector<std::string> names;
+    for (unsigned int b = 0; b < grid.n_bodies(); ++b)
+      names.insert(names.end(),
+                   dim,
+                   grid.n_bodies() == 1 ?
+                     std::string("displacement_increment") :
+                     "displacement_increment_body_" + std::to_string(b));
     data_out.add_data_vector(
       ghosted,
-      std::vector<std::string>(dim, "displacement_increment"),
+      names,
       DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim, DataComponentInterpretation::component_is_part_of_vector));
+        grid.n_node_dofs(),
+        DataComponentInterpretation::component_is_part_of_vector));
     data_out.build_patches();
     const std::string name = data_out.write_vtu_with_pvtu_record(
       parameters.directory + "/", "increment", step, communicator, 5);

@@ -100,19 +100,21 @@ namespace qsmpm
       condition.displacement->vector_value(x, g_old);
       condition.displacement->set_time(t_new);
       condition.displacement->vector_value(x, g_new);
-      for (unsigned int c = 0; c < dim; ++c)
-        if (mask[c])
-          {
-            const types::global_dof_index dof       = dof_index(c);
-            const double                  increment = g_new[c] - g_old[c];
-            if (!constraints.is_constrained(dof))
-              {
-                constraints.add_line(dof);
-                constraints.set_inhomogeneity(dof, increment);
-              }
-            if (owned.is_element(dof))
-              dofs.push_back({dof, c, x, increment});
-          }
+      // On a multi-field grid the condition holds every body's field.
+      for (unsigned int b = 0; b < grid.n_bodies(); ++b)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (mask[c])
+            {
+              const types::global_dof_index dof       = dof_index(b * dim + c);
+              const double                  increment = g_new[c] - g_old[c];
+              if (!constraints.is_constrained(dof))
+                {
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof, increment);
+                }
+              if (owned.is_element(dof))
+                dofs.push_back({dof, c, x, increment});
+            }
     };
 
     for (const auto &cell : grid.get_dof_handler().active_cell_iterators())

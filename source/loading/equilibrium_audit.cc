@@ -205,7 +205,7 @@ namespace qsmpm
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 if (owned.is_element(dofs[i]))
                   component[owned.index_within_set(dofs[i])] =
-                    fe.system_to_component_index(i).first;
+                    fe.system_to_component_index(i).first % dim;
             }
         component_owned = owned;
       }

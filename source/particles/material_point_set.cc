@@ -14,6 +14,43 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /**
+     * A parser of @p n_components expressions in x, y (and z), the text of
+     * the entry @p entry of "Material points"; a text that is no such
+     * expression stops with a message naming the entry and saying that it
+     * must be @p what.
+     */
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    make_parser(const std::string &entry,
+                const std::string &text,
+                const unsigned int n_components,
+                const std::string &what)
+    {
+      auto parser = std::make_unique<FunctionParser<dim>>(n_components);
+      try
+        {
+          parser->initialize(dim == 2 ? "x,y" : "x,y,z",
+                             text,
+                             std::map<std::string, double>());
+          // muParser reads the text at the first evaluation.
+          Vector<double> values(n_components);
+          parser->vector_value(Point<dim>(), values);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage("Material points: <" + entry + "> = <" + text +
+                                 "> is not " + what + "."));
+        }
+      return parser;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   MaterialPointSet<dim>::Parameters::add_parameters(ParameterHandler &prm)
@@ -44,6 +81,14 @@ namespace qsmpm
                         region_upper_corner,
                         "",
                         Patterns::Anything());
+      prm.add_parameter(
+        "Region expression",
+        region_expression,
+        "If given, only points where this expression in x, y (and z) is "
+        "positive are created (within the region box, if one is given): "
+        "bodies with holes or notches, or two bodies with a gap between "
+        "them, e.g. 'if(x < 1 || x > 1.1, 1, 0)'. Empty: everywhere.",
+        Patterns::Anything());
       prm.add_parameter(
         "Material id",
         material_id,
@@ -507,23 +552,12 @@ namespace qsmpm
     // The material id expression, checked at every point: a value that is
     // not a non-negative integer is a mistake in the .prm, not something to
     // round.
-    FunctionParser<dim> id_parser(1);
-    try
-      {
-        id_parser.initialize(dim == 2 ? "x,y" : "x,y,z",
-                             parameters.material_id,
-                             std::map<std::string, double>());
-      }
-    catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("Material points: <Material id> = <" +
-                               parameters.material_id +
-                               "> is not an expression in x, y" +
-                               (dim == 3 ? ", z." : ".")));
-      }
+    const std::string in_xyz =
+      std::string("an expression in x, y") + (dim == 3 ? ", z" : "");
+    const auto id_parser =
+      make_parser<dim>("Material id", parameters.material_id, 1, in_xyz);
     const auto material_id = [&](const Point<dim> &x) -> unsigned int {
-      const double value = id_parser.value(x);
+      const double value = id_parser->value(x);
       if (!(std::isfinite(value) && value >= 0. && value < 1e9 &&
             std::abs(value - std::round(value)) < 1e-9))
         {
@@ -540,27 +574,20 @@ namespace qsmpm
     const unsigned int                   n_stress = dim == 2 ? 4 : 6;
     std::unique_ptr<FunctionParser<dim>> stress_parser;
     if (!parameters.initial_stress.empty())
-      {
-        stress_parser = std::make_unique<FunctionParser<dim>>(n_stress);
-        try
-          {
-            stress_parser->initialize(dim == 2 ? "x,y" : "x,y,z",
-                                      parameters.initial_stress,
-                                      std::map<std::string, double>());
-          }
-        catch (...)
-          {
-            AssertThrow(false,
-                        ExcMessage(
-                          "Material points: <Initial stress> = <" +
-                          parameters.initial_stress + "> is not " +
-                          std::to_string(n_stress) + " expressions in x, y" +
-                          (dim == 3 ? ", z" : "") + " separated by ';' (" +
-                          (dim == 2 ? "xx; yy; zz; xy" :
-                                      "xx; yy; zz; xy; xz; yz") +
-                          ")."));
-          }
-      }
+      stress_parser = make_parser<dim>(
+        "Initial stress",
+        parameters.initial_stress,
+        n_stress,
+        std::to_string(n_stress) + " expressions in x, y" +
+          (dim == 3 ? ", z" : "") + " separated by ';' (" +
+          (dim == 2 ? "xx; yy; zz; xy" : "xx; yy; zz; xy; xz; yz") + ")");
+    // The region expression: points where it is positive.
+    std::unique_ptr<FunctionParser<dim>> region_parser;
+    if (!parameters.region_expression.empty())
+      region_parser = make_parser<dim>("Region expression",
+                                       parameters.region_expression,
+                                       1,
+                                       in_xyz);
     Vector<double> values(n_stress);
     const auto     initial_stress =
       [&](const Point<dim> &x) -> SymmetricTensor<2, 3> {
@@ -589,7 +616,10 @@ namespace qsmpm
     std::array<unsigned int, dim> n_per_direction;
     n_per_direction.fill(parameters.points_per_direction);
     fill(
-      [restrict_to_box, region_lower, region_upper](const Point<dim> &x) {
+      [restrict_to_box, region_lower, region_upper, &region_parser](
+        const Point<dim> &x) {
+        if (region_parser && !(region_parser->value(x) > 0.))
+          return false;
         if (!restrict_to_box)
           return true;
         for (unsigned int d = 0; d < dim; ++d)

@@ -74,14 +74,24 @@ namespace qsmpm
                           MaterialPointSet<dim>               &points,
                           const TrilinosWrappers::MPI::Vector &ghosted)
   {
-    [[maybe_unused]] const FESystem<dim> &fe = grid.get_fe();
+    [[maybe_unused]] const FESystem<dim> &fe          = grid.get_fe();
+    const unsigned int                    n_node_dofs = grid.n_node_dofs();
     for (unsigned int v = 0; v < n_vertices; ++v)
-      for (unsigned int c = 0; c < dim; ++c)
-        Assert(fe.system_to_component_index(v * dim + c).first == c &&
-                 fe.system_to_component_index(v * dim + c).second == v,
+      for (unsigned int c = 0; c < n_node_dofs; ++c)
+        Assert(fe.system_to_component_index(v * n_node_dofs + c).first == c &&
+                 fe.system_to_component_index(v * n_node_dofs + c).second == v,
                ExcInternalError());
+    const unsigned int n_bodies = grid.n_bodies();
+    AssertThrow(n_bodies == 1 || body_of_material.size() > 0,
+                ExcMessage("A grid of several bodies needs the body of each "
+                           "material id (ShapeCache::set_bodies())."));
+    material_id_offset = points.get_offsets().material_id;
 
-    const bool         gimp             = points.get_formulation().gimp();
+    const bool gimp = points.get_formulation().gimp();
+    AssertThrow(!gimp || n_bodies == 1,
+                ExcMessage("Contact between bodies (several bodies on the "
+                           "grid) works with linear shape functions only, "
+                           "not with GIMP."));
     auto              &particle_handler = points.get_particle_handler();
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
@@ -125,17 +135,63 @@ namespace qsmpm
               add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
               affine_cells.emplace_back();
               cell_is_affine.push_back(false);
+              cells.push_back({cell, first, p, 0});
+              dof_offsets.push_back(cell_local_dofs.size());
+              continue;
             }
+          // One group per body in the cell, bodies in order.
+          std::array<unsigned int, max_bodies> count{};
+          if (n_bodies == 1)
+            count[0] = particle_handler.n_particles_in_cell(cell);
           else
-            add_linear_cell(dof_cell, grid, map, p, particle_handler);
-          cells.push_back({cell, first, p});
-          dof_offsets.push_back(cell_local_dofs.size());
+            for (const auto &particle : particles)
+              ++count[body_of(particle.get_properties().data())];
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            if (count[b] > 0)
+              {
+                const unsigned int group_first = p;
+                add_linear_cell(
+                  dof_cell, grid, map, p, particle_handler, b, count[b]);
+                cells.push_back({cell, group_first, p, b});
+                dof_offsets.push_back(cell_local_dofs.size());
+              }
         }
     affine_cell_count =
       std::count(cell_is_affine.begin(), cell_is_affine.end(), 1);
     AssertThrow(p == n_local_points,
                 ExcMessage("Some locally owned material points were not found "
                            "in locally owned cells."));
+  }
+
+
+
+  template <int dim>
+  void
+  ShapeCache<dim>::set_bodies(const std::vector<unsigned int> &body_of)
+  {
+    for (const unsigned int b : body_of)
+      AssertThrow(b == numbers::invalid_unsigned_int || b < max_bodies,
+                  ExcMessage("At most " + std::to_string(max_bodies) +
+                             " bodies can be in contact."));
+    body_of_material = body_of;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ShapeCache<dim>::body_of(const double *data) const
+  {
+    if (body_of_material.empty())
+      return 0;
+    const auto id = static_cast<unsigned int>(data[material_id_offset]);
+    AssertThrow(id < body_of_material.size() &&
+                  body_of_material[id] != numbers::invalid_unsigned_int,
+                ExcMessage("Contact between bodies: material id " +
+                           std::to_string(id) +
+                           " belongs to none of the bodies (Contact between "
+                           "bodies/Bodies)."));
+    return body_of_material[id];
   }
 
 
@@ -173,14 +229,17 @@ namespace qsmpm
     const BackgroundGrid<dim>                            &grid,
     const Epetra_BlockMap                                &map,
     unsigned int                                         &p,
-    Particles::ParticleHandler<dim>                      &particle_handler)
+    Particles::ParticleHandler<dim>                      &particle_handler,
+    const unsigned int                                    body,
+    const unsigned int                                    n_points)
   {
     const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
     for (unsigned int v = 0; v < n_vertices; ++v)
       for (unsigned int c = 0; c < dim; ++c)
         {
-          const types::global_dof_index dof = dof_cell->vertex_dof_index(v, c);
-          const int                     lid =
+          const types::global_dof_index dof =
+            dof_cell->vertex_dof_index(v, body * dim + c);
+          const int lid =
             map.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
           AssertThrow(lid >= 0, ExcInternalError());
           cell_local_dofs.push_back(lid);
@@ -213,12 +272,14 @@ namespace qsmpm
     else
       {
         shape_offsets.push_back(offset);
-        const unsigned int n = particle_handler.n_particles_in_cell(cell);
-        shape_values.resize((offset + n) * stencil);
-        shape_gradients.resize((offset + n) * stencil);
+        shape_values.resize((offset + n_points) * stencil);
+        shape_gradients.resize((offset + n_points) * stencil);
       }
+    const bool one_body = body_of_material.empty();
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
+        if (!one_body && body_of(particle.get_properties().data()) != body)
+          continue;
         const Point<dim> xi = particle.get_reference_location();
         if (!affine)
           {

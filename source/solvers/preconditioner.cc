@@ -11,9 +11,14 @@ namespace qsmpm
   make_rigid_body_modes(const BackgroundGrid<dim> &grid,
                         const Epetra_Map          &owned_map)
   {
+    // Each body of a multi-field grid moves on its own: its own modes,
+    // the translations of all bodies first, then the rotations.
     const unsigned int n_rotations = dim * (dim - 1) / 2;
+    const unsigned int n_bodies    = grid.n_bodies();
+    const unsigned int node_dofs   = grid.n_node_dofs();
     auto               modes =
-      std::make_unique<Epetra_MultiVector>(owned_map, dim + n_rotations);
+      std::make_unique<Epetra_MultiVector>(owned_map,
+                                           n_bodies * (dim + n_rotations));
     const Point<dim> centre =
       0.5 * (grid.lower_corner() + Tensor<1, dim>(grid.upper_corner()));
     const IndexSet &owned = grid.locally_owned_dofs();
@@ -23,34 +28,35 @@ namespace qsmpm
         for (const unsigned int v : cell->vertex_indices())
           {
             const Tensor<1, dim> x = cell->vertex(v) - centre;
-            for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int bc = 0; bc < node_dofs; ++bc)
               {
-                const auto dof = cell->vertex_dof_index(v, c);
+                const unsigned int b = bc / dim, c = bc % dim;
+                const auto         dof = cell->vertex_dof_index(v, bc);
                 // ML's "PDE equations" (see setup()) needs the dofs of a
                 // node in a row.
-                Assert(dof == cell->vertex_dof_index(v, 0) + c,
+                Assert(dof == cell->vertex_dof_index(v, 0) + bc,
                        ExcMessage("The dofs of a vertex are not consecutive: "
                                   "AMG for elasticity needs them in a row."));
                 if (!owned.is_element(dof))
                   continue;
                 const int lid = owned_map.LID(
                   static_cast<TrilinosWrappers::types::int_type>(dof));
-                // Translations.
-                for (unsigned int m = 0; m < dim; ++m)
-                  (*modes)[m][lid] = (m == c) ? 1. : 0.;
+                // Translations (all modes are zero at first).
+                (*modes)[b * dim + c][lid] = 1.;
                 // Rotations: 2D about z: (-y, x); 3D about x, y, z.
+                const unsigned int r0 = n_bodies * dim + b * n_rotations;
                 if (dim == 2)
-                  (*modes)[2][lid] = (c == 0) ? -x[1] : x[0];
+                  (*modes)[r0][lid] = (c == 0) ? -x[1] : x[0];
                 else
                   {
                     // about x: (0, -z, y); about y: (z, 0, -x);
                     // about z: (-y, x, 0)
-                    const double rx[3]     = {0., -x[2 % dim], x[1]};
-                    const double ry[3]     = {x[2 % dim], 0., -x[0]};
-                    const double rz[3]     = {-x[1], x[0], 0.};
-                    (*modes)[dim + 0][lid] = rx[c];
-                    (*modes)[dim + 1][lid] = ry[c];
-                    (*modes)[dim + 2][lid] = rz[c];
+                    const double rx[3]    = {0., -x[2 % dim], x[1]};
+                    const double ry[3]    = {x[2 % dim], 0., -x[0]};
+                    const double rz[3]    = {-x[1], x[0], 0.};
+                    (*modes)[r0 + 0][lid] = rx[c];
+                    (*modes)[r0 + 1][lid] = ry[c];
+                    (*modes)[r0 + 2][lid] = rz[c];
                   }
               }
           }
@@ -136,10 +142,11 @@ namespace qsmpm
         const Epetra_Map &map = K.trilinos_matrix().DomainMap();
         rigid_body_modes      = make_rigid_body_modes(grid, map);
         parameters.set("null space: type", "pre-computed");
-        // The translations are the first dim vectors of the modes.
+        // The translations are the first dim vectors of the modes (per
+        // body).
         parameters.set("null space: dimension",
                        with_rotations ? rigid_body_modes->NumVectors() :
-                                        static_cast<int>(dim));
+                                        static_cast<int>(grid.n_node_dofs()));
         // A rank that owns no rows has no storage for the modes (Values()
         // is null), which ML reads as "no null space given" and warns
         // about on every build; it reads nothing from a non-null pointer
@@ -155,7 +162,7 @@ namespace qsmpm
         // assumes. ML's default of one equation lets an aggregate take the
         // x but not the y dof of a node; per node, GMRES needs fewer
         // iterations and the setup is faster and needs less memory.
-        parameters.set("PDE equations", static_cast<int>(dim));
+        parameters.set("PDE equations", static_cast<int>(grid.n_node_dofs()));
         amg.initialize(K, parameters);
       }
     else if (preconditioner_type == Type::direct)

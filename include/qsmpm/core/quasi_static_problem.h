@@ -21,6 +21,7 @@
 #include <qsmpm/io/output_writer.h>
 #include <qsmpm/io/probe_writer.h>
 #include <qsmpm/io/run_state.h>
+#include <qsmpm/loading/body_contact.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/loading/equilibrium_audit.h>
@@ -87,6 +88,7 @@ namespace qsmpm
       typename EquilibriumAudit<dim>::Parameters   equilibrium_check;
       typename OutputWriter<dim>::Parameters       output;
       typename PorePressureSolver<dim>::Parameters pore_fluid;
+      typename BodyContact<dim>::Parameters        body_contact;
 
       /// Declare every subsection, including "Material" and "Boundary
       /// conditions" with all registered models.
@@ -129,6 +131,14 @@ namespace qsmpm
     /// The background grid (call make_box() before adding points).
     BackgroundGrid<dim> &
     grid();
+
+    /**
+     * Bodies that touch each other (BodyContact): one displacement field
+     * per body on the grid. From C++, call it before grid().make_box();
+     * initialize() calls it with the subsection "Contact between bodies".
+     */
+    void
+    set_body_contact(const typename BodyContact<dim>::Parameters &parameters);
 
     /// Choose the constitutive model; creates the (empty) point set, whose
     /// points carry an area for each surface traction given so far.
@@ -315,7 +325,7 @@ namespace qsmpm
      * warns once).
      */
     void
-    audit_equilibrium(const double t_new);
+    audit_equilibrium(const double t_new, const double step_force_scale);
 
     /**
      * The fixed-stress iteration of a step with a pore fluid, after the
@@ -423,6 +433,13 @@ namespace qsmpm
     SurfaceTractions<dim>                  surface_tractions;
     RigidContact<dim>                      rigid_contact;
     RigidPlates<dim>                       rigid_plates;
+    /// Contact between the bodies of a multi-field grid.
+    BodyContact<dim> body_contact;
+    /// Solves of the current step with a changed contact set so far, and
+    /// whether advance() solves the step again with the contact set of the
+    /// last solve (instead of a new one from the points).
+    unsigned int contact_iterations = 0;
+    bool         keep_contact_set   = false;
     /// The material's force on each rigid body in the last accepted step.
     std::vector<typename RigidContact<dim>::BodyLoad> body_loads;
     /// degree_of_consolidation() of the last accepted step.

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <qsmpm/assembly/ghost_penalty.h>
 #include <qsmpm/grid/background_grid.h>
+#include <qsmpm/loading/body_contact.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -49,7 +50,9 @@ namespace qsmpm
          const double                                      t_new,
          AffineConstraints<double>                        &constraints,
          IndexSet                                         &held,
-         const GhostPenalty<dim> *ghost_penalty = nullptr);
+         const GhostPenalty<dim> *ghost_penalty   = nullptr,
+         BodyContact<dim>        *body_contact    = nullptr,
+         const bool               new_contact_set = true);
 
     /**
      * The mean over the dofs that have stiffness of the diagonal of the

@@ -78,6 +78,33 @@ namespace qsmpm
     explicit BackgroundGrid(const MPI_Comm communicator);
 
     /**
+     * Give every node one displacement per body (the multi-field grid of
+     * Bardenhagen et al. 2001): the finite element becomes
+     * FE_Q(1)^(dim @p n), and component b * dim + c is the displacement
+     * component c of body b. Points of body b see only body b's field, so
+     * that two bodies at the same node can move apart; BodyContact ties
+     * the fields where the bodies touch. Call it before make_box(); the
+     * default is one body, whose field is the grid's only one.
+     */
+    void
+    set_n_bodies(const unsigned int n);
+
+    /// The number of bodies, each with its own displacement field.
+    unsigned int
+    n_bodies() const
+    {
+      return bodies;
+    }
+
+    /// Degrees of freedom per node: dim times n_bodies(). Those of a node
+    /// are consecutive, body by body.
+    unsigned int
+    n_node_dofs() const
+    {
+      return dim * bodies;
+    }
+
+    /**
      * Create the box and distribute the degrees of freedom.
      */
     void
@@ -221,7 +248,8 @@ namespace qsmpm
 
     MPI_Comm                                  communicator;
     parallel::distributed::Triangulation<dim> triangulation;
-    FESystem<dim>                             fe;
+    unsigned int                              bodies = 1;
+    std::unique_ptr<FESystem<dim>>            fe;
     MappingQ1<dim>                            mapping;
     DoFHandler<dim>                           dof_handler;
     /// For find_cell_around(), made at its first use.

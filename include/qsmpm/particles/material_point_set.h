@@ -69,6 +69,9 @@ namespace qsmpm
       /// The material id of a point created at x, an expression in x, y
       /// (and z) whose value is a non-negative integer.
       std::string material_id = "0";
+      /// Where points are created (with the region box): an expression in
+      /// x, y (and z), points where its value is positive; empty: all.
+      std::string region_expression;
       /// The stress of a point created at x (its components xx; yy; zz;
       /// xy in 2D, xx; yy; zz; xy; xz; yz in 3D, expressions in x, y (and
       /// z)); empty: the model's own (ConstitutiveModel::initial_stress()).

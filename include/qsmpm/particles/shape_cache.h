@@ -46,14 +46,31 @@ namespace qsmpm
     /// The largest number of dofs of a group: the 4^dim nodes of the block.
     static constexpr unsigned int max_dofs_per_group =
       BackgroundGrid<dim>::n_block_nodes * dim;
+    /// The largest number of bodies of a multi-field grid.
+    static constexpr unsigned int max_bodies = 8;
 
-    /// A cell holding points: its points are [first_point, end_point).
+    /**
+     * A group of points: the points [first_point, end_point) of @p body
+     * in @p cell. With one body (the default) a group is a cell with
+     * points; on a multi-field grid (BackgroundGrid::set_n_bodies()) each
+     * body in a cell is a group of its own, whose dofs are that body's
+     * field at the cell's nodes.
+     */
     struct CellRange
     {
       typename Triangulation<dim>::active_cell_iterator cell;
       unsigned int                                      first_point;
       unsigned int                                      end_point;
+      unsigned int                                      body = 0;
     };
+
+    /**
+     * On a multi-field grid: the body of each material id
+     * (@p body_of_material[id]; numbers::invalid_unsigned_int for an id of
+     * no body, which reinit() rejects). Empty (the default): one body.
+     */
+    void
+    set_bodies(const std::vector<unsigned int> &body_of_material);
 
     /**
      * Recompute everything for the current point positions (and, with
@@ -339,7 +356,18 @@ namespace qsmpm
                     const BackgroundGrid<dim>                            &grid,
                     const Epetra_BlockMap                                &map,
                     unsigned int                                         &p,
-                    Particles::ParticleHandler<dim> &particle_handler);
+                    Particles::ParticleHandler<dim> &particle_handler,
+                    const unsigned int               body,
+                    const unsigned int               n_points);
+
+    /// The body of a point with properties @p data (0 with one body).
+    unsigned int
+    body_of(const double *data) const;
+
+    /// See set_bodies().
+    std::vector<unsigned int> body_of_material;
+    /// Offset of the material id in the point properties (reinit()).
+    unsigned int material_id_offset = 0;
 
     /// GIMP weights over the 3^dim cells around the point's cell.
     void

@@ -1,0 +1,496 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <limits>
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/loading/body_contact.h>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace qsmpm
+{
+  namespace
+  {
+    /// The component of @p n of the largest magnitude.
+    template <int dim>
+    unsigned int
+    largest_component(const Tensor<1, dim> &n)
+    {
+      unsigned int s = 0;
+      for (unsigned int d = 1; d < dim; ++d)
+        if (std::abs(n[d]) > std::abs(n[s]))
+          s = d;
+      return s;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::Parameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact between bodies");
+    {
+      prm.add_parameter(
+        "Bodies",
+        bodies,
+        "The material ids of each body that may touch another: bodies "
+        "separated by ';', the ids of one body by ',' (e.g. '0; 1' or "
+        "'0, 2; 1'). Each body gets its own displacement field on the grid "
+        "(a multi-field grid), so that bodies can separate; where two meet "
+        "at a node, their fields are tied while they press on each other. "
+        "Empty: one body, every point on one field.",
+        Patterns::Anything());
+      prm.add_parameter("Friction",
+                        friction,
+                        "frictionless: the normal displacements of two "
+                        "bodies in contact are tied, they slide freely; "
+                        "rough: all displacements are tied, no slip.",
+                        Patterns::Selection("frictionless|rough"));
+      prm.add_parameter("Gap tolerance",
+                        gap_tolerance,
+                        "A gap between two bodies at most this times the "
+                        "cell size counts as closed.",
+                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Max contact iterations",
+        max_iterations,
+        "A step whose contact set (the nodes where bodies press on each "
+        "other) changes after a solve is solved again with the new set, at "
+        "most this many times; then it fails and is cut back.",
+        Patterns::Integer(1));
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  BodyContact<dim>::Parameters::body_of_material() const
+  {
+    std::vector<unsigned int> body_of;
+    const auto bodies_text = dealii::Utilities::split_string_list(bodies, ';');
+    if (bodies_text.size() < 2)
+      {
+        AssertThrow(bodies_text.empty(),
+                    ExcMessage("Contact between bodies/Bodies: '" + bodies +
+                               "' names one body; contact needs two or more "
+                               "(separated by ';'), or none."));
+        return body_of;
+      }
+    for (unsigned int b = 0; b < bodies_text.size(); ++b)
+      {
+        const auto ids = dealii::Utilities::split_string_list(bodies_text[b]);
+        AssertThrow(!ids.empty(),
+                    ExcMessage("Contact between bodies/Bodies: body " +
+                               std::to_string(b) + " has no material id."));
+        for (const auto &text : ids)
+          {
+            int id = -1;
+            try
+              {
+                id = dealii::Utilities::string_to_int(text);
+              }
+            catch (...)
+              {
+              }
+            AssertThrow(id >= 0,
+                        ExcMessage("Contact between bodies/Bodies: '" + text +
+                                   "' is no material id."));
+            if (body_of.size() <= static_cast<unsigned int>(id))
+              body_of.resize(id + 1, numbers::invalid_unsigned_int);
+            AssertThrow(body_of[id] == numbers::invalid_unsigned_int,
+                        ExcMessage("Contact between bodies/Bodies: material "
+                                   "id " +
+                                   text + " is given to two bodies."));
+            body_of[id] = b;
+          }
+      }
+    return body_of;
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::Parameters::check() const
+  {
+    const auto body_of = body_of_material();
+    AssertThrow(
+      body_of.empty() ||
+        *std::max_element(body_of.begin(),
+                          body_of.end(),
+                          [](const unsigned int a, const unsigned int b) {
+                            return (a == numbers::invalid_unsigned_int ? 0 :
+                                                                         a) <
+                                   (b == numbers::invalid_unsigned_int ? 0 : b);
+                          }) < ShapeCache<dim>::max_bodies,
+      ExcMessage("Contact between bodies/Bodies: at most " +
+                 std::to_string(ShapeCache<dim>::max_bodies) + " bodies."));
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::initialize(const Parameters &prm)
+  {
+    parameters    = prm;
+    rough         = prm.friction == "rough";
+    body_of       = prm.body_of_material();
+    n_body_fields = 1;
+    for (const unsigned int b : body_of)
+      if (b != numbers::invalid_unsigned_int)
+        n_body_fields = std::max(n_body_fields, b + 1);
+    nodes.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::reinit_step(const BackgroundGrid<dim>   &grid,
+                                const ShapeCache<dim>       &cache,
+                                const MaterialPointSet<dim> &points,
+                                const IndexSet              &inactive)
+  {
+    nodes.clear();
+    if (!enabled())
+      return;
+    const MPI_Comm communicator = grid.get_communicator();
+    const auto    &offsets      = points.get_offsets();
+    const bool     finite       = points.get_formulation().finite_strain();
+    gap_tolerance = parameters.gap_tolerance * grid.min_cell_size();
+
+    // The gradient of each body's nodal volume, in the body's dofs.
+    TrilinosWrappers::MPI::Vector gradient(grid.locally_owned_dofs(),
+                                           communicator);
+    {
+      std::vector<double> local(ShapeCache<dim>::max_dofs_per_group);
+      typename ShapeCache<dim>::GradientBuffer buffer;
+      for (unsigned int c = 0; c < cache.n_cells(); ++c)
+        {
+          std::fill(local.begin(), local.begin() + cache.n_dofs(c), 0.);
+          const auto &range = cache.cell(c);
+          for (unsigned int p = range.first_point; p < range.end_point; ++p)
+            {
+              const double          omega = cache.properties(p)[offsets.volume];
+              const auto           *grad  = cache.gradients(c, p, buffer);
+              const unsigned short *node  = cache.nodes(p);
+              for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
+                for (unsigned int d = 0; d < dim; ++d)
+                  local[node[k] * dim + d] += omega * grad[k][d];
+            }
+          gradient.add(cache.n_dofs(c), cache.global_dofs(c), local.data());
+        }
+      gradient.compress(VectorOperation::add);
+    }
+    TrilinosWrappers::MPI::Vector gradient_ghosted(grid.locally_owned_dofs(),
+                                                   grid.locally_relevant_dofs(),
+                                                   communicator);
+    gradient_ghosted = gradient;
+
+    const Point<dim> &lower = grid.lower_corner(), &upper = grid.upper_corner();
+    const double      edge_tolerance = 1e-10 * grid.min_cell_size();
+
+    // The nodes where two bodies have material, each once.
+    const unsigned int n_bodies = n_body_fields;
+    std::unordered_map<types::global_dof_index, unsigned int> role_of_dof;
+    std::set<types::global_dof_index>                         seen;
+    for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            if (!seen.insert(cell->vertex_dof_index(v, 0)).second)
+              continue;
+            std::vector<unsigned int> present;
+            for (unsigned int b = 0; b < n_bodies; ++b)
+              if (!inactive.is_element(cell->vertex_dof_index(v, b * dim)))
+                present.push_back(b);
+            if (present.size() < 2)
+              continue;
+            AssertThrow(present.size() == 2,
+                        ExcMessage("Contact between bodies: three or more "
+                                   "bodies meet at the node at (" +
+                                   [&] {
+                                     std::ostringstream text;
+                                     text << cell->vertex(v);
+                                     return text.str();
+                                   }() +
+                                   ")" +
+                                   "; contact is between two bodies at a "
+                                   "node (a finer grid separates them)."));
+            Node node;
+            node.location = cell->vertex(v);
+            Tensor<1, dim> g_a, g_b;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                node.dofs_a[d] =
+                  cell->vertex_dof_index(v, present[0] * dim + d);
+                node.dofs_b[d] =
+                  cell->vertex_dof_index(v, present[1] * dim + d);
+                g_a[d] = gradient_ghosted(node.dofs_a[d]);
+                g_b[d] = gradient_ghosted(node.dofs_b[d]);
+              }
+            // sum_p Omega_p grad N_i(x_p) points from the body's points
+            // towards the node: out of the body at its surface. From a to b
+            // is along a's and against b's. At a node on the grid's edge
+            // both also point out of the grid, where no body can be, each
+            // in proportion to its volume at the node: that component is
+            // no direction of contact.
+            Tensor<1, dim> n = g_a - g_b;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::abs(node.location[d] - lower[d]) < edge_tolerance ||
+                  std::abs(node.location[d] - upper[d]) < edge_tolerance)
+                n[d] = 0.;
+            if (!(n.norm() > 0.))
+              continue;
+            node.normal = n / n.norm();
+            role_of_dof.emplace(node.dofs_a[0], 2 * nodes.size());
+            role_of_dof.emplace(node.dofs_b[0], 2 * nodes.size() + 1);
+            nodes.push_back(node);
+          }
+
+    // The extent of each body's points along the node's normal: the
+    // largest n . x of a corner of a's boxes, and minus the smallest of
+    // b's, a maximum over the ranks in the slot of the body's first dof.
+    LinearAlgebra::distributed::Vector<double> extent(
+      grid.locally_owned_dofs(), grid.locally_relevant_dofs(), communicator);
+    // (Assigning a number other than 0 leaves the ghost entries as they
+    // are.)
+    for (unsigned int i = 0; i < extent.locally_owned_size() +
+                                   extent.get_partitioner()->n_ghost_indices();
+         ++i)
+      extent.local_element(i) = std::numeric_limits<double>::lowest();
+    for (unsigned int c = 0; c < cache.n_cells(); ++c)
+      {
+        const auto                    &range = cache.cell(c);
+        const types::global_dof_index *dofs  = cache.global_dofs(c);
+        for (unsigned int k = 0; k < GeometryInfo<dim>::vertices_per_cell; ++k)
+          {
+            const auto it = role_of_dof.find(dofs[k * dim]);
+            if (it == role_of_dof.end())
+              continue;
+            const Node           &node = nodes[it->second / 2];
+            const bool            is_b = it->second % 2 == 1;
+            const Tensor<1, dim> &n    = node.normal;
+            double largest             = std::numeric_limits<double>::lowest();
+            for (unsigned int p = range.first_point; p < range.end_point; ++p)
+              {
+                const double *data = cache.properties(p);
+                const double  half =
+                  0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
+                const Tensor<2, dim> F =
+                  finite ? Utils::read_tensor<dim>(
+                             data + offsets.deformation_gradient) :
+                           Tensor<2, dim>(
+                             unit_symmetric_tensor<dim>() +
+                             Utils::read_symmetric<dim>(data + offsets.strain));
+                // The box's half-extent along n: sum_d |n . F e_d| l_d.
+                double reach = 0.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    double along = 0.;
+                    for (unsigned int i = 0; i < dim; ++i)
+                      along += n[i] * F[i][d];
+                    reach += std::abs(along) * half;
+                  }
+                const double x_n = n * Tensor<1, dim>(cache.position(p));
+                largest = std::max(largest, is_b ? reach - x_n : x_n + reach);
+              }
+            extent(dofs[k * dim]) = std::max(extent(dofs[k * dim]), largest);
+          }
+      }
+    extent.compress(VectorOperation::max);
+    extent.update_ghost_values();
+
+    for (auto &node : nodes)
+      {
+        node.gap      = -extent(node.dofs_b[0]) - extent(node.dofs_a[0]);
+        node.active   = node.gap <= gap_tolerance;
+        node.touching = node.active;
+        node.tied.fill(-1);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::add_constraints(AffineConstraints<double> &constraints)
+  {
+    // u_s = sum_k w_k u_k + g for a dof s that is still free.
+    const auto tie =
+      [&](
+        const types::global_dof_index                                  s,
+        const std::vector<std::pair<types::global_dof_index, double>> &entries,
+        const double                                                   g) {
+        constraints.add_line(s);
+        for (const auto &[dof, w] : entries)
+          if (w != 0.)
+            constraints.add_entry(s, dof, w);
+        constraints.set_inhomogeneity(s, g);
+      };
+    for (auto &node : nodes)
+      {
+        node.tied.fill(-1);
+        if (!node.active)
+          continue;
+        const Tensor<1, dim> &n = node.normal;
+        // Bodies that touch stay where they are; a gap that the step's
+        // solution closed is closed by the tie.
+        const double closing = node.touching ? 0. : node.gap;
+        if (rough)
+          {
+            // u_b = u_a - closing n, component by component (a component
+            // that a displacement condition holds for both bodies needs
+            // no tie).
+            for (unsigned int d = 0; d < dim; ++d)
+              if (!constraints.is_constrained(node.dofs_b[d]))
+                {
+                  tie(node.dofs_b[d], {{node.dofs_a[d], 1.}}, -closing * n[d]);
+                  node.tied[d] = 0;
+                }
+              else if (!constraints.is_constrained(node.dofs_a[d]))
+                {
+                  tie(node.dofs_a[d], {{node.dofs_b[d], 1.}}, closing * n[d]);
+                  node.tied[d] = 1;
+                }
+            continue;
+          }
+        // (u_b - u_a) . n = -closing, solved for the component s of the
+        // largest |n_s| of b (or of a, if b's is held).
+        const unsigned int s = largest_component(n);
+        std::vector<std::pair<types::global_dof_index, double>> entries;
+        if (!constraints.is_constrained(node.dofs_b[s]))
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                entries.emplace_back(node.dofs_a[d], n[d] / n[s]);
+                if (d != s)
+                  entries.emplace_back(node.dofs_b[d], -n[d] / n[s]);
+              }
+            tie(node.dofs_b[s], entries, -closing / n[s]);
+            node.tied[s] = 0;
+          }
+        else if (!constraints.is_constrained(node.dofs_a[s]))
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                entries.emplace_back(node.dofs_b[d], n[d] / n[s]);
+                if (d != s)
+                  entries.emplace_back(node.dofs_a[d], -n[d] / n[s]);
+              }
+            tie(node.dofs_a[s], entries, closing / n[s]);
+            node.tied[s] = 1;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  BodyContact<dim>::normal_force(const Node                          &node,
+                                 const TrilinosWrappers::MPI::Vector &R) const
+  {
+    // R = f_ext - f_int before condensation: minus the force of the other
+    // body on b at b's tied dofs, plus it at a's. The force on b is
+    // +lambda n in compression. With the normal tie, the tied component
+    // alone carries it (the other components' condensed equations make
+    // the force parallel to n): lambda = f_s / n_s.
+    Tensor<1, dim> force;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (node.tied[d] == 0)
+        force[d] = -R(node.dofs_b[d]);
+      else if (node.tied[d] == 1)
+        force[d] = R(node.dofs_a[d]);
+    if (rough)
+      return force * node.normal;
+    const unsigned int s = largest_component(node.normal);
+    return force[s] / node.normal[s];
+  }
+
+
+
+  template <int dim>
+  bool
+  BodyContact<dim>::update(const BackgroundGrid<dim>           &grid,
+                           const TrilinosWrappers::MPI::Vector &du,
+                           const TrilinosWrappers::MPI::Vector &R)
+  {
+    if (!enabled())
+      return false;
+    const MPI_Comm                communicator = grid.get_communicator();
+    TrilinosWrappers::MPI::Vector du_ghosted(grid.locally_owned_dofs(),
+                                             grid.locally_relevant_dofs(),
+                                             communicator);
+    TrilinosWrappers::MPI::Vector R_ghosted(du_ghosted);
+    du_ghosted = du;
+    R_ghosted  = R;
+
+    // Forces below 1e-8 of the largest contact force are round-off.
+    double largest = 0.;
+    for (const auto &node : nodes)
+      if (node.active)
+        largest = std::max(largest, std::abs(normal_force(node, R_ghosted)));
+    largest = dealii::Utilities::MPI::max(largest, communicator);
+    const double force_floor = 1e-8 * largest;
+
+    // The force between the bodies, each node counted by the owner of
+    // body a's first dof.
+    total_force = 0.;
+    for (const auto &node : nodes)
+      if (node.active && grid.locally_owned_dofs().is_element(node.dofs_a[0]))
+        total_force += normal_force(node, R_ghosted);
+    total_force = dealii::Utilities::MPI::sum(total_force, communicator);
+
+    bool changed = false;
+    for (auto &node : nodes)
+      if (node.active)
+        {
+          if (normal_force(node, R_ghosted) < -force_floor)
+            {
+              node.active = false;
+              changed     = true;
+            }
+        }
+      else
+        {
+          double opening = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            opening +=
+              (du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d])) *
+              node.normal[d];
+          if (node.gap + opening < -gap_tolerance)
+            {
+              node.active = true;
+              changed     = true;
+            }
+        }
+    return dealii::Utilities::MPI::max(changed ? 1 : 0, communicator) > 0;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  BodyContact<dim>::n_active(const BackgroundGrid<dim> &grid) const
+  {
+    unsigned int count = 0;
+    for (const auto &node : nodes)
+      if (node.active && grid.locally_owned_dofs().is_element(node.dofs_a[0]))
+        ++count;
+    return dealii::Utilities::MPI::sum(count, grid.get_communicator());
+  }
+
+
+
+  template class BodyContact<2>;
+  template class BodyContact<3>;
+} // namespace qsmpm

@@ -1,0 +1,156 @@
+// Contact between deformable bodies (issue 30, item 2): two elastic blocks
+// on a multi-field grid (BodyContact), meeting across a gap, compressed,
+// then pulled apart. Grid [0, 2] x [0, 0.5], h = 0.125, 2 x 2 points per
+// cell, linear elastic (E = 1000, nu = 0.3, plane strain), small strain.
+// Block A fills [0, 1] (material id 0), block B [1 + g, 2] (id 1), with
+// g = h / 2: the blocks share the grid nodes at x = 1 from the start (B's
+// first points lie in the cell [1, 1 + h]), and only the gap tells that
+// they do not touch. The left face holds u_x = 0, top and bottom u_y = 0
+// (uniaxial strain: a 1D problem), the right face moves B by u(t):
+//   t in [0, 0.4]: -g t / 0.4 (4 steps: B slides to A, no force),
+//   t in [0.4, 0.7]: further by -c (t - 0.4) / 0.3, c = 0.006
+//     (3 steps of compression),
+//   t in [0.7, 1]: back to -g + s at t = 1, s = 0.01 (3 steps: the blocks
+//     unload, come apart at t = 0.82 and separate).
+// Known answers:
+//  - while closing (t <= 0.4) the force on the right face is zero (B moves
+//    freely): below 1e-8 of the peak (the Newton tolerance is 1e-10);
+//  - in compression, the two blocks are one: a single block [0, 2 - g]
+//    (its points where A's and B's are when the gap has closed), loaded
+//    from t = 0.4 by u(t) + g, carries the same force at every step to
+//    1e-6 (the issue's figure; frictionless and rough contact);
+//  - after separation (t = 0.9, 1.0) the force is zero: below 1e-8 of the
+//    peak.
+// The single block is computed on one field, without contact: a different
+// path through the code. (Its force is no closed form: the grid's edge at
+// x = 2 lies h / 2 beyond the material, in a cell that the points fill
+// only half.)
+#include "tests.h"
+
+#include <qsmpm/base/utilities.h>
+#include <qsmpm/core/quasi_static_problem.h>
+#include <qsmpm/materials/linear_elastic.h>
+
+using namespace qsmpm;
+
+namespace
+{
+  const double E = 1000., nu = 0.3, h = 0.125, W = 0.5, g = 0.5 * h, c = 0.006,
+               s = 0.01;
+
+  // u(t) of the right face: single = false as above; single = true, the
+  // single block's: 0 until t = 0.4, then u(t) + g.
+  class RightFace : public Function<2>
+  {
+  public:
+    explicit RightFace(const bool single)
+      : Function<2>(2)
+      , single(single)
+    {
+    }
+    double
+    value(const Point<2> &, const unsigned int component) const override
+    {
+      if (component != 0)
+        return 0.;
+      const double t = get_time();
+      double       u = 0.;
+      if (t <= 0.4)
+        u = -g * t / 0.4;
+      else if (t <= 0.7)
+        u = -g - c * (t - 0.4) / 0.3;
+      else
+        u = -g - c + (c + s) * (t - 0.7) / 0.3;
+      return single ? (t <= 0.4 ? 0. : u + g) : u;
+    }
+
+  private:
+    const bool single;
+  };
+
+  // The force on the right face (x component) at every step.
+  std::vector<double>
+  run(const bool two_bodies, const std::string &friction)
+  {
+    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    problem.pcout().set_condition(false);
+    auto &prm                      = problem.parameters();
+    prm.load_stepping.n_steps      = 10;
+    prm.nonlinear_solver.tolerance = 1e-10;
+    prm.output.interval            = 0;
+    prm.output.directory           = "two-blocks-out";
+    if (two_bodies)
+      {
+        BodyContact<2>::Parameters contact;
+        contact.bodies   = "0; 1";
+        contact.friction = friction;
+        problem.set_body_contact(contact);
+      }
+    problem.grid().make_box(Point<2>(), Point<2>(2., W), {{16, 4}});
+    auto      &bcs  = problem.boundary_conditions();
+    const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+    bcs.add_dirichlet_boundary(0, {{true, false}}, zero);
+    bcs.add_dirichlet_boundary(2, {{false, true}}, zero);
+    bcs.add_dirichlet_boundary(3, {{false, true}}, zero);
+    bcs.add_dirichlet_boundary(1,
+                               {{true, false}},
+                               std::make_shared<RightFace>(!two_bodies));
+
+    LinearElastic<2>::Parameters material;
+    material.elasticity.young_modulus = E;
+    material.elasticity.poisson_ratio = nu;
+    problem.set_model(std::make_unique<LinearElastic<2>>(material));
+    const auto rule = MaterialPointSet<2>::reference_rule(
+      MaterialPointSet<2>::Placement::regular, {{2, 2}});
+    if (two_bodies)
+      problem.points().fill(
+        [](const Point<2> &x) { return x[0] < 1. || x[0] > 1. + g; },
+        rule,
+        [](const Point<2> &x) { return x[0] < 1. ? 0u : 1u; });
+    else
+      // Where A's and B's points are once the gap has closed: B's moved
+      // by -g, which keeps them on the same lattice of spacing h / 2.
+      problem.points().fill([](const Point<2> &x) { return x[0] < 2. - g; },
+                            rule,
+                            [](const Point<2> &) { return 0u; });
+
+    std::vector<double> force;
+    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
+      // The reaction of the right face (condition 3): the force the face
+      // applies, negative in compression.
+      force.push_back(problem.reactions().at(3)[0]);
+      return true;
+    });
+    problem.run();
+    return force;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPILogInitAll                    log;
+
+  const auto single = run(false, "frictionless");
+  check_that("single block: 10 steps", single.size() == 10);
+  for (const std::string friction : {"frictionless", "rough"})
+    {
+      deallog << friction << " contact" << std::endl;
+      const auto two = run(true, friction);
+      check_that("  two blocks: 10 steps", two.size() == 10);
+      double peak = 0.;
+      for (const double f : two)
+        peak = std::max(peak, std::abs(f));
+      double closing = 0., apart = 0., difference = 0.;
+      for (unsigned int k = 0; k < 4; ++k)
+        closing = std::max(closing, std::abs(two[k]));
+      for (unsigned int k = 4; k < 8; ++k)
+        difference = std::max(difference, std::abs(two[k] - single[k]) / peak);
+      for (unsigned int k = 8; k < 10; ++k)
+        apart = std::max(apart, std::abs(two[k]));
+      check("  max |F| while the gap closes / peak", closing / peak, 1e-8);
+      check("  max |F_two - F_single| / peak in compression", difference, 1e-6);
+      check("  max |F| after separation / peak", apart / peak, 1e-8);
+    }
+}
