@@ -83,7 +83,9 @@ namespace
       {
         BodyContact<2>::Parameters contact;
         contact.bodies   = "0; 1";
-        contact.friction = friction;
+        contact.friction = friction == "rough" ?
+                             BodyContact<2>::Parameters::Friction::rough :
+                             BodyContact<2>::Parameters::Friction::frictionless;
         problem.set_body_contact(contact);
       }
     problem.grid().make_box(Point<2>(), Point<2>(2., W), {{16, 4}});

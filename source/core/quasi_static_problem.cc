@@ -304,11 +304,14 @@ namespace qsmpm
   {
     setup_step_data();
 
-    // N_i(x_p) and grad N_i(x_p) for the whole step (paper Section 2.3).
-    {
-      TimerOutput::Scope scope(timer_output, "shape functions at points");
-      cache.reinit(background_grid, points(), residual->ghosted_layout());
-    }
+    // N_i(x_p) and grad N_i(x_p) for the whole step (paper Section 2.3);
+    // a step solved again with a new contact set between bodies keeps
+    // them, as the points have not moved.
+    if (!keep_contact_set)
+      {
+        TimerOutput::Scope scope(timer_output, "shape functions at points");
+        cache.reinit(background_grid, points(), residual->ghosted_layout());
+      }
     const double gamma = prm_values.material_points.ghost_penalty;
     if (gamma > 0.)
       {

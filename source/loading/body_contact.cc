@@ -45,12 +45,14 @@ namespace qsmpm
         "at a node, their fields are tied while they press on each other. "
         "Empty: one body, every point on one field.",
         Patterns::Anything());
-      prm.add_parameter("Friction",
-                        friction,
-                        "frictionless: the normal displacements of two "
-                        "bodies in contact are tied, they slide freely; "
-                        "rough: all displacements are tied, no slip.",
-                        Patterns::Selection("frictionless|rough"));
+      Utils::add_selection<Friction>(
+        prm,
+        "Friction",
+        friction,
+        {{"frictionless", Friction::frictionless}, {"rough", Friction::rough}},
+        "frictionless: the normal displacements of two bodies in contact "
+        "are tied, they slide freely; rough: all displacements are tied, no "
+        "slip.");
       prm.add_parameter("Gap tolerance",
                         gap_tolerance,
                         "A gap between two bodies at most this times the "
@@ -120,18 +122,13 @@ namespace qsmpm
   void
   BodyContact<dim>::Parameters::check() const
   {
-    const auto body_of = body_of_material();
-    AssertThrow(
-      body_of.empty() ||
-        *std::max_element(body_of.begin(),
-                          body_of.end(),
-                          [](const unsigned int a, const unsigned int b) {
-                            return (a == numbers::invalid_unsigned_int ? 0 :
-                                                                         a) <
-                                   (b == numbers::invalid_unsigned_int ? 0 : b);
-                          }) < ShapeCache<dim>::max_bodies,
-      ExcMessage("Contact between bodies/Bodies: at most " +
-                 std::to_string(ShapeCache<dim>::max_bodies) + " bodies."));
+    // Reads the list (and stops on a malformed one).
+    body_of_material();
+    AssertThrow(dealii::Utilities::split_string_list(bodies, ';').size() <=
+                  ShapeCache<dim>::max_bodies,
+                ExcMessage("Contact between bodies/Bodies: at most " +
+                           std::to_string(ShapeCache<dim>::max_bodies) +
+                           " bodies."));
   }
 
 
@@ -141,7 +138,6 @@ namespace qsmpm
   BodyContact<dim>::initialize(const Parameters &prm)
   {
     parameters    = prm;
-    rough         = prm.friction == "rough";
     body_of       = prm.body_of_material();
     n_body_fields = 1;
     for (const unsigned int b : body_of)
@@ -267,44 +263,56 @@ namespace qsmpm
                                    extent.get_partitioner()->n_ghost_indices();
          ++i)
       extent.local_element(i) = std::numeric_limits<double>::lowest();
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        const auto                    &range = cache.cell(c);
-        const types::global_dof_index *dofs  = cache.global_dofs(c);
-        for (unsigned int k = 0; k < GeometryInfo<dim>::vertices_per_cell; ++k)
+        // The group's vertices that are contact nodes, with their role.
+        const types::global_dof_index       *dofs = cache.global_dofs(c);
+        std::array<unsigned int, n_vertices> role;
+        std::array<double, n_vertices>       largest;
+        unsigned int                         n_shared = 0;
+        for (unsigned int k = 0; k < n_vertices; ++k)
           {
             const auto it = role_of_dof.find(dofs[k * dim]);
-            if (it == role_of_dof.end())
-              continue;
-            const Node           &node = nodes[it->second / 2];
-            const bool            is_b = it->second % 2 == 1;
-            const Tensor<1, dim> &n    = node.normal;
-            double largest             = std::numeric_limits<double>::lowest();
-            for (unsigned int p = range.first_point; p < range.end_point; ++p)
-              {
-                const double *data = cache.properties(p);
-                const double  half =
-                  0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
-                const Tensor<2, dim> F =
-                  finite ? Utils::read_tensor<dim>(
-                             data + offsets.deformation_gradient) :
-                           Tensor<2, dim>(
-                             unit_symmetric_tensor<dim>() +
-                             Utils::read_symmetric<dim>(data + offsets.strain));
-                // The box's half-extent along n: sum_d |n . F e_d| l_d.
-                double reach = 0.;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    double along = 0.;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      along += n[i] * F[i][d];
-                    reach += std::abs(along) * half;
-                  }
-                const double x_n = n * Tensor<1, dim>(cache.position(p));
-                largest = std::max(largest, is_b ? reach - x_n : x_n + reach);
-              }
-            extent(dofs[k * dim]) = std::max(extent(dofs[k * dim]), largest);
+            role[k] = it == role_of_dof.end() ? numbers::invalid_unsigned_int :
+                                                it->second;
+            largest[k] = std::numeric_limits<double>::lowest();
+            n_shared += it != role_of_dof.end();
           }
+        if (n_shared == 0)
+          continue;
+        const auto &range = cache.cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            // The point's box: half-length and its deformation so far.
+            const double *data = cache.properties(p);
+            const double  half =
+              0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
+            const Tensor<2, dim> F =
+              finite ?
+                Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
+                Tensor<2, dim>(
+                  unit_symmetric_tensor<dim>() +
+                  Utils::read_symmetric<dim>(data + offsets.strain));
+            const Tensor<1, dim> x(cache.position(p));
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              if (role[k] != numbers::invalid_unsigned_int)
+                {
+                  const Tensor<1, dim> &n = nodes[role[k] / 2].normal;
+                  // The box's half-extent along n: sum_d |n . F e_d| l_d.
+                  const Tensor<1, dim> FTn   = transpose(F) * n;
+                  double               reach = 0.;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    reach += std::abs(FTn[d]) * half;
+                  const double x_n = n * x;
+                  largest[k] =
+                    std::max(largest[k],
+                             role[k] % 2 == 1 ? reach - x_n : x_n + reach);
+                }
+          }
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          if (role[k] != numbers::invalid_unsigned_int)
+            extent(dofs[k * dim]) = std::max(extent(dofs[k * dim]), largest[k]);
       }
     extent.compress(VectorOperation::max);
     extent.update_ghost_values();
@@ -345,7 +353,7 @@ namespace qsmpm
         // Bodies that touch stay where they are; a gap that the step's
         // solution closed is closed by the tie.
         const double closing = node.touching ? 0. : node.gap;
-        if (rough)
+        if (parameters.friction == Parameters::Friction::rough)
           {
             // u_b = u_a - closing n, component by component (a component
             // that a displacement condition holds for both bodies needs
@@ -410,7 +418,7 @@ namespace qsmpm
         force[d] = -R(node.dofs_b[d]);
       else if (node.tied[d] == 1)
         force[d] = R(node.dofs_a[d]);
-    if (rough)
+    if (parameters.friction == Parameters::Friction::rough)
       return force * node.normal;
     const unsigned int s = largest_component(node.normal);
     return force[s] / node.normal[s];

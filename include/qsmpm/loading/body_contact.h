@@ -58,8 +58,15 @@ namespace qsmpm
       /// The material ids of each body: bodies separated by ';', the ids
       /// of one body by ','. Empty: one body, no contact.
       std::string bodies;
-      /// frictionless or rough.
-      std::string friction = "frictionless";
+      /// How two bodies in contact move along each other.
+      enum class Friction
+      {
+        /// Only the normal displacements are tied: free sliding.
+        frictionless,
+        /// All displacements are tied: no slip.
+        rough
+      };
+      Friction friction = Friction::frictionless;
       /// A gap at most this times the cell size counts as closed.
       double gap_tolerance = 1e-3;
       /// Solves of one step with a changed contact set at most.
@@ -182,7 +189,6 @@ namespace qsmpm
                  const TrilinosWrappers::MPI::Vector &R) const;
 
     Parameters                parameters;
-    bool                      rough         = false;
     unsigned int              n_body_fields = 1;
     std::vector<unsigned int> body_of;
     std::vector<Node>         nodes;
