@@ -6,7 +6,8 @@
 //  - finite strain with a small-strain model or without volume updates,
 //    GIMP with a macroscopic displacement gradient,
 //  - contact between bodies given wrongly (one body, an id that is no
-//    number or in two bodies, points of no body) or with what it does not
+//    number or in two bodies, points of no body, a negative friction
+//    coefficient) or with what it does not
 //    take (GIMP, a traction on a grid face), a region expression that is
 //    none,
 //  - a load step that does not converge (after the allowed cut-backs), and
@@ -297,6 +298,10 @@ main(int argc, char *argv[])
   try_input("contact between bodies with a material id in two bodies",
             "Contact between bodies",
             two_bodies + "  set Bodies = 0; 0, 1\nend\n");
+  try_input("contact between bodies with a negative friction coefficient",
+            "Friction coefficient",
+            two_bodies + "  set Bodies = 0; 1\n  set Friction = coulomb\n"
+                         "  set Friction coefficient = -0.1\nend\n");
   try_input("contact between bodies with points of no body",
             "Contact between bodies",
             two_bodies + "  set Bodies = 0; 2\nend\n" + run_briefly + "end\n",

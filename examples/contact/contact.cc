@@ -153,6 +153,7 @@ namespace Contact
       friction();
       hertz();
       two_blocks();
+      sliding_blocks();
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
           write_footing_plot();
@@ -244,6 +245,67 @@ namespace Contact
             << std::endl;
       summary.emplace_back("two_blocks_compression_difference", difference);
       summary.emplace_back("two_blocks_tension_force_over_peak", apart / peak);
+    }
+
+    // @sect4{A block sliding on a block}
+    //
+    // Coulomb friction between deformable bodies: block B [0.5, 1.5] x
+    // [0.5 + g, 1] (material id 1) above block A [0, 2] x [0, 0.5] (id 0,
+    // held at its base), g = h / 2, h = 1/8, the material and points of the
+    // two blocks above, mu = 0.3. B's top face moves B onto A (2 steps),
+    // presses it by 0.005 (2 steps) and pushes it along A by 0.008 (8
+    // steps). The force on the top face is the force between the blocks:
+    // once B slides (the last 3 steps), H / V = mu.
+    void
+    sliding_blocks()
+    {
+      const double       mu = 0.3;
+      std::ostringstream text;
+      // The step k = 12 t: u_y to -g in steps 1-2, by -0.005 more in steps
+      // 3-4, then u_x by 0.001 per step.
+      text << "set Dimension = 2\n"
+           << "subsection Geometry\n  set Upper corner = 2, 1\n"
+           << "  set Subdivisions = 16, 8\nend\n"
+           << "subsection Material points\n"
+           << "  set Region expression = "
+           << "if(y < 0.5 || (y > 0.5625 && x > 0.5 && x < 1.5), 1, 0)\n"
+           << "  set Material id = if(y < 0.5, 0, 1)\nend\n"
+           << "subsection Contact between bodies\n"
+           << "  set Bodies = 0; 1\n  set Friction = coulomb\n"
+           << "  set Friction coefficient = " << mu << "\nend\n"
+           << elastic(1000., 0.3) << "subsection Boundary conditions\n"
+           << "  set Dirichlet boundaries = 2:xy, 3:xy\n"
+           << "  subsection Displacement\n"
+           << "    set Function constants = g = 0.0625\n"
+           << "    set Function expression = "
+           << "if(y > 0.99, if(12 * t <= 4, 0, 0.001 * (12 * t - 4)), 0); "
+           << "if(y > 0.99, if(12 * t <= 2, -g * 6 * t, "
+           << "if(12 * t <= 4, -g - 0.0025 * (12 * t - 2), -g - 0.005)), 0)\n"
+           << "  end\nend\n"
+           << "subsection Load stepping\n  set Number of steps = 12\nend\n"
+           << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
+           << no_fields(settings.output_directory + "/sliding-blocks");
+      Benchmark<2> b(settings.output_directory, "sliding-blocks", text.str());
+      std::vector<double> ratio;
+      b.problem.set_step_callback([&](const StepReport &) {
+        // The reaction of the top face (the second condition).
+        const auto &force = b.problem.reactions().at(1);
+        ratio.push_back(std::abs(force[0] / force[1]));
+        return true;
+      });
+      b.problem.run();
+      AssertThrow(ratio.size() == 12,
+                  ExcMessage("sliding blocks: the run did not take 12 steps"));
+      double low = ratio[9], high = ratio[9];
+      for (unsigned int k = 10; k < 12; ++k)
+        {
+          low  = std::min(low, ratio[k]);
+          high = std::max(high, ratio[k]);
+        }
+      pcout << "sliding blocks: |H| / |V| / mu while sliding " << low / mu
+            << " to " << high / mu << std::endl;
+      summary.emplace_back("sliding_blocks_friction_over_mu_low", low / mu);
+      summary.emplace_back("sliding_blocks_friction_over_mu_high", high / mu);
     }
 
     // @sect4{The rigid plate}

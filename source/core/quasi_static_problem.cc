@@ -351,6 +351,11 @@ namespace qsmpm
                                 offsets.volume,
                               t_new,
                               f_ext);
+      if (body_contact.enabled())
+        {
+          body_contact.add_friction_forces(f_ext);
+          f_ext.compress(VectorOperation::add);
+        }
       if (!surface_tractions.empty())
         {
           surface_tractions.reinit_step(background_grid,
@@ -1012,6 +1017,7 @@ namespace qsmpm
           restore_user_state(user);
         last_written_step = -1;
       }
+    body_contact.check_points(points(), communicator);
     condition_names.clear();
     for (const auto &condition : bcs.dirichlet_conditions())
       condition_names.push_back(condition.name);

@@ -49,10 +49,19 @@ namespace qsmpm
         prm,
         "Friction",
         friction,
-        {{"frictionless", Friction::frictionless}, {"rough", Friction::rough}},
+        {{"frictionless", Friction::frictionless},
+         {"rough", Friction::rough},
+         {"coulomb", Friction::coulomb}},
         "frictionless: the normal displacements of two bodies in contact "
         "are tied, they slide freely; rough: all displacements are tied, no "
-        "slip.");
+        "slip; coulomb: a node sticks (all displacements tied) while its "
+        "tangential force is at most <Friction coefficient> times its normal "
+        "force, and slips otherwise, with that much tangential force against "
+        "the slip.");
+      prm.add_parameter("Friction coefficient",
+                        friction_coefficient,
+                        "mu of Coulomb friction (Friction = coulomb).",
+                        Patterns::Double(0.));
       prm.add_parameter("Gap tolerance",
                         gap_tolerance,
                         "A gap between two bodies at most this times the "
@@ -129,6 +138,9 @@ namespace qsmpm
                 ExcMessage("Contact between bodies/Bodies: at most " +
                            std::to_string(ShapeCache<dim>::max_bodies) +
                            " bodies."));
+    AssertThrow(friction_coefficient >= 0.,
+                ExcMessage("Contact between bodies/Friction coefficient: "
+                           "must not be negative."));
   }
 
 
@@ -137,6 +149,7 @@ namespace qsmpm
   void
   BodyContact<dim>::initialize(const Parameters &prm)
   {
+    prm.check();
     parameters    = prm;
     body_of       = prm.body_of_material();
     n_body_fields = 1;
@@ -144,6 +157,32 @@ namespace qsmpm
       if (b != numbers::invalid_unsigned_int)
         n_body_fields = std::max(n_body_fields, b + 1);
     nodes.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  BodyContact<dim>::check_points(const MaterialPointSet<dim> &points,
+                                 const MPI_Comm communicator) const
+  {
+    if (!enabled())
+      return;
+    const unsigned int id_offset = points.get_offsets().material_id;
+    std::string        error;
+    for (const auto &particle : points.get_particle_handler())
+      {
+        const auto id =
+          static_cast<unsigned int>(particle.get_properties()[id_offset]);
+        if (id >= body_of.size() ||
+            body_of[id] == numbers::invalid_unsigned_int)
+          {
+            error = "Contact between bodies/Bodies: material id " +
+                    std::to_string(id) + " belongs to none of the bodies.";
+            break;
+          }
+      }
+    Utils::throw_if_any_rank(error, communicator);
   }
 
 
@@ -198,6 +237,7 @@ namespace qsmpm
     const unsigned int n_bodies = n_body_fields;
     std::unordered_map<types::global_dof_index, unsigned int> role_of_dof;
     std::set<types::global_dof_index>                         seen;
+    std::string                                               error;
     for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
@@ -210,17 +250,22 @@ namespace qsmpm
                 present.push_back(b);
             if (present.size() < 2)
               continue;
-            AssertThrow(present.size() == 2,
-                        ExcMessage("Contact between bodies: three or more "
-                                   "bodies meet at the node at (" +
-                                   [&] {
-                                     std::ostringstream text;
-                                     text << cell->vertex(v);
-                                     return text.str();
-                                   }() +
-                                   ")" +
-                                   "; contact is between two bodies at a "
-                                   "node (a finer grid separates them)."));
+            if (present.size() > 2)
+              {
+                // Stop on all ranks together, after the loop (a rank that
+                // does not see this node would wait in the collective
+                // operations below).
+                if (error.empty())
+                  {
+                    std::ostringstream text;
+                    text << "Contact between bodies: " << present.size()
+                         << " bodies meet at the node at (" << cell->vertex(v)
+                         << "); contact is between two bodies at a node (a "
+                            "finer grid separates them).";
+                    error = text.str();
+                  }
+                continue;
+              }
             Node node;
             node.location = cell->vertex(v);
             Tensor<1, dim> g_a, g_b;
@@ -239,11 +284,16 @@ namespace qsmpm
             // both also point out of the grid, where no body can be, each
             // in proportion to its volume at the node: that component is
             // no direction of contact.
-            Tensor<1, dim> n = g_a - g_b;
             for (unsigned int d = 0; d < dim; ++d)
               if (std::abs(node.location[d] - lower[d]) < edge_tolerance ||
                   std::abs(node.location[d] - upper[d]) < edge_tolerance)
-                n[d] = 0.;
+                g_a[d] = g_b[d] = 0.;
+            // The normal is that of the body with the larger gradient
+            // (Nairn's "maximum volume gradient"): where the corner of one
+            // body rests on the flat face of the other, the face's normal,
+            // not a mean tilted towards the corner, which would tie the
+            // corner's sliding along the face to a normal motion.
+            const Tensor<1, dim> n = g_a.norm() >= g_b.norm() ? g_a : -g_b;
             if (!(n.norm() > 0.))
               continue;
             node.normal = n / n.norm();
@@ -251,6 +301,8 @@ namespace qsmpm
             role_of_dof.emplace(node.dofs_b[0], 2 * nodes.size() + 1);
             nodes.push_back(node);
           }
+
+    Utils::throw_if_any_rank(error, communicator);
 
     // The extent of each body's points along the node's normal: the
     // largest n . x of a corner of a's boxes, and minus the smallest of
@@ -322,6 +374,8 @@ namespace qsmpm
         node.gap      = -extent(node.dofs_b[0]) - extent(node.dofs_a[0]);
         node.active   = node.gap <= gap_tolerance;
         node.touching = node.active;
+        node.stick    = true;
+        node.friction = Tensor<1, dim>();
         node.tied.fill(-1);
       }
   }
@@ -353,7 +407,7 @@ namespace qsmpm
         // Bodies that touch stay where they are; a gap that the step's
         // solution closed is closed by the tie.
         const double closing = node.touching ? 0. : node.gap;
-        if (parameters.friction == Parameters::Friction::rough)
+        if (ties_all(node))
           {
             // u_b = u_a - closing n, component by component (a component
             // that a displacement condition holds for both bodies needs
@@ -403,22 +457,52 @@ namespace qsmpm
 
 
   template <int dim>
-  double
-  BodyContact<dim>::normal_force(const Node                          &node,
-                                 const TrilinosWrappers::MPI::Vector &R) const
+  void
+  BodyContact<dim>::add_friction_forces(
+    TrilinosWrappers::MPI::Vector &f_ext) const
+  {
+    const IndexSet &owned = f_ext.locally_owned_elements();
+    for (const auto &node : nodes)
+      if (node.active && !ties_all(node))
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (owned.is_element(node.dofs_b[d]))
+              f_ext(node.dofs_b[d]) += node.friction[d];
+            if (owned.is_element(node.dofs_a[d]))
+              f_ext(node.dofs_a[d]) -= node.friction[d];
+          }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  BodyContact<dim>::tie_force(const Node                          &node,
+                              const TrilinosWrappers::MPI::Vector &R) const
   {
     // R = f_ext - f_int before condensation: minus the force of the other
-    // body on b at b's tied dofs, plus it at a's. The force on b is
-    // +lambda n in compression. With the normal tie, the tied component
-    // alone carries it (the other components' condensed equations make
-    // the force parallel to n): lambda = f_s / n_s.
+    // body on b at b's tied dofs, plus it at a's.
     Tensor<1, dim> force;
     for (unsigned int d = 0; d < dim; ++d)
       if (node.tied[d] == 0)
         force[d] = -R(node.dofs_b[d]);
       else if (node.tied[d] == 1)
         force[d] = R(node.dofs_a[d]);
-    if (parameters.friction == Parameters::Friction::rough)
+    return force;
+  }
+
+
+
+  template <int dim>
+  double
+  BodyContact<dim>::normal_force(const Node                          &node,
+                                 const TrilinosWrappers::MPI::Vector &R) const
+  {
+    // The force on b is +lambda n in compression. With the normal tie, the
+    // tied component alone carries it (the other components' condensed
+    // equations make the force parallel to n): lambda = f_s / n_s.
+    const Tensor<1, dim> force = tie_force(node, R);
+    if (ties_all(node))
       return force * node.normal;
     const unsigned int s = largest_component(node.normal);
     return force[s] / node.normal[s];
@@ -458,14 +542,56 @@ namespace qsmpm
         total_force += normal_force(node, R_ghosted);
     total_force = dealii::Utilities::MPI::sum(total_force, communicator);
 
-    bool changed = false;
+    const bool coulomb = parameters.friction == Parameters::Friction::coulomb;
+    // A slip below 1e-10 of the largest displacement is round-off: the
+    // node does not slip.
+    const double slip_floor = coulomb ? 1e-10 * du.linfty_norm() : 0.;
+    const double mu         = parameters.friction_coefficient;
+    bool         changed    = false;
     for (auto &node : nodes)
       if (node.active)
         {
-          if (normal_force(node, R_ghosted) < -force_floor)
+          const double lambda = normal_force(node, R_ghosted);
+          if (lambda < -force_floor)
             {
               node.active = false;
               changed     = true;
+            }
+          else if (coulomb && node.stick)
+            {
+              // Sticking needs the tangential tie force f_t: more than
+              // mu lambda, and the node slips, pulled along f_t.
+              const Tensor<1, dim> f   = tie_force(node, R_ghosted);
+              const Tensor<1, dim> f_t = f - (f * node.normal) * node.normal;
+              if (f_t.norm() > mu * std::max(lambda, 0.) + force_floor)
+                {
+                  node.stick    = false;
+                  node.friction = mu * std::max(lambda, 0.) / f_t.norm() * f_t;
+                  changed       = true;
+                }
+            }
+          else if (coulomb)
+            {
+              // The slip of b along a in this step; the friction force
+              // opposes it. A node that does not slide, or slides along its
+              // friction force (the force has reversed the slip), sticks.
+              Tensor<1, dim> slip;
+              for (unsigned int d = 0; d < dim; ++d)
+                slip[d] =
+                  du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d]);
+              slip -= (slip * node.normal) * node.normal;
+              if (slip.norm() <= slip_floor || slip * node.friction > 0.)
+                {
+                  node.stick    = true;
+                  node.friction = Tensor<1, dim>();
+                  changed       = true;
+                  continue;
+                }
+              const Tensor<1, dim> friction =
+                -mu * std::max(lambda, 0.) / slip.norm() * slip;
+              if ((friction - node.friction).norm() > 1e-6 * largest)
+                changed = true;
+              node.friction = friction;
             }
         }
       else
@@ -475,10 +601,18 @@ namespace qsmpm
             opening +=
               (du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d])) *
               node.normal[d];
-          if (node.gap + opening < -gap_tolerance)
+          // A node released in this step (its bodies touched at the start)
+          // is tied again only if the bodies move into each other there:
+          // the gap measured between the points' boxes is an estimate, off
+          // by a fraction of the strain's variation times h, and an overlap
+          // of that size would tie a tensile node again in every solve.
+          const double closure = node.touching ? opening : node.gap + opening;
+          if (closure < -gap_tolerance)
             {
-              node.active = true;
-              changed     = true;
+              node.active   = true;
+              node.stick    = true;
+              node.friction = Tensor<1, dim>();
+              changed       = true;
             }
         }
     return dealii::Utilities::MPI::max(changed ? 1 : 0, communicator) > 0;

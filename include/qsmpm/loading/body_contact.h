@@ -26,23 +26,31 @@ namespace qsmpm
    * decides whether they are in contact and, if so, ties their fields.
    *
    * At a node i shared by bodies a < b (both have material in its support)
-   * the contact normal points from a to b, n = (g_a - g_b) / |g_a - g_b|,
-   * with g = sum_p Omega_p grad N_i(x_p) over the body's points (it points
-   * out of the body where the node lies on its surface). The gap is measured
-   * between the points' boxes (half-lengths l_d = Omega_p0^(1/dim) / 2,
-   * deformed with the point): the smallest n . x of the corners of b's points
-   * around the node minus the largest of a's. A node is in contact when the gap
-   * is closed; then the normal displacements of the two fields are tied so that
-   * the gap stays closed, (u_b - u_a) . n = -gap (frictionless), or all of
-   * them, u_b - u_a = -gap n (rough: no slip). The ties are constraints of the
-   * step (exact, no penalty), so two bodies in contact along a grid line behave
-   * as one body.
+   * the contact normal points from a to b: with g = sum_p Omega_p grad
+   * N_i(x_p) over a body's points (it points out of the body where the node
+   * lies on its surface), n = g_a / |g_a| if |g_a| >= |g_b|, else -g_b /
+   * |g_b| (the body with the larger gradient decides, Nairn's "maximum
+   * volume gradient": a corner resting on a flat face gets the face's
+   * normal). The gap is measured between the points' boxes (half-lengths
+   * l_d = Omega_p0^(1/dim) / 2, deformed with the point): the smallest n . x
+   * of the corners of b's points around the node minus the largest of a's.
+   * A node is in contact when the gap is closed; then the normal
+   * displacements of the two fields are tied so that the gap stays closed,
+   * (u_b - u_a) . n = -gap (frictionless), or all of them, u_b - u_a = -gap
+   * n (rough: no slip). The ties are constraints of the step (exact, no
+   * penalty), so two bodies in contact along a grid line behave as one body.
+   * With Coulomb friction a node sticks (all displacements tied) or slips
+   * (the normal tie, and a friction force mu lambda against the slip, a load
+   * on both bodies' dofs, lambda the normal force of the last solve).
    *
    * The contact set of a step is found by an active-set iteration: it
-   * starts with the nodes whose gap is closed at the start of the step;
-   * after a converged solve, a tied node whose contact force is tensile is
-   * released, and a free node whose gap the solution closes (the bodies
-   * would overlap) is tied; if anything changed, the step is solved again.
+   * starts with the nodes whose gap is closed at the start of the step
+   * (sticking); after a converged solve, a tied node whose contact force is
+   * tensile is released, a free node whose gap the solution closes (the
+   * bodies would overlap) is tied, a sticking node whose tangential force
+   * exceeds mu lambda slips, a slipping node that does not slide against its
+   * friction force sticks, and the friction forces follow the new normal
+   * forces; if anything changed, the step is solved again.
    *
    * Everything is decided from values that are the same on every rank
    * (sums and maxima over ranks, ghosted vectors), so all ranks that see a
@@ -64,9 +72,16 @@ namespace qsmpm
         /// Only the normal displacements are tied: free sliding.
         frictionless,
         /// All displacements are tied: no slip.
-        rough
+        rough,
+        /// Coulomb's law: a node sticks (all displacements tied) while
+        /// its tangential force is at most mu times its normal force,
+        /// and slips (normal tie, tangential force mu times the normal
+        /// force against the slip) otherwise.
+        coulomb
       };
       Friction friction = Friction::frictionless;
+      /// mu of Coulomb friction.
+      double friction_coefficient = 0.;
       /// A gap at most this times the cell size counts as closed.
       double gap_tolerance = 1e-3;
       /// Solves of one step with a changed contact set at most.
@@ -99,6 +114,13 @@ namespace qsmpm
       /// are, instead of closing what is left of the gap.
       bool touching = false;
       bool active   = false;
+      /// Coulomb friction: whether the node sticks (all displacements
+      /// tied) or slips.
+      bool stick = true;
+      /// Coulomb friction, while the node slips: the friction force on
+      /// body b (body a gets the opposite), tangential, mu times the
+      /// normal force of the last solve.
+      Tensor<1, dim> friction;
       /// Per component, whose dof the tie constrains: 0 body b's, 1 body
       /// a's, -1 none (both held by displacement conditions, or not tied).
       std::array<int, dim> tied;
@@ -128,6 +150,15 @@ namespace qsmpm
     }
 
     /**
+     * Stop, on all ranks together, if a point of @p points has a material
+     * id that belongs to none of the bodies (a point's body decides which
+     * field carries it, in every step).
+     */
+    void
+    check_points(const MaterialPointSet<dim> &points,
+                 const MPI_Comm               communicator) const;
+
+    /**
      * At the start of a step: the nodes shared by two bodies (of the
      * locally relevant ones, without those in @p inactive), their normals
      * and gaps from the points at the start of the step, and the nodes in
@@ -149,11 +180,24 @@ namespace qsmpm
     add_constraints(AffineConstraints<double> &constraints);
 
     /**
+     * Add the friction forces of the slipping nodes (Coulomb friction) to
+     * @p f_ext (owned layout, not compressed: each rank adds those of its
+     * own dofs).
+     */
+    void
+    add_friction_forces(TrilinosWrappers::MPI::Vector &f_ext) const;
+
+    /**
      * After a converged solve with increment @p du and residual @p R
      * (R = f_ext - f_int, owned layout): release the tied nodes with a
-     * tensile contact force and tie the free nodes whose gap has closed.
-     * Returns whether the contact set changed (the step must be solved
-     * again).
+     * tensile contact force and tie the free nodes whose gap has closed;
+     * with Coulomb friction, let a sticking node whose tangential force
+     * exceeds mu times its normal force slip, stick a slipping node that
+     * slides along its friction force, and set the friction force of a
+     * slipping node to mu times its new normal force against its slip.
+     * Returns whether the step must be solved again: the contact set
+     * changed, or a friction force by more than 1e-6 of the largest
+     * contact force.
      */
     bool
     update(const BackgroundGrid<dim>           &grid,
@@ -182,6 +226,22 @@ namespace qsmpm
     }
 
   private:
+    /// Whether all displacements of @p node are tied (rough, or Coulomb
+    /// friction while it sticks).
+    bool
+    ties_all(const Node &node) const
+    {
+      return parameters.friction == Parameters::Friction::rough ||
+             (parameters.friction == Parameters::Friction::coulomb &&
+              node.stick);
+    }
+
+    /// The force of body a on body b through the ties of a tied node,
+    /// from the residual with ghost values (without the friction force of
+    /// a slipping node, which is a load).
+    Tensor<1, dim>
+    tie_force(const Node &node, const TrilinosWrappers::MPI::Vector &R) const;
+
     /// The contact force of a tied node (positive: compression), from the
     /// residual with ghost values.
     double
