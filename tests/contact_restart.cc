@@ -31,6 +31,15 @@
 //     (the line "bodies 1 u" of its state.txt) set to 0: the floor then
 //     starts the resumed step at rest, and its motion must differ by more
 //     than 1e-3 of the largest.
+//  G, H: contact between deformable bodies with Coulomb friction (the
+//     sliding blocks of contact_friction_blocks: block B pressed onto
+//     block A and pushed along it, mu = 0.3, 12 steps, B slides from step
+//     10): H with a checkpoint every 6 steps, stopped after step 8, resumed
+//     from step 6 (two fields on the grid, the points' material ids
+//     telling the bodies apart): its forces must be G's to 1e-10.
+//  I: negative control, H's checkpoint resumed with B's points given A's
+//     material id (one body on one field: the blocks glued): the force
+//     must differ by more than 1e-3 of the largest.
 #include "prm_text.h"
 #include "tests.h"
 
@@ -52,47 +61,89 @@ namespace
     bool         resume              = false;
     bool         forget_tractions    = false;
     bool         force_driven        = false;
+    bool         two_bodies          = false;
+    bool         forget_bodies       = false;
   };
+
+  // The sliding blocks: A [0, 2] x [0, 0.5] (material id 0) held at its
+  // base, B [0.5, 1.5] x [0.5625, 1] (id 1) moved by its top face onto A
+  // (steps 1-2), pressed by 0.005 (3-4) and pushed along A by 0.001 per
+  // step (5-12).
+  std::string
+  sliding_blocks()
+  {
+    return "set Dimension = 2\n"
+           "subsection Geometry\n  set Upper corner = 2, 1\n"
+           "  set Subdivisions = 16, 8\nend\n"
+           "subsection Material points\n"
+           "  set Region expression = "
+           "if(y < 0.5 || (y > 0.5625 && x > 0.5 && x < 1.5), 1, 0)\n"
+           "  set Material id = if(y < 0.5, 0, 1)\nend\n"
+           "subsection Contact between bodies\n"
+           "  set Bodies = 0; 1\n  set Friction = coulomb\n"
+           "  set Friction coefficient = 0.3\nend\n"
+           "subsection Material\n  set Model = linear elastic\n"
+           "  subsection linear elastic\n"
+           "    set Young's modulus = 1000\n"
+           "    set Poisson's ratio = 0.3\n  end\nend\n"
+           "subsection Boundary conditions\n"
+           "  set Dirichlet boundaries = 2:xy, 3:xy\n"
+           "  subsection Displacement\n"
+           "    set Function constants = g = 0.0625\n"
+           "    set Function expression = "
+           "if(y > 0.99, if(12 * t <= 4, 0, 0.001 * (12 * t - 4)), 0); "
+           "if(y > 0.99, if(12 * t <= 2, -g * 6 * t, "
+           "if(12 * t <= 4, -g - 0.0025 * (12 * t - 2), -g - 0.005)), 0)\n"
+           "  end\nend\n"
+           "subsection Load stepping\n  set Number of steps = 12\nend\n"
+           "subsection Nonlinear solver\n  set Tolerance = 1e-10\n"
+           "  set Preconditioner reuse steps = 1\n"
+           "  set Forcing term = constant\n"
+           "  set Initial guess = linear predictor\nend\n";
+  }
 
   void
   run(const Options &options)
   {
     std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Geometry\n  set Lower corner = 0,0\n"
-         << "  set Upper corner = 1.5,1\n  set Subdivisions = 12,8\nend\n"
-         << "subsection Material points\n"
-         << "  set Points per cell per direction = 2\n"
-         << "  set Region lower corner = 0,0.25\n"
-         << "  set Region upper corner = 1,0.75\nend\n"
-         << "subsection Material\n  set Model = linear elastic\n"
-         << "  subsection linear elastic\n"
-         << "    set Young's modulus = 1000\n"
-         << "    set Poisson's ratio = 0.3\n  end\nend\n"
-         << "subsection Boundary conditions\n"
-         << "  set Dirichlet boundaries = 0:x\n"
-         << "  set Surface traction region = y > 0.74\n"
-         << "  subsection Surface traction\n"
-         << "    set Function expression = 0; -10*min(t, 1)\n  end\n"
-         << "  subsection Rigid body\n"
-         << "    set Shape = half-space\n    set Name = floor\n"
-         << "    set Point = 0, 0.25\n    set Normal = 0, 1\n"
-         << "    set Friction = coulomb\n"
-         << "    set Friction coefficient = 0.3\n"
-         << (options.force_driven ?
-               "    set Load direction = 1, 0\n"
-               "    subsection Load\n"
-               "      set Function expression = 1.5*max(t - 1, 0)\n" :
-               "    subsection Motion\n"
-               "      set Function expression = 0.02*max(t - 1, 0); 0\n")
-         << "    end\n  end\nend\n"
-         << "subsection Load stepping\n  set Final load factor = 2\n"
-         << "  set Number of steps = 20\nend\n"
-         << "subsection Nonlinear solver\n"
-         << "  set Preconditioner reuse steps = 1\n"
-         << "  set Forcing term = constant\n"
-         << "  set Initial guess = linear predictor\nend\n"
-         << "subsection Output\n  set Interval = 0\n"
+    if (options.two_bodies)
+      text << sliding_blocks();
+    else
+      text << "set Dimension = 2\n"
+           << "subsection Geometry\n  set Lower corner = 0,0\n"
+           << "  set Upper corner = 1.5,1\n  set Subdivisions = 12,8\nend\n"
+           << "subsection Material points\n"
+           << "  set Points per cell per direction = 2\n"
+           << "  set Region lower corner = 0,0.25\n"
+           << "  set Region upper corner = 1,0.75\nend\n"
+           << "subsection Material\n  set Model = linear elastic\n"
+           << "  subsection linear elastic\n"
+           << "    set Young's modulus = 1000\n"
+           << "    set Poisson's ratio = 0.3\n  end\nend\n"
+           << "subsection Boundary conditions\n"
+           << "  set Dirichlet boundaries = 0:x\n"
+           << "  set Surface traction region = y > 0.74\n"
+           << "  subsection Surface traction\n"
+           << "    set Function expression = 0; -10*min(t, 1)\n  end\n"
+           << "  subsection Rigid body\n"
+           << "    set Shape = half-space\n    set Name = floor\n"
+           << "    set Point = 0, 0.25\n    set Normal = 0, 1\n"
+           << "    set Friction = coulomb\n"
+           << "    set Friction coefficient = 0.3\n"
+           << (options.force_driven ?
+                 "    set Load direction = 1, 0\n"
+                 "    subsection Load\n"
+                 "      set Function expression = 1.5*max(t - 1, 0)\n" :
+                 "    subsection Motion\n"
+                 "      set Function expression = 0.02*max(t - 1, 0); 0\n")
+           << "    end\n  end\nend\n"
+           << "subsection Load stepping\n  set Final load factor = 2\n"
+           << "  set Number of steps = 20\nend\n"
+           << "subsection Nonlinear solver\n"
+           << "  set Preconditioner reuse steps = 1\n"
+           << "  set Forcing term = constant\n"
+           << "  set Initial guess = linear predictor\nend\n";
+    text << "subsection Output\n  set Interval = 0\n"
          << "  set Directory = " << options.directory << "\n"
          << "  set Checkpoint interval = " << options.checkpoint_interval
          << "\nend\n";
@@ -107,6 +158,12 @@ namespace
         for (auto &particle : problem.points().get_particle_handler())
           for (unsigned int d = 0; d < 2; ++d)
             particle.get_properties()[traction + d] = 0.;
+      }
+    if (options.forget_bodies)
+      {
+        const unsigned int id = problem.points().get_offsets().material_id;
+        for (auto &particle : problem.points().get_particle_handler())
+          particle.get_properties()[id] = 0.;
       }
     if (options.stop_after > 0)
       problem.set_step_callback(
@@ -123,10 +180,11 @@ namespace
   compare(const std::string &reference,
           const std::string &other,
           const unsigned int first = 2,
-          const unsigned int end   = 0)
+          const unsigned int end   = 0,
+          const unsigned int rows  = 20)
   {
     const auto a = read_csv(reference), b = read_csv(other);
-    bool       same    = a.size() == b.size() && a.size() == 20;
+    bool       same    = a.size() == b.size() && a.size() == rows;
     double     largest = 0., difference = 0.;
     const auto last = [&](const std::vector<double> &row) {
       return end == 0 ? row.size() : std::min<std::size_t>(end, row.size());
@@ -151,7 +209,7 @@ main(int argc, char *argv[])
   MPILogInitAll                    log;
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   if (root)
-    for (const std::string d : {"A", "B", "C", "D", "E", "F"})
+    for (const std::string d : {"A", "B", "C", "D", "E", "F", "G", "H", "I"})
       fs::remove_all(d);
   MPI_Barrier(MPI_COMM_WORLD);
 
@@ -188,6 +246,17 @@ main(int argc, char *argv[])
   MPI_Barrier(MPI_COMM_WORLD);
   run({"E", 11, 0, true, false, true});
   run({"F", 11, 0, true, false, true});
+  run({"G", 0, 0, false, false, false, true});
+  run({"H", 6, 8, false, false, false, true});
+  if (root)
+    {
+      check_that("two bodies, interrupted: 8 rows",
+                 read_csv("H/reactions.csv").size() == 8);
+      fs::copy("H", "I", fs::copy_options::recursive);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  run({"H", 6, 0, true, false, false, true});
+  run({"I", 6, 0, true, false, false, true, true});
   if (root)
     {
       const auto header = [](const std::string &file) {
@@ -241,6 +310,20 @@ main(int argc, char *argv[])
       check_at_least("control, the floor's motion forgotten on resume: max "
                      "|u - uninterrupted| / max |u|",
                      at_rest.second,
+                     1e-3);
+      const auto bodies =
+        compare("G/reactions.csv", "H/reactions.csv", 2, 0, 12);
+      check_that("two bodies, resumed: the 12 steps", bodies.first);
+      check("two bodies, resumed: max |force - uninterrupted| / max |force|",
+            bodies.second,
+            1e-10);
+      const auto glued =
+        compare("G/reactions.csv", "I/reactions.csv", 2, 0, 12);
+      std::cout << "bodies forgotten: max difference / max force "
+                << glued.second << std::endl;
+      check_at_least("control, B's points given A's id on resume: max "
+                     "|difference| / max |force|",
+                     glued.second,
                      1e-3);
     }
 }
