@@ -589,7 +589,12 @@ namespace qsmpm
                 }
               const Tensor<1, dim> friction =
                 -mu * std::max(lambda, 0.) / slip.norm() * slip;
-              if ((friction - node.friction).norm() > 1e-6 * largest)
+              // The friction forces converge linearly in the solves of a
+              // step; 1e-4 of the largest contact force changes mu's share
+              // of the sliding blocks' force (contact_friction_blocks) by
+              // 4e-5 against 1e-6, in 34 solves of the 12 steps instead of
+              // 53.
+              if ((friction - node.friction).norm() > 1e-4 * largest)
                 changed = true;
               node.friction = friction;
             }

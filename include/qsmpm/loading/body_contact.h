@@ -196,7 +196,7 @@ namespace qsmpm
      * slides along its friction force, and set the friction force of a
      * slipping node to mu times its new normal force against its slip.
      * Returns whether the step must be solved again: the contact set
-     * changed, or a friction force by more than 1e-6 of the largest
+     * changed, or a friction force by more than 1e-4 of the largest
      * contact force.
      */
     bool
