@@ -8,7 +8,7 @@
 //  - contact between bodies given wrongly (one body, an id that is no
 //    number or in two bodies, points of no body, a negative friction
 //    coefficient) or with what it does not
-//    take (GIMP, a traction on a grid face), a region expression that is
+//    take (a traction on a grid face), a region expression that is
 //    none,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points.
@@ -305,14 +305,6 @@ main(int argc, char *argv[])
   try_input("contact between bodies with points of no body",
             "Contact between bodies",
             two_bodies + "  set Bodies = 0; 2\nend\n" + run_briefly + "end\n",
-            /*run=*/true);
-  try_input("contact between bodies with GIMP",
-            "GIMP",
-            two_bodies + "  set Bodies = 0; 1\nend\n" +
-              "subsection Material points\n"
-              "  set Shape functions = cpGIMP\n"
-              "end\n" +
-              run_briefly + "end\n",
             /*run=*/true);
   try_input("contact between bodies with a traction on a grid face",
             "Contact between bodies",

@@ -273,10 +273,24 @@ namespace qsmpm
                                               writable_rows,
                                               grid.get_communicator());
     std::vector<types::global_dof_index> dofs;
+    const unsigned int                   n_node_dofs = grid.n_node_dofs();
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        dofs.assign(cache.global_dofs(c),
-                    cache.global_dofs(c) + cache.n_dofs(c));
+        if (n_node_dofs == dim)
+          dofs.assign(cache.global_dofs(c),
+                      cache.global_dofs(c) + cache.n_dofs(c));
+        else
+          {
+            // Several bodies: the contact ties of a step couple a node's
+            // dofs of all bodies (a node's dofs are consecutive, dim per
+            // body), so every group couples its nodes' dofs of all bodies.
+            dofs.clear();
+            const types::global_dof_index *group = cache.global_dofs(c);
+            const unsigned int             body  = cache.cell(c).body;
+            for (unsigned int k = 0; k < cache.n_dofs(c); k += dim)
+              for (unsigned int i = 0; i < n_node_dofs; ++i)
+                dofs.push_back(group[k] - body * dim + i);
+          }
         periodicity.add_entries_local_to_global(dofs,
                                                 pattern,
                                                 /*keep_constrained=*/true);

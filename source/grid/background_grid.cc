@@ -456,7 +456,8 @@ namespace qsmpm
   void
   BackgroundGrid<dim>::node_block_dofs(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    std::vector<types::global_dof_index>                 &dofs) const
+    std::vector<types::global_dof_index>                 &dofs,
+    const unsigned int                                    body) const
   {
     using Iterator = typename DoFHandler<dim>::cell_iterator;
     // One step from c in direction d (-1 or +1), across periodic faces
@@ -517,7 +518,8 @@ namespace qsmpm
               if (dofs[node * dim] != numbers::invalid_dof_index)
                 continue;
               for (unsigned int comp = 0; comp < dim; ++comp)
-                dofs[node * dim + comp] = c->vertex_dof_index(v, comp);
+                dofs[node * dim + comp] =
+                  c->vertex_dof_index(v, body * dim + comp);
             }
         }
   }

@@ -315,15 +315,19 @@ namespace qsmpm
                                    extent.get_partitioner()->n_ghost_indices();
          ++i)
       extent.local_element(i) = std::numeric_limits<double>::lowest();
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    // Per group, its nodes (the cell's vertices; with GIMP the nodes its
+    // points reach) that are contact nodes, with their role; each point
+    // counts at the nodes of its stencil.
+    constexpr unsigned int max_nodes =
+      ShapeCache<dim>::max_dofs_per_group / dim;
+    std::array<unsigned int, max_nodes> role;
+    std::array<double, max_nodes>       largest;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
-        // The group's vertices that are contact nodes, with their role.
-        const types::global_dof_index       *dofs = cache.global_dofs(c);
-        std::array<unsigned int, n_vertices> role;
-        std::array<double, n_vertices>       largest;
-        unsigned int                         n_shared = 0;
-        for (unsigned int k = 0; k < n_vertices; ++k)
+        const types::global_dof_index *dofs     = cache.global_dofs(c);
+        const unsigned int             n_nodes  = cache.n_dofs(c) / dim;
+        unsigned int                   n_shared = 0;
+        for (unsigned int k = 0; k < n_nodes; ++k)
           {
             const auto it = role_of_dof.find(dofs[k * dim]);
             role[k] = it == role_of_dof.end() ? numbers::invalid_unsigned_int :
@@ -346,23 +350,26 @@ namespace qsmpm
                 Tensor<2, dim>(
                   unit_symmetric_tensor<dim>() +
                   Utils::read_symmetric<dim>(data + offsets.strain));
-            const Tensor<1, dim> x(cache.position(p));
-            for (unsigned int k = 0; k < n_vertices; ++k)
-              if (role[k] != numbers::invalid_unsigned_int)
-                {
-                  const Tensor<1, dim> &n = nodes[role[k] / 2].normal;
-                  // The box's half-extent along n: sum_d |n . F e_d| l_d.
-                  const Tensor<1, dim> FTn   = transpose(F) * n;
-                  double               reach = 0.;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    reach += std::abs(FTn[d]) * half;
-                  const double x_n = n * x;
-                  largest[k] =
-                    std::max(largest[k],
-                             role[k] % 2 == 1 ? reach - x_n : x_n + reach);
-                }
+            const Tensor<1, dim>  x(cache.position(p));
+            const unsigned short *stencil = cache.nodes(p);
+            for (unsigned int j = 0; j < cache.stencil_size(p); ++j)
+              {
+                const unsigned int k = stencil[j];
+                if (role[k] == numbers::invalid_unsigned_int)
+                  continue;
+                const Tensor<1, dim> &n = nodes[role[k] / 2].normal;
+                // The box's half-extent along n: sum_d |n . F e_d| l_d.
+                const Tensor<1, dim> FTn   = transpose(F) * n;
+                double               reach = 0.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  reach += std::abs(FTn[d]) * half;
+                const double x_n = n * x;
+                largest[k] =
+                  std::max(largest[k],
+                           role[k] % 2 == 1 ? reach - x_n : x_n + reach);
+              }
           }
-        for (unsigned int k = 0; k < n_vertices; ++k)
+        for (unsigned int k = 0; k < n_nodes; ++k)
           if (role[k] != numbers::invalid_unsigned_int)
             extent(dofs[k * dim]) = std::max(extent(dofs[k * dim]), largest[k]);
       }

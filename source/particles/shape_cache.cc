@@ -87,11 +87,7 @@ namespace qsmpm
                            "material id (ShapeCache::set_bodies())."));
     material_id_offset = points.get_offsets().material_id;
 
-    const bool gimp = points.get_formulation().gimp();
-    AssertThrow(!gimp || n_bodies == 1,
-                ExcMessage("Contact between bodies (several bodies on the "
-                           "grid) works with linear shape functions only, "
-                           "not with GIMP."));
+    const bool         gimp             = points.get_formulation().gimp();
     auto              &particle_handler = points.get_particle_handler();
     const unsigned int n_local_points =
       particle_handler.n_locally_owned_particles();
@@ -128,17 +124,6 @@ namespace qsmpm
           const auto particles = particle_handler.particles_in_cell(cell);
           if (particles.begin() == particles.end())
             continue;
-          const unsigned int first = p;
-          if (gimp)
-            {
-              shape_offsets.push_back(first);
-              add_gimp_cell(dof_cell, grid, points, map, p, particle_handler);
-              affine_cells.emplace_back();
-              cell_is_affine.push_back(false);
-              cells.push_back({cell, first, p, 0});
-              dof_offsets.push_back(cell_local_dofs.size());
-              continue;
-            }
           // One group per body in the cell, bodies in order.
           std::array<unsigned int, max_bodies> count{};
           if (n_bodies == 1)
@@ -150,8 +135,17 @@ namespace qsmpm
             if (count[b] > 0)
               {
                 const unsigned int group_first = p;
-                add_linear_cell(
-                  dof_cell, grid, map, p, particle_handler, b, count[b]);
+                if (gimp)
+                  {
+                    shape_offsets.push_back(group_first);
+                    add_gimp_cell(
+                      dof_cell, grid, points, map, p, particle_handler, b);
+                    affine_cells.emplace_back();
+                    cell_is_affine.push_back(false);
+                  }
+                else
+                  add_linear_cell(
+                    dof_cell, grid, map, p, particle_handler, b, count[b]);
                 cells.push_back({cell, group_first, p, b});
                 dof_offsets.push_back(cell_local_dofs.size());
               }
@@ -323,11 +317,13 @@ namespace qsmpm
     const MaterialPointSet<dim>                          &points,
     const Epetra_BlockMap                                &map,
     unsigned int                                         &p,
-    Particles::ParticleHandler<dim>                      &particle_handler)
+    Particles::ParticleHandler<dim>                      &particle_handler,
+    const unsigned int                                    body)
   {
     constexpr unsigned int n_block = BackgroundGrid<dim>::n_block_nodes;
     const typename Triangulation<dim>::active_cell_iterator cell(dof_cell);
-    grid.node_block_dofs(dof_cell, block_dofs);
+    grid.node_block_dofs(dof_cell, block_dofs, body);
+    const bool           one_body    = body_of_material.empty();
     const Tensor<1, dim> h           = grid.cell_size();
     const double         h_min       = grid.min_cell_size();
     const Point<dim>     corner      = cell->vertex(0);
@@ -342,6 +338,8 @@ namespace qsmpm
     for (const auto &particle : particle_handler.particles_in_cell(cell))
       {
         double *data = const_cast<double *>(particle.get_properties().data());
+        if (!one_body && body_of(data) != body)
+          continue;
         const Point<dim> x = particle.get_location();
 
         // The point's current half-lengths.

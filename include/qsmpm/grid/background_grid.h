@@ -150,11 +150,13 @@ namespace qsmpm
      * numbers::invalid_dof_index. Each node takes its dofs from the
      * nearest cell of the block that has it (the cell itself first), so
      * that nodes of the cell are never replaced by their periodic images.
-     * These are the nodes that a GIMP point in @p cell can reach.
+     * These are the nodes that a GIMP point in @p cell can reach. On a grid
+     * of several bodies (set_n_bodies()), the dofs of body @p body.
      */
     void
     node_block_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    std::vector<types::global_dof_index> &dofs) const;
+                    std::vector<types::global_dof_index>                 &dofs,
+                    const unsigned int body = 0) const;
 
     /**
      * Renumber and redistribute degrees of freedom, e.g. after the

@@ -369,14 +369,16 @@ namespace qsmpm
     /// Offset of the material id in the point properties (reinit()).
     unsigned int material_id_offset = 0;
 
-    /// GIMP weights over the 3^dim cells around the point's cell.
+    /// GIMP weights over the 3^dim cells around the point's cell, for the
+    /// points of @p body in it (all points with one body).
     void
     add_gimp_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                   const BackgroundGrid<dim>                            &grid,
                   const MaterialPointSet<dim>                          &points,
                   const Epetra_BlockMap                                &map,
                   unsigned int                                         &p,
-                  Particles::ParticleHandler<dim> &particle_handler);
+                  Particles::ParticleHandler<dim> &particle_handler,
+                  const unsigned int               body);
 
     unsigned int                         points_beyond_grid    = 0;
     double                               largest_weight_beyond = 0.;
