@@ -533,21 +533,31 @@ namespace qsmpm
     du_ghosted = du;
     R_ghosted  = R;
 
-    // Forces below 1e-8 of the largest contact force are round-off.
-    double largest = 0.;
-    for (const auto &node : nodes)
-      if (node.active)
-        largest = std::max(largest, std::abs(normal_force(node, R_ghosted)));
-    largest = dealii::Utilities::MPI::max(largest, communicator);
+    // The normal force of each tied node (0 for the others); forces below
+    // 1e-8 of the largest are round-off. The force between the bodies
+    // counts each node on the owner of body a's first dof.
+    std::vector<double> lambdas(nodes.size(), 0.);
+    double              largest = 0.;
+    total_force                 = 0.;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (nodes[i].active)
+        {
+          lambdas[i] = normal_force(nodes[i], R_ghosted);
+          largest    = std::max(largest, std::abs(lambdas[i]));
+          if (grid.locally_owned_dofs().is_element(nodes[i].dofs_a[0]))
+            total_force += lambdas[i];
+        }
+    largest     = dealii::Utilities::MPI::max(largest, communicator);
+    total_force = dealii::Utilities::MPI::sum(total_force, communicator);
     const double force_floor = 1e-8 * largest;
 
-    // The force between the bodies, each node counted by the owner of
-    // body a's first dof.
-    total_force = 0.;
-    for (const auto &node : nodes)
-      if (node.active && grid.locally_owned_dofs().is_element(node.dofs_a[0]))
-        total_force += normal_force(node, R_ghosted);
-    total_force = dealii::Utilities::MPI::sum(total_force, communicator);
+    // The increment of b's displacement relative to a's at a node.
+    const auto relative_increment = [&](const Node &node) {
+      Tensor<1, dim> increment;
+      for (unsigned int d = 0; d < dim; ++d)
+        increment[d] = du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d]);
+      return increment;
+    };
 
     const bool coulomb = parameters.friction == Parameters::Friction::coulomb;
     // A slip below 1e-10 of the largest displacement is round-off: the
@@ -555,10 +565,10 @@ namespace qsmpm
     const double slip_floor = coulomb ? 1e-10 * du.linfty_norm() : 0.;
     const double mu         = parameters.friction_coefficient;
     bool         changed    = false;
-    for (auto &node : nodes)
-      if (node.active)
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (Node &node = nodes[i]; node.active)
         {
-          const double lambda = normal_force(node, R_ghosted);
+          const double lambda = lambdas[i];
           if (lambda < -force_floor)
             {
               node.active = false;
@@ -582,10 +592,7 @@ namespace qsmpm
               // The slip of b along a in this step; the friction force
               // opposes it. A node that does not slide, or slides along its
               // friction force (the force has reversed the slip), sticks.
-              Tensor<1, dim> slip;
-              for (unsigned int d = 0; d < dim; ++d)
-                slip[d] =
-                  du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d]);
+              Tensor<1, dim> slip = relative_increment(node);
               slip -= (slip * node.normal) * node.normal;
               if (slip.norm() <= slip_floor || slip * node.friction > 0.)
                 {
@@ -608,11 +615,7 @@ namespace qsmpm
         }
       else
         {
-          double opening = 0.;
-          for (unsigned int d = 0; d < dim; ++d)
-            opening +=
-              (du_ghosted(node.dofs_b[d]) - du_ghosted(node.dofs_a[d])) *
-              node.normal[d];
+          const double opening = relative_increment(node) * node.normal;
           // A node released in this step (its bodies touched at the start)
           // is tied again only if the bodies move into each other there:
           // the gap measured between the points' boxes is an estimate, off
