@@ -421,14 +421,13 @@ namespace Footing
          n_cells(footing.space_above, "Space above the surface") :
          0);
     // With GIMP the domains of the points at the fixed base may stretch
-    // across it (cpGIMP) and would reach beyond a grid that ended there: a
-    // row of cells below the soil, whose nodes are held with the base,
-    // keeps their weights a partition of unity. The same holds at the
-    // symmetry line, where the soil under the footing is squeezed sideways
-    // and its domains widen across x = 0 (with the rigid footing 50 of
-    // them reached beyond the grid at s = 0.117 a, and 0.11 % of the load
-    // left through its edge): a column of cells at x < 0, whose nodes are
-    // held in x with the symmetry line.
+    // across it (cpGIMP): a row of cells below the soil, whose nodes are
+    // held with the base, keeps them whole (a grid that ended there would
+    // cut them at its edge and so move their material inside). The same
+    // holds at the symmetry line, where the soil under the footing is
+    // squeezed sideways and its domains widen across x = 0 (with the rigid
+    // footing 50 of them by s = 0.117 a): a column of cells at x < 0, whose
+    // nodes are held in x with the symmetry line.
     const unsigned int beside = gimp() ? 1 : 0;
     problem.grid().make_box(Point<dim>(-(beside * h), -(beside * h)),
                             Point<dim>(footing.width, ny * h),

@@ -889,19 +889,14 @@ namespace qsmpm
       scale = std::max(scale, load.force.norm());
     if (contact_loads() != nullptr)
       rigid_contact.check_loads(body_loads, scale);
-    last_audit           = audit.evaluate(background_grid,
+    last_audit              = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
                                 R,
                                 applied_depends_on_du ? applied : f_ext,
                                 scale);
-    run_state.reactions  = last_audit.reactions;
-    run_state.load_scale = last_audit.scale;
-    // Where load leaves through the grid's edge: the GIMP points whose
-    // domains reach beyond it.
-    EquilibriumAudit<dim>::locate_points_beyond_grid(cache,
-                                                     communicator,
-                                                     last_audit);
+    run_state.reactions     = last_audit.reactions;
+    run_state.load_scale    = last_audit.scale;
     const auto       &check = prm_values.equilibrium_check;
     const std::string message =
       last_audit.lost_load(t_new,

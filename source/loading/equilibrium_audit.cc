@@ -20,8 +20,8 @@ namespace qsmpm
         "displacement conditions; the part they do not carry, relative to "
         "the largest of the applied load and the reactions, may be at most "
         "this. Lost load goes to nodes held for lack of material or "
-        "stiffness, to nodes without material that a traction acts on, or "
-        "through the grid's edge, and each cause is named.",
+        "stiffness, or to nodes without material that a traction acts on, "
+        "and each cause is named.",
         Patterns::Double(0.));
       prm.add_parameter(
         "Stop on lost load",
@@ -90,36 +90,6 @@ namespace qsmpm
 
 
   template <int dim>
-  void
-  EquilibriumAudit<dim>::locate_points_beyond_grid(const ShapeCache<dim> &cache,
-                                                   const MPI_Comm communicator,
-                                                   Result        &result)
-  {
-    // The rank of the point with the most weight beyond the grid tells
-    // where it is.
-    result.n_points_beyond_grid =
-      dealii::Utilities::MPI::sum(cache.n_points_beyond_grid(), communicator);
-    if (result.n_points_beyond_grid == 0)
-      return;
-    const double largest =
-      dealii::Utilities::MPI::max(cache.largest_weight_beyond_grid(),
-                                  communicator);
-    const unsigned int n_ranks =
-      dealii::Utilities::MPI::n_mpi_processes(communicator);
-    const unsigned int rank = dealii::Utilities::MPI::min(
-      cache.largest_weight_beyond_grid() == largest ?
-        dealii::Utilities::MPI::this_mpi_process(communicator) :
-        n_ranks,
-      communicator);
-    result.point_beyond_grid =
-      dealii::Utilities::MPI::broadcast(communicator,
-                                        cache.point_beyond_grid(),
-                                        rank);
-  }
-
-
-
-  template <int dim>
   std::string
   EquilibriumAudit<dim>::Result::causes(const double tolerance,
                                         const double residual_tolerance) const
@@ -154,16 +124,9 @@ namespace qsmpm
       {
         std::ostringstream words;
         words << std::setprecision(3) << share(internal)
-              << " % leaves through the grid's edge";
-        if (n_points_beyond_grid > 0)
-          words << ": " << n_points_beyond_grid
-                << " GIMP point domain(s) reach beyond it, most of all at ("
-                << point_beyond_grid << ")";
-        else
-          words << " (the weights of points near it are no partition of "
-                   "unity)";
-        words << "; enlarge the grid (Geometry/Lower corner, Upper corner) "
-                 "by half a cell or more beyond the body";
+              << " % is the sum of the internal forces, which vanishes where "
+                 "the points' weights are a partition of unity on the grid "
+                 "(an internal error)";
         add(words.str());
       }
     if (free_residual.norm() > residual_tolerance * scale)

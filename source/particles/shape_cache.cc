@@ -93,10 +93,8 @@ namespace qsmpm
       particle_handler.n_locally_owned_particles();
 
     ++generation_count;
-    points_beyond_grid    = 0;
-    largest_weight_beyond = 0.;
-    point_set             = &points;
-    stencil               = gimp ? max_stencil_size : n_vertices;
+    point_set = &points;
+    stencil   = gimp ? max_stencil_size : n_vertices;
     cells.clear();
     affine_cells.clear();
     cell_is_affine.clear();
@@ -330,6 +328,21 @@ namespace qsmpm
     const auto          &offsets     = points.get_offsets();
     const Formulation   &formulation = points.get_formulation();
     const bool stretch = formulation.shape_functions == ShapeFunctions::cpgimp;
+    // Where the grid ends beside this cell (a face at the boundary that is
+    // not periodic) a domain that reaches across is cut at that face. The
+    // part beyond would weigh nodes that do not exist: the weights would no
+    // longer sum to one and the gradients to zero, and part of the point's
+    // load and internal force would leave through the edge. Averaged over
+    // the part inside, both sums hold (the hat functions of the grid's nodes
+    // sum to one everywhere inside it).
+    std::array<bool, dim> cut_lower, cut_upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        cut_lower[d] =
+          cell->at_boundary(2 * d) && !cell->has_periodic_neighbor(2 * d);
+        cut_upper[d] = cell->at_boundary(2 * d + 1) &&
+                       !cell->has_periodic_neighbor(2 * d + 1);
+      }
 
     // Block node of each stencil entry; compacted after all points are seen.
     std::array<bool, n_block> touched;
@@ -366,23 +379,31 @@ namespace qsmpm
           }
 
         // 1D weights of the three nodes s_d, s_d + 1, s_d + 2 of the 4-node
-        // row of the block in each direction.
+        // row of the block in each direction, for the domain [lower, upper]
+        // (cell coordinates) cut at the grid's edge.
         std::array<unsigned int, dim>          start;
         std::array<std::array<double, 3>, dim> w, dw;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            l[d] = std::min(std::max(l[d], 1e-6 * h[d]), 0.5 * h[d]);
+            const double half =
+              std::min(std::max(l[d], 1e-6 * h[d]), 0.5 * h[d]);
             const double local = x[d] - corner[d];
-            start[d]           = std::min(1,
-                                std::max(0,
-                                         static_cast<int>(
-                                           std::floor((local - l[d]) / h[d])) +
-                                           1));
+            const double lower =
+              cut_lower[d] ? std::max(local - half, 0.) : local - half;
+            const double upper =
+              cut_upper[d] ? std::min(local + half, h[d]) : local + half;
+            const double centre = 0.5 * (lower + upper);
+            start[d]            = std::min(
+              1, std::max(0, static_cast<int>(std::floor(lower / h[d])) + 1));
             for (unsigned int a = 0; a < 3; ++a)
               {
                 const double node =
                   (static_cast<double>(start[d] + a) - 1.) * h[d];
-                gimp_weight_1d(local - node, l[d], h[d], w[d][a], dw[d][a]);
+                gimp_weight_1d(centre - node,
+                               0.5 * (upper - lower),
+                               h[d],
+                               w[d][a],
+                               dw[d][a]);
               }
           }
 
@@ -390,7 +411,6 @@ namespace qsmpm
         // the front of the point's stencil: a point whose domain lies inside
         // its cell costs as much as with linear shape functions.
         unsigned int n_kept = 0;
-        double       beyond = 0.;
         for (unsigned int k = 0; k < stencil; ++k)
           {
             unsigned int   rest = k, node = 0, stride = 1;
@@ -406,31 +426,19 @@ namespace qsmpm
                 for (unsigned int e = 0; e < dim; ++e)
                   gradient[e] *= (e == d) ? dw[d][a] : w[d][a];
               }
-            // Entries at round-off level (a domain edge on a cell face) and
-            // nodes outside the grid (the point's domain reaches beyond it)
-            // are dropped too.
+            // Entries at round-off level (a domain edge on a cell face, or a
+            // node beyond the grid's edge, where the domain is cut) are
+            // dropped too.
             if (std::abs(value) <= 1e-12 && gradient.norm() * h_min <= 1e-12)
               continue;
-            if (block_dofs[node * dim] == numbers::invalid_dof_index)
-              {
-                beyond += std::abs(value) + gradient.norm() * h_min;
-                continue;
-              }
+            AssertThrow(block_dofs[node * dim] != numbers::invalid_dof_index,
+                        ExcInternalError());
             touched[node] = true;
             // Block node for now; replaced by the group's index below.
             stencil_nodes[p * stencil + n_kept]   = node;
             shape_values[p * stencil + n_kept]    = value;
             shape_gradients[p * stencil + n_kept] = gradient;
             ++n_kept;
-          }
-        if (beyond > 0.)
-          {
-            ++points_beyond_grid;
-            if (beyond > largest_weight_beyond)
-              {
-                largest_weight_beyond   = beyond;
-                worst_point_beyond_grid = x;
-              }
           }
         point_stencil_sizes[p] = n_kept;
         point_properties[p]    = data;

@@ -8,7 +8,6 @@
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/displacement_constraints.h>
-#include <qsmpm/particles/shape_cache.h>
 #include <string>
 #include <vector>
 
@@ -34,9 +33,10 @@ namespace qsmpm
    *    a traction on a grid face that the body has left;
    *  - F = -sum R over the free degrees of freedom, what Newton's stopping
    *    test left (zero at convergence);
-   *  - E = sum f_int = sum_p sigma_p . sum_i grad N_i(x_p) V_p, zero when the
-   *    shape functions are a partition of unity on the grid, nonzero when
-   *    a point's weights reach beyond the grid's edge.
+   *  - E = sum f_int = sum_p sigma_p . sum_i grad N_i(x_p) V_p, zero because
+   *    the shape functions are a partition of unity on the grid (GIMP
+   *    domains are cut at the grid's edge, ShapeCache); checked all the
+   *    same.
    *
    * The load a user has lost is A + C: what the prescribed supports do not
    * carry of the applied load (for a body loaded by displacements only, the
@@ -87,11 +87,6 @@ namespace qsmpm
       Tensor<1, dim> internal;
       /// The number of held degrees of freedom with a force on them.
       unsigned int n_held_loaded = 0;
-      /// The number of GIMP points whose domain reaches beyond the grid,
-      /// and the one that reaches furthest (set by the caller, who knows the
-      /// points; they are named when E is a cause).
-      unsigned int n_points_beyond_grid = 0;
-      Point<dim>   point_beyond_grid;
       /// The size of the loads the imbalance is measured against.
       double scale = 0.;
 
@@ -101,7 +96,7 @@ namespace qsmpm
       imbalance() const;
 
       /// |E - H| / scale = |A + C + F| / scale: the part of it that went to
-      /// the held nodes or through the grid's edge.
+      /// the held nodes or that the internal forces did not balance.
       double
       structural_loss() const;
 
@@ -137,17 +132,6 @@ namespace qsmpm
                 const double tolerance,
                 const double newton_tolerance) const;
     };
-
-    /**
-     * Set n_points_beyond_grid and point_beyond_grid of @p result: the GIMP
-     * points of @p cache (over all ranks of @p communicator) whose domains
-     * reach beyond the grid's edge, where load leaves, and the one with
-     * the most weight there. Collective.
-     */
-    static void
-    locate_points_beyond_grid(const ShapeCache<dim> &cache,
-                              const MPI_Comm         communicator,
-                              Result                &result);
 
     /**
      * The balance of a converged step: @p R is the condensed residual at

@@ -31,9 +31,16 @@ namespace qsmpm
    * BackgroundGrid::node_block_dofs()). The degrees of freedom of a group
    * are numbered node by node: local dof i = node * dim + component. Each
    * point has a stencil of stencil_size(p) nodes (2^dim linear, up to 3^dim
-   * GIMP: the nodes where its weight or gradient is non-zero and that lie
-   * inside the grid), given as indices into its group's node list, with the
-   * value and gradient of the shape function of each.
+   * GIMP: the nodes where its weight or gradient is non-zero), given as
+   * indices into its group's node list, with the value and gradient of the
+   * shape function of each.
+   *
+   * A GIMP domain that reaches across the grid's edge (a face of the box
+   * that is not periodic) is cut there: the weights are the averages of the
+   * shape functions over the part of the domain inside the grid. They stay
+   * a partition of unity and their gradients sum to zero, so no load and no
+   * internal force leaves through the edge; the point's volume is
+   * unchanged, its material is taken to lie inside the grid.
    */
   template <int dim>
   class ShapeCache
@@ -309,31 +316,6 @@ namespace qsmpm
                         const double               min_nodal_volume = 0.) const;
 
     /**
-     * The points of this rank whose GIMP domain reached beyond the grid in
-     * the last reinit(): part of their weights belonged to nodes outside
-     * the grid, which do not exist, so their weights are no partition of
-     * unity and part of their load and stiffness is lost.
-     */
-    unsigned int
-    n_points_beyond_grid() const
-    {
-      return points_beyond_grid;
-    }
-
-    /// The largest weight that one of those points had on nodes outside
-    /// the grid (0 if there is none), and where that point is.
-    double
-    largest_weight_beyond_grid() const
-    {
-      return largest_weight_beyond;
-    }
-    const Point<dim> &
-    point_beyond_grid() const
-    {
-      return worst_point_beyond_grid;
-    }
-
-    /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
      * @p p of group @p c: sum_k v_k N_k(x_p).
      */
@@ -370,7 +352,8 @@ namespace qsmpm
     unsigned int material_id_offset = 0;
 
     /// GIMP weights over the 3^dim cells around the point's cell, for the
-    /// points of @p body in it (all points with one body).
+    /// points of @p body in it (all points with one body); domains cut at
+    /// the grid's edge.
     void
     add_gimp_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                   const BackgroundGrid<dim>                            &grid,
@@ -380,9 +363,6 @@ namespace qsmpm
                   Particles::ParticleHandler<dim> &particle_handler,
                   const unsigned int               body);
 
-    unsigned int                         points_beyond_grid    = 0;
-    double                               largest_weight_beyond = 0.;
-    Point<dim>                           worst_point_beyond_grid;
     unsigned long                        generation_count  = 0;
     unsigned int                         affine_cell_count = 0;
     unsigned int                         stencil           = n_vertices;
