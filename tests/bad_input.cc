@@ -11,7 +11,8 @@
 //    take (a traction on a grid face), a region expression that is
 //    none,
 //  - a load step that does not converge (after the allowed cut-backs), and
-//    nothing of that step is committed to the points.
+//    nothing of that step is committed to the points; also one whose
+//    contact set between bodies does not settle.
 //
 // The output records, per case, whether the input was refused and whether
 // the message contains a keyword (the entry or file to fix), not the
@@ -314,6 +315,59 @@ main(int argc, char *argv[])
               "  set Traction boundaries = 3\n"
               "end\n",
             /*run=*/true);
+  // The contact example's sliding blocks (contact.prm, sliding_blocks())
+  // with cpGIMP: in step 7, the first in which B is pushed along A, the
+  // Coulomb contact set changes in every solve. Each attempt fails after
+  // Max contact iterations solves and is cut back until the run stops.
+  // The solves of an attempt keep its preconditioner, so every attempt
+  // ended with a kept one, and the retry with a new preconditioner, meant
+  // once per increment, repeated without end (the run had not stopped
+  // after 2548 solves of step 7).
+  try_input(
+    "contact between bodies whose contact set does not settle",
+    "Max contact iterations",
+    "subsection Geometry\n"
+    "  set Upper corner = 2, 1\n"
+    "  set Subdivisions = 16, 8\n"
+    "end\n"
+    "subsection Material points\n"
+    "  set Region expression = if(y < 0.5 || (y > 0.5625 && x > 0.5 && x < "
+    "1.5), 1, 0)\n"
+    "  set Material id = if(y < 0.5, 0, 1)\n"
+    "  set Shape functions = cpGIMP\n"
+    "end\n"
+    "subsection Contact between bodies\n"
+    "  set Bodies = 0; 1\n"
+    "  set Friction = coulomb\n"
+    "  set Friction coefficient = 0.3\n"
+    "end\n"
+    "subsection Material\n"
+    "  set Model = linear elastic\n"
+    "  subsection linear elastic\n"
+    "    set Young's modulus = 1000\n"
+    "    set Poisson's ratio = 0.3\n"
+    "  end\n"
+    "end\n"
+    "subsection Boundary conditions\n"
+    "  set Dirichlet boundaries = 2:xy, 3:xy\n"
+    "  subsection Displacement\n"
+    "    set Function constants = g = 0.0625\n"
+    "    set Function expression = if(y > 0.99, if(12 * t <= 4, 0, 0.001 * "
+    "(12 * t - 4)), 0); if(y > 0.99, if(12 * t <= 2, -g * 6 * t, if(12 * t "
+    "<= 4, -g - 0.0025 * (12 * t - 2), -g - 0.005)), 0)\n"
+    "  end\n"
+    "end\n"
+    "subsection Load stepping\n"
+    "  set Number of steps = 12\n"
+    "end\n"
+    "subsection Nonlinear solver\n"
+    "  set Tolerance = 1e-10\n"
+    "end\n"
+    "subsection Output\n"
+    "  set Interval = 0\n"
+    "  set Directory = bad-input-out\n"
+    "end\n",
+    /*run=*/true);
   try_input("region expression that is no expression",
             "Region expression",
             "subsection Material points\n"

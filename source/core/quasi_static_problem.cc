@@ -264,8 +264,9 @@ namespace qsmpm
           points(),
           cache,
           prm_values.material_points.update_volumes);
-        preconditioner = make_preconditioner();
-        direct_retry   = false;
+        preconditioner         = make_preconditioner();
+        direct_retry           = false;
+        preconditioner_retried = false;
         preconditioner_reuse.reset();
         last_load_increment = 0.;
         if (preconditioner.needs_matrix())
@@ -1098,6 +1099,7 @@ namespace qsmpm
         return true;
       }
     const unsigned int cut_backs = stepper.n_cut_backs();
+    preconditioner_retried       = false;
     if (direct_retry)
       {
         // The step AMG could not solve is done: AMG again for the next.
@@ -1155,10 +1157,15 @@ namespace qsmpm
     // A preconditioner kept from an earlier step may no longer fit (the
     // paper's one point per cell leaves K nearly singular in its hourglass
     // modes, and those of an older K need not be the Jacobian's): the step
-    // is tried again with a new one before its increment is cut.
-    // PreconditionerReuse::count_use() has marked it for rebuilding.
-    if (preconditioner_reuse.reused())
+    // is tried again with a new one before its increment is cut. Once per
+    // increment: the solves of a step whose contact set between bodies
+    // changes keep the step's preconditioner, so an attempt that failed
+    // because that set does not settle ends with a kept one every time, and
+    // retried without limit the increment would never be cut back.
+    if (preconditioner_reuse.reused() && !preconditioner_retried)
       {
+        preconditioner_retried = true;
+        preconditioner_reuse.reset();
         progress << "  step " << stepper.step() + 1
                  << ": a new preconditioner (the one of an earlier step no "
                     "longer serves)"
@@ -1180,6 +1187,7 @@ namespace qsmpm
     else
       progress << " -> " << t_new;
     progress << " failed (" << newton.failure << "), cutting back" << std::endl;
+    preconditioner_retried = false;
     stepper.reject(newton.failure);
   }
 

@@ -366,7 +366,9 @@ namespace qsmpm
               ProbeWriter<dim>  &probes);
 
     /// After a failed attempt at t_old -> t_new: try again with a new
-    /// preconditioner (see switch_to_direct()), or cut the increment back.
+    /// preconditioner (once per increment, if the attempt kept one from an
+    /// earlier solve; see also switch_to_direct()), or cut the increment
+    /// back.
     void
     reject_step(LoadStepper        &stepper,
                 const NewtonReport &newton,
@@ -508,7 +510,10 @@ namespace qsmpm
     Preconditioner<dim> preconditioner;
     /// Whether #preconditioner is the direct factorization that replaced
     /// AMG for a step that failed with it (switch_to_direct()).
-    bool                    direct_retry = false;
+    bool direct_retry = false;
+    /// Whether the current increment was already tried again with a new
+    /// preconditioner (reject_step() does so once per increment).
+    bool                    preconditioner_retried = false;
     PreconditionerReuse     preconditioner_reuse;
     PathFollowingSetup<dim> path_following;
     StepConstraints         step_constraints;
