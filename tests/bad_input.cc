@@ -320,9 +320,9 @@ main(int argc, char *argv[])
   // Coulomb contact set changes in every solve. Each attempt fails after
   // Max contact iterations solves and is cut back until the run stops.
   // The solves of an attempt keep its preconditioner, so every attempt
-  // ended with a kept one, and the retry with a new preconditioner, meant
-  // once per increment, repeated without end (the run had not stopped
-  // after 2548 solves of step 7).
+  // ends with a kept one: the retry with a new preconditioner must come
+  // once per increment, or the increment is never cut back and the run
+  // never stops.
   try_input(
     "contact between bodies whose contact set does not settle",
     "Max contact iterations",

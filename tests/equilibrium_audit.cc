@@ -28,8 +28,8 @@
 //    tolerance being relative to the step's first residual, not to the
 //    load); the tip deflection is that of the beam in the larger grid to
 //    1e-3 (only the weights of the tip's points differ; a loss of 1e-3 of
-//    the load would change it by as much). Before domains were cut, the
-//    beam under 30 t lost 9-15 % of its load and the run stopped.
+//    the load would change it by as much; dropping the weights beyond the
+//    edge instead loses 9-15 % of the load under 30 t).
 // 4. The cantilever of case 0 in other units of force (E and q times 1e-9)
 //    with the paper's absolute Residual floor = 1: Newton's test is met
 //    with zero displacement. Stops: "Residual floor".

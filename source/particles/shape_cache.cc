@@ -393,17 +393,14 @@ namespace qsmpm
             const double upper =
               cut_upper[d] ? std::min(local + half, h[d]) : local + half;
             const double centre = 0.5 * (lower + upper);
+            const double cut    = 0.5 * (upper - lower);
             start[d]            = std::min(
               1, std::max(0, static_cast<int>(std::floor(lower / h[d])) + 1));
             for (unsigned int a = 0; a < 3; ++a)
               {
                 const double node =
                   (static_cast<double>(start[d] + a) - 1.) * h[d];
-                gimp_weight_1d(centre - node,
-                               0.5 * (upper - lower),
-                               h[d],
-                               w[d][a],
-                               dw[d][a]);
+                gimp_weight_1d(centre - node, cut, h[d], w[d][a], dw[d][a]);
               }
           }
 
