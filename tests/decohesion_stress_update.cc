@@ -7,7 +7,9 @@
 //   tau_nf/u0); unloading and reloading elastic at the current opening;
 //   complete failure at w = u0, after which sigma_xx <= 0 for good; the
 //   preconditioner's stiffness tangent() of a softening point is the secant
-//   of the band, sigma_xx / eps_xx;
+//   of the band, sigma_xx / eps_xx, and loading_tangent() predicts the
+//   stress increment of a further opening exactly (linear softening) and
+//   is the secant once the crack has unloaded below the softening line;
 // - a stress state with principal directions at 30 degrees: with the
 //   principal-stress normal the crack normal is (cos 30, sin 30) and
 //   L_c = h cos 30; with the normal fixed to x the same state has
@@ -155,12 +157,58 @@ main()
      p.stress[0][0] / eps) /
       M,
     1e-12);
+  // The stiffness for a factorizing preconditioner, loading_tangent(): the
+  // crack keeps opening. On the linear softening line with a fixed normal
+  // the stress is linear in the strain increment, so loading_tangent : d eps
+  // is the stress increment of update_stress() for any increment that
+  // opens the crack further, to round-off (relative to d sigma, which is
+  // 1e-2 of sigma: two digits lost). The secant's normal stress increment
+  // has the wrong sign (its normal stiffness is positive, the slope's
+  // negative).
+  {
+    SymmetricTensor<2, 2> d_eps;
+    d_eps[0][0] = 0.01 * eps_i;
+    d_eps[1][1] = 0.003 * eps_i;
+    d_eps[0][1] = 0.002 * eps_i;
+    const PointState<2>   old{p.strain,
+                            p.stress,
+                            ArrayView<const double>(p.state),
+                            1.};
+    std::vector<double>   new_state(p.state.size());
+    SymmetricTensor<2, 2> stress;
+    model.update_stress(old, d_eps, stress, new_state);
+    const SymmetricTensor<2, 2> d_sigma = stress - p.stress;
+    check_that("  softening, further opening: w grows",
+               new_state[w_offset] > w1);
+    check("  softening: |loading_tangent : d eps - d sigma| / |d sigma|",
+          (model.loading_tangent(old) * d_eps - d_sigma).norm() /
+            d_sigma.norm(),
+          1e-10);
+    check_at_least("  softening: |(tangent : d eps)_xx - d sigma_xx| / "
+                   "|d sigma_xx| (the secant, of the other sign)",
+                   std::abs((model.tangent(old) * d_eps)[0][0] -
+                            d_sigma[0][0]) /
+                     std::abs(d_sigma[0][0]),
+                   1.);
+  }
   // Unloading, into compression.
   const double sigma1 = p.stress[0][0];
   step(model, p, uniaxial(-2. * sigma1 / M));
   check("  unloading: opening unchanged, |w - w_before| / u0",
         (p.state[w_offset] - w1) / u0,
         0.);
+  {
+    // Below the softening line the crack has unloaded: loading_tangent()
+    // keeps the secant.
+    const PointState<2> unloaded{p.strain,
+                                 p.stress,
+                                 ArrayView<const double>(p.state),
+                                 1.};
+    check("  unloaded: |loading_tangent - tangent| / M (the secant)",
+          (model.loading_tangent(unloaded) - model.tangent(unloaded)).norm() /
+            M,
+          1e-12);
+  }
   check("  unloading: |sigma_xx + sigma_before| / tau_nf (elastic)",
         (p.stress[0][0] + sigma1) / tau,
         1e-12);

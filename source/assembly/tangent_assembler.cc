@@ -103,8 +103,11 @@ namespace qsmpm
     class CellTangents
     {
     public:
-      explicit CellTangents(const MaterialPointSet<dim> &points)
+      CellTangents(const MaterialPointSet<dim>                  &points,
+                   const typename TangentAssembler<dim>::Tangent kind =
+                     TangentAssembler<dim>::Tangent::secant)
         : model(points.get_model())
+        , loading(kind == TangentAssembler<dim>::Tangent::loading)
         , offsets(points.get_offsets())
         , layout(points.batch_layout())
         , finite_strain(points.get_formulation().finite_strain())
@@ -132,14 +135,16 @@ namespace qsmpm
             finite_strain_tangent(cache, range.first_point + i, i);
         else
           {
-            const PointStateBatch<dim> old(layout,
+            const PointStateBatch<dim>               old(layout,
                                            cache.property_arrays(
                                              range.first_point),
                                            &cache.position(range.first_point),
                                            n);
-            model.tangents(old,
-                           ArrayView<SymmetricTensor<4, dim>>(symmetric.data(),
-                                                              n));
+            const ArrayView<SymmetricTensor<4, dim>> C(symmetric.data(), n);
+            if (loading)
+              model.loading_tangents(old, C);
+            else
+              model.tangents(old, C);
             for (unsigned int i = 0; i < n; ++i)
               {
                 tangents[i] = Tensor<4, dim>(symmetric[i]);
@@ -191,6 +196,7 @@ namespace qsmpm
       }
 
       const ConstitutiveModel<dim>                  &model;
+      const bool                                     loading;
       const typename MaterialPointSet<dim>::Offsets &offsets;
       const typename PointStateBatch<dim>::Layout    layout;
       const bool                                     finite_strain;
@@ -314,9 +320,10 @@ namespace qsmpm
                                   const ShapeCache<dim>           &cache,
                                   const AffineConstraints<double> &constraints,
                                   const GhostPenalty<dim> *ghost_penalty,
-                                  const AdditionalTerm    &additional_term)
+                                  const AdditionalTerm    &additional_term,
+                                  const Tangent            kind)
   {
-    CellTangents<dim> cell_tangents(points);
+    CellTangents<dim> cell_tangents(points, kind);
 
     if (pattern_per_step || ghost_penalty != nullptr)
       make_step_pattern(grid, cache, ghost_penalty);

@@ -267,6 +267,7 @@ namespace qsmpm
         preconditioner         = make_preconditioner();
         direct_retry           = false;
         preconditioner_retried = false;
+        secant_retry           = false;
         preconditioner_reuse.reset();
         last_load_increment = 0.;
         if (preconditioner.needs_matrix())
@@ -403,12 +404,23 @@ namespace qsmpm
       {
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
+          // A factorization does not need a positive definite K, so it is
+          // built from the slope of each point's branch (a softening
+          // crack's negative stiffness, as in the Jacobian) instead of the
+          // secant that AMG needs, unless the step failed with the slopes
+          // (reject_step()).
+          preconditioner_tangent =
+            (preconditioner.type() == Preconditioner<dim>::Type::direct &&
+             !secant_retry) ?
+              TangentAssembler<dim>::Tangent::loading :
+              TangentAssembler<dim>::Tangent::secant;
           tangent.assemble(background_grid,
                            points(),
                            cache,
                            step_constraints.get(),
                            stabilization(),
-                           additional_stiffness(true));
+                           additional_stiffness(true),
+                           preconditioner_tangent);
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
@@ -1100,6 +1112,7 @@ namespace qsmpm
       }
     const unsigned int cut_backs = stepper.n_cut_backs();
     preconditioner_retried       = false;
+    secant_retry                 = false;
     if (direct_retry)
       {
         // The step AMG could not solve is done: AMG again for the next.
@@ -1170,6 +1183,22 @@ namespace qsmpm
                  << ": a new preconditioner (the one of an earlier step no "
                     "longer serves)"
                  << std::endl;
+        return;
+      }
+    // The slopes of the points' branches fit the Jacobian while every point
+    // stays on its branch; in a step where cracks turn from opening to
+    // closing they may not, and the secant, which is right for a crack that
+    // unloads, is tried before the increment is cut (b15-opening.prm: step
+    // 448 does not converge in 20 Newton iterations with the slopes, and
+    // converges in one with the secant).
+    if (preconditioner_tangent == TangentAssembler<dim>::Tangent::loading &&
+        !secant_retry)
+      {
+        secant_retry = true;
+        preconditioner_reuse.reset();
+        progress << "  step " << stepper.step() + 1
+                 << ": a new preconditioner from the secant stiffness ("
+                 << newton.failure << ")" << std::endl;
         return;
       }
     if (switch_to_direct())

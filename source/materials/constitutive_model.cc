@@ -177,6 +177,28 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<4, dim>
+  ConstitutiveModel<dim>::loading_tangent(const PointState<dim> &old) const
+  {
+    return tangent(old);
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::loading_tangents(
+    const PointStateBatch<dim>        &old,
+    ArrayView<SymmetricTensor<4, dim>> C) const
+  {
+    AssertDimension(C.size(), old.size());
+    for (unsigned int i = 0; i < old.size(); ++i)
+      C[i] = loading_tangent(old[i]);
+  }
+
+
+
+  template <int dim>
   typename PointStateBatch<dim>::Fields
   ConstitutiveModel<dim>::batch_fields() const
   {

@@ -413,6 +413,25 @@ namespace qsmpm
   SymmetricTensor<4, dim>
   Decohesion<dim>::tangent(const PointState<dim> &old) const
   {
+    return crack_tangent(old, false);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  Decohesion<dim>::loading_tangent(const PointState<dim> &old) const
+  {
+    return crack_tangent(old, true);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  Decohesion<dim>::crack_tangent(const PointState<dim> &old,
+                                 const bool             loading) const
+  {
     const double w = old.state[opening_offset];
     if (w <= 0.)
       return C;
@@ -440,10 +459,22 @@ namespace qsmpm
     // normal strain tau_n / M + w / L_c that carries it (elastic part and
     // smeared opening), k / M = tau_n / (tau_n + M w / L_c). It falls from
     // M at initiation to 0 at complete failure, where it meets the tangent
-    // above, and unlike the consistent tangent (negative across a loading
-    // crack) it keeps the matrix positive definite for AMG.
-    const double tau_n    = tau_nf * (1. - w / u0);
-    const double k_over_M = tau_n / (tau_n + M * w / smearing_length(n));
+    // above, and unlike the slope of the softening line it keeps the matrix
+    // positive definite for AMG.
+    //
+    // With @p loading, a crack whose committed normal stress is on the
+    // softening line (it opened in the last step) keeps opening: d tau_n =
+    // -(tau_nf / u0) d w and d tau_n = M (d eps_n - d w / L_c) give the
+    // normal stiffness k / M = -a / (M - a), a = L_c tau_nf / u0, negative,
+    // and finite since L_c < M u0 / tau_nf (local stability). A crack below
+    // the line has unloaded and keeps the secant.
+    const double L_c   = smearing_length(n);
+    const double a     = L_c * tau_nf / u0;
+    const double tau_n = tau_nf * (1. - w / u0);
+    const bool   opening =
+      loading && a < M && n * (old.stress * n) >= tau_n - 1e-6 * tau_nf;
+    const double k_over_M =
+      opening ? -a / (M - a) : tau_n / (tau_n + M * w / L_c);
     return C - (1. - k_over_M) * outer_product(Cnn, Cnn) / M - shear_loss;
   }
 

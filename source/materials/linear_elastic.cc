@@ -173,6 +173,17 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  LinearElastic<dim>::loading_tangents(
+    const PointStateBatch<dim>        &old,
+    ArrayView<SymmetricTensor<4, dim>> C_points) const
+  {
+    tangents(old, C_points);
+  }
+
+
+
+  template <int dim>
   const SymmetricTensor<4, dim> &
   LinearElastic<dim>::stiffness() const
   {

@@ -341,6 +341,18 @@ namespace qsmpm
 
   template <int dim>
   SymmetricTensor<4, dim>
+  MaterialMap<dim>::loading_tangent(const PointState<dim> &old) const
+  {
+    const Member &m = member(old.material_id);
+    return with_own_state(m, old, [&](const PointState<dim> &own) {
+      return m.model->loading_tangent(own);
+    });
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
   MaterialMap<dim>::consistent_tangent(
     const PointState<dim>         &old,
     const SymmetricTensor<2, dim> &strain_increment) const

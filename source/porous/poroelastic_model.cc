@@ -166,6 +166,15 @@ namespace qsmpm
 
   template <int dim>
   SymmetricTensor<4, dim>
+  PoroelasticModel<dim>::loading_tangent(const PointState<dim> &old) const
+  {
+    return skeleton_model->loading_tangent(skeleton_state(old));
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
   PoroelasticModel<dim>::consistent_tangent(
     const PointState<dim>         &old,
     const SymmetricTensor<2, dim> &strain_increment) const

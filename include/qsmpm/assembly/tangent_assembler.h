@@ -47,16 +47,29 @@ namespace qsmpm
       std::function<void(const AffineConstraints<double> &,
                          TrilinosWrappers::SparseMatrix &)>;
 
-    /// Assemble K at the points of @p cache, plus the matrix of
-    /// @p ghost_penalty if given (its couplings across faces then join the
-    /// pattern, made anew for the step), plus @p additional_term if given.
+    /// Which tangent of the constitutive model K is built from.
+    enum class Tangent
+    {
+      /// ConstitutiveModel::tangent(): positive definite where the model
+      /// softens (a secant), for AMG and Jacobi.
+      secant,
+      /// ConstitutiveModel::loading_tangent(): the slope of the branch each
+      /// point is on, possibly indefinite, for a direct factorization.
+      loading
+    };
+
+    /// Assemble K at the points of @p cache from the model's @p kind of
+    /// tangent, plus the matrix of @p ghost_penalty if given (its couplings
+    /// across faces then join the pattern, made anew for the step), plus
+    /// @p additional_term if given.
     void
     assemble(const BackgroundGrid<dim>       &grid,
              const MaterialPointSet<dim>     &points,
              const ShapeCache<dim>           &cache,
              const AffineConstraints<double> &constraints,
              const GhostPenalty<dim>         *ghost_penalty   = nullptr,
-             const AdditionalTerm            &additional_term = {});
+             const AdditionalTerm            &additional_term = {},
+             const Tangent                    kind = Tangent::secant);
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;

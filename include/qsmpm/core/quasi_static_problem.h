@@ -513,7 +513,14 @@ namespace qsmpm
     bool direct_retry = false;
     /// Whether the current increment was already tried again with a new
     /// preconditioner (reject_step() does so once per increment).
-    bool                    preconditioner_retried = false;
+    bool preconditioner_retried = false;
+    /// The tangent #preconditioner was built from.
+    typename TangentAssembler<dim>::Tangent preconditioner_tangent =
+      TangentAssembler<dim>::Tangent::secant;
+    /// Whether the current step failed with a preconditioner from the
+    /// points' loading slopes and is tried with the secant (reject_step());
+    /// cleared when a step is accepted.
+    bool                    secant_retry = false;
     PreconditionerReuse     preconditioner_reuse;
     PathFollowingSetup<dim> path_following;
     StepConstraints         step_constraints;

@@ -208,6 +208,29 @@ namespace qsmpm
              ArrayView<SymmetricTensor<4, dim>> C) const;
 
     /**
+     * The tangent of the branch the point is on at the committed state,
+     * continued into the next step: for a crack that is softening, the
+     * slope of its softening law, so that the stiffness across it is
+     * negative. The matrix of these tangents may be indefinite; only a
+     * preconditioner that factors it (Preconditioner = direct, KLU) is built
+     * from it, while AMG, Jacobi and the checks for nodes without stiffness
+     * use tangent(). A softening point's tangent() is a secant, and the
+     * Krylov solver then has to make up for the difference in every Newton
+     * iteration (b15.prm: 5.9 GMRES iterations per Newton iteration with
+     * the secant, 1.4 with the slope). Default: tangent().
+     */
+    virtual SymmetricTensor<4, dim>
+    loading_tangent(const PointState<dim> &old) const;
+
+    /**
+     * loading_tangent() for a batch of points (the points of one cell).
+     * The default calls loading_tangent() point by point.
+     */
+    virtual void
+    loading_tangents(const PointStateBatch<dim>        &old,
+                     ArrayView<SymmetricTensor<4, dim>> C) const;
+
+    /**
      * The consistent (algorithmic) tangent d(sigma)/d(strain_increment) of
      * update_stress() at the trial state reached with @p strain_increment
      * from @p old. Path-dependent models (plasticity) override it; the

@@ -213,6 +213,17 @@ namespace qsmpm
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;
 
+    /**
+     * tangent() with the slope of the softening line instead of the secant
+     * across a softening crack whose committed normal stress is on that
+     * line (it opened in the last step, and is taken to keep opening):
+     * k / M = -a / (M - a), a = L_c tau_nf / u0. A crack below the line has
+     * unloaded and keeps the secant. For a preconditioner that factors the
+     * matrix.
+     */
+    SymmetricTensor<4, dim>
+    loading_tangent(const PointState<dim> &old) const override;
+
     /// u0 = 2 G_f / tau_nf: the opening at complete failure.
     double
     critical_opening() const;
@@ -244,6 +255,10 @@ namespace qsmpm
     static constexpr const char *sigma_yy_ratio_name = "sigma_yy_over_tau_nf";
 
   private:
+    /// tangent() (@p loading false) or loading_tangent() (true).
+    SymmetricTensor<4, dim>
+    crack_tangent(const PointState<dim> &old, const bool loading) const;
+
     /// The crack normal for the trial stress @p sigma_trial of an uncracked
     /// point, or the zero tensor if the Rankine criterion is not met.
     Tensor<1, dim>

@@ -103,6 +103,11 @@ namespace qsmpm
     tangents(const PointStateBatch<dim>        &old,
              ArrayView<SymmetricTensor<4, dim>> C) const override;
 
+    /// C at every point.
+    void
+    loading_tangents(const PointStateBatch<dim>        &old,
+                     ArrayView<SymmetricTensor<4, dim>> C) const override;
+
     /// The elastic stiffness.
     const SymmetricTensor<4, dim> &
     stiffness() const;

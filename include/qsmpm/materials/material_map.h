@@ -103,6 +103,9 @@ namespace qsmpm
     tangent(const PointState<dim> &old) const override;
 
     SymmetricTensor<4, dim>
+    loading_tangent(const PointState<dim> &old) const override;
+
+    SymmetricTensor<4, dim>
     consistent_tangent(
       const PointState<dim>         &old,
       const SymmetricTensor<2, dim> &strain_increment) const override;
