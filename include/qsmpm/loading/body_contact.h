@@ -117,6 +117,11 @@ namespace qsmpm
       /// Coulomb friction: whether the node sticks (all displacements
       /// tied) or slips.
       bool stick = true;
+      /// Coulomb friction: whether the node went back from slip to stick
+      /// in the solves of this step. It then slips again only if its
+      /// tangential force exceeds mu times the normal force by more than
+      /// the tolerance of the friction forces (see update()).
+      bool stuck_again = false;
       /// Coulomb friction, while the node slips: the friction force on
       /// body b (body a gets the opposite), tangential, mu times the
       /// normal force of the last solve.
