@@ -70,7 +70,7 @@ namespace Footing
   // half $x \geq 0$ is modelled, $x = 0$ is a plane of symmetry (rollers).
   // The footing is the set of grid nodes under it, $0 \le x \le a$ on the
   // soil surface, moved down by the settlement $s$ with their horizontal
-  // displacement free. The mean pressure is the vertical reaction of these
+  // displacement free (smooth) or held (rough, `Footing surface`). The mean pressure is the vertical reaction of these
   // nodes over $a$.
   //
   // Plastic flow of a von Mises material conserves volume. A bilinear cell
@@ -142,8 +142,9 @@ namespace Footing
         Patterns::Selection("grid nodes|rigid body"));
       prm.add_parameter("Footing surface",
                         footing_surface,
-                        "With Footing model = rigid body: smooth "
-                        "(frictionless) or rough (no slip).",
+                        "smooth (frictionless) or rough (no slip). With "
+                        "grid nodes, rough holds the footing's nodes "
+                        "horizontally as well.",
                         Patterns::Selection("smooth|rough"));
       prm.add_parameter("Footing penalty factor",
                         penalty_factor,
@@ -511,7 +512,7 @@ namespace Footing
         return x[0] <= a * (1. + 1e-10) &&
                x[1] >= surface - current_settlement - 0.5 * h;
       },
-      {{false, true}},
+      {{footing.footing_surface == "rough", true}},
       std::make_shared<Settlement>(footing.settlement));
   }
 
