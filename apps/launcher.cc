@@ -1,7 +1,8 @@
 // The command `qsmpm`: starts the general driver `qsmpm-driver`
 // (apps/qsmpm.cc), which lies in the same directory, with the same
-// arguments, after asking its C library for huge pages where that helps
-// (Utils::request_huge_pages()). glibc reads that request only when a
+// arguments. If the user set QSMPM_HUGE_PAGES=1 it first asks the C library
+// for huge pages (Utils::request_huge_pages(); Utils::huge_pages_wanted()
+// says why that is not the default). glibc reads that request only when a
 // program starts, and the driver links deal.II, Trilinos, PETSc and their
 // dependencies, whose loading takes about half a second: this small
 // program, which links none of them, makes the request instead of the
@@ -24,7 +25,8 @@ main(int /*argc*/, char *argv[])
     "qsmpm-driver";
   if (!error)
     {
-      qsmpm::Utils::request_huge_pages();
+      if (qsmpm::Utils::huge_pages_wanted())
+        qsmpm::Utils::request_huge_pages();
       execv(driver.c_str(), argv);
     }
   std::cerr << "qsmpm: cannot start " << driver.string() << ": "

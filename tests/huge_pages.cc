@@ -1,5 +1,6 @@
 // Utils::request_huge_pages(), which the launcher `qsmpm` calls before it
-// starts the driver: it adds glibc.malloc.hugetlb=1 to GLIBC_TUNABLES only
+// starts the driver if Utils::huge_pages_wanted() (QSMPM_HUGE_PAGES=1): it
+// adds glibc.malloc.hugetlb=1 to GLIBC_TUNABLES only
 // where the kernel grants transparent huge pages on request ("madvise") and
 // the C library is glibc 2.35 or newer, keeps what the variable held, never
 // overrides the user's own hugetlb entry, leaves a process with LD_PRELOAD
@@ -71,4 +72,19 @@ main()
   const std::string before = tunables();
   check(!qsmpm::Utils::request_huge_pages() && tunables() == before,
         "a second request changes nothing");
+
+  // 5. The launcher asks only if the user wants huge pages.
+  unsetenv("QSMPM_HUGE_PAGES");
+  bool opt_in_only = !qsmpm::Utils::huge_pages_wanted();
+  for (const char *no : {"0", "off", "", "2"})
+    {
+      setenv("QSMPM_HUGE_PAGES", no, 1);
+      opt_in_only = opt_in_only && !qsmpm::Utils::huge_pages_wanted();
+    }
+  for (const char *yes : {"1", "on", "yes", "true"})
+    {
+      setenv("QSMPM_HUGE_PAGES", yes, 1);
+      opt_in_only = opt_in_only && qsmpm::Utils::huge_pages_wanted();
+    }
+  check(opt_in_only, "huge pages only where QSMPM_HUGE_PAGES asks for them");
 }

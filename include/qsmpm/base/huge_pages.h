@@ -70,6 +70,31 @@ namespace qsmpm
       return false;
 #endif
     }
+
+    /**
+     * Whether the user asked the launcher for huge pages: the environment
+     * variable QSMPM_HUGE_PAGES is 1, on, yes or true. The launcher
+     * (apps/launcher.cc) calls request_huge_pages() only then.
+     *
+     * Why not always: whether huge pages pay depends on the machine. On
+     * machine A (doc/benchmarks.md) they made the driver's 256 x 256 strip
+     * a quarter faster and the 10^7-point 3D strip twice as fast. On
+     * machine C, a KVM guest whose balloon device reports free memory to
+     * the host, the strip took 3.5-4.8 s instead of 2.3-3.4 s and the 3D
+     * strip was not faster (103 s against 102 s): the 2 MiB pages come from
+     * large free blocks whose memory the guest has handed back to the host,
+     * and each first touch waits for the host (1.2-1.8 s of system time on
+     * the strip instead of 0.4 s, in clearing the pages).
+     */
+    inline bool
+    huge_pages_wanted()
+    {
+      const char *value = std::getenv("QSMPM_HUGE_PAGES");
+      if (value == nullptr)
+        return false;
+      const std::string v(value);
+      return v == "1" || v == "on" || v == "yes" || v == "true";
+    }
   } // namespace Utils
 } // namespace qsmpm
 
