@@ -70,8 +70,8 @@ namespace Footing
   // half $x \geq 0$ is modelled, $x = 0$ is a plane of symmetry (rollers).
   // The footing is the set of grid nodes under it, $0 \le x \le a$ on the
   // soil surface, moved down by the settlement $s$ with their horizontal
-  // displacement free (smooth) or held (rough, `Footing surface`). The mean pressure is the vertical reaction of these
-  // nodes over $a$.
+  // displacement free (smooth) or held (rough, `Footing surface`). The mean
+  // pressure is the vertical reaction of these nodes over $a$.
   //
   // Plastic flow of a von Mises material conserves volume. A bilinear cell
   // with 2x2 points has more volume constraints than it can satisfy, and the

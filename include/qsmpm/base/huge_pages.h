@@ -80,7 +80,7 @@ namespace qsmpm
      * machine A (doc/benchmarks.md) they made the driver's 256 x 256 strip
      * a quarter faster and the 10^7-point 3D strip twice as fast. On
      * machine C, a KVM guest whose balloon device reports free memory to
-     * the host, the strip took 3.5-4.8 s instead of 2.3-3.4 s and the 3D
+     * the host, the strip took 4.0 s instead of 2.8 s (medians) and the 3D
      * strip was not faster (103 s against 102 s): the 2 MiB pages come from
      * large free blocks whose memory the guest has handed back to the host,
      * and each first touch waits for the host (1.2-1.8 s of system time on
