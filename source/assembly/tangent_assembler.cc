@@ -211,11 +211,10 @@ namespace qsmpm
      * K_(v,a),(w,b) += Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l of one point,
      * as G^v_abl = Omega sum_k dN_v/dx_k C_akbl once per node v, then
      * sum_l G^v_abl dN_w/dx_l: dim^4 + stencil dim^3 multiply-adds per v
-     * instead of stencil dim^4, in 3D 2,376 per point instead of 5,184 (the
-     * polycrystal's tangent: 0.60-0.66 s per test instead of 0.99-1.2 s).
-     * 2D keeps the direct sum of TangentAssembler::assemble() (192 against
-     * 256 per point), and with it the last digits of the paper's
-     * compact-tension runs.
+     * instead of stencil dim^4: in 3D 2,376 per point instead of 5,184
+     * (timings in doc/example_polycrystal.md). 2D keeps the direct sum of
+     * TangentAssembler::assemble() (192 against 256 per point), and with it
+     * the last digits of the paper's compact-tension runs.
      */
     template <int dim>
     void

@@ -76,15 +76,12 @@ namespace qsmpm
      * variable QSMPM_HUGE_PAGES is 1, on, yes or true. The launcher
      * (apps/launcher.cc) calls request_huge_pages() only then.
      *
-     * Why not always: whether huge pages pay depends on the machine. On
-     * machine A (doc/benchmarks.md) they made the driver's 256 x 256 strip
-     * a quarter faster and the 10^7-point 3D strip twice as fast. On
-     * machine C, a KVM guest whose balloon device reports free memory to
-     * the host, the strip took 4.0 s instead of 2.8 s (medians) and the 3D
-     * strip was not faster (103 s against 102 s): the 2 MiB pages come from
-     * large free blocks whose memory the guest has handed back to the host,
-     * and each first touch waits for the host (1.2-1.8 s of system time on
-     * the strip instead of 0.4 s, in clearing the pages).
+     * Why not always: whether huge pages pay depends on the machine
+     * (doc/benchmarks.md, "Huge pages", measures both kinds). Where memory
+     * is cheap to touch they make large runs faster. In a virtual machine
+     * whose balloon device reports free memory to its host, the 2 MiB pages
+     * come from large free blocks whose memory the guest has handed back,
+     * each first touch waits for the host, and the runs get slower.
      */
     inline bool
     huge_pages_wanted()
