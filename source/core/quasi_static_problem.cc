@@ -5,6 +5,7 @@
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/loading/parsed_boundary_conditions.h>
+#include <qsmpm/porous/coupled_step_operator.h>
 #include <sstream>
 #include <utility>
 
@@ -516,16 +517,7 @@ namespace qsmpm
 
     const auto solve = [&](NewtonReport &solve_report) {
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
-      const StepOperator<dim> op(*residual,
-                                 step_constraints,
-                                 preconditioner,
-                                 stabilizations(),
-                                 pressure_loads(),
-                                 contact_loads(),
-                                 pore_pressure ?
-                                   1e-6 * residual->typical_increment_norm() :
-                                   0.,
-                                 plates());
+      const StepOperator<dim> op = step_operator();
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
@@ -558,9 +550,14 @@ namespace qsmpm
           std::max(newton_parameters.residual_floor,
                    pore_pressure->force_scale() * coupling_floor_factor());
       }
-    solve(report);
-    if (pore_pressure && report.converged)
-      couple_pore_pressure(newton_parameters, solve, report);
+    if (pore_pressure && prm_values.pore_fluid.monolithic())
+      solve_coupled(newton_parameters, report);
+    else
+      {
+        solve(report);
+        if (pore_pressure && report.converged)
+          couple_pore_pressure(newton_parameters, solve, report);
+      }
     // A step that failed (and is tried again with a smaller increment, or
     // a new preconditioner) starts from the linear predictor.
     last_load_increment = 0.;
@@ -629,6 +626,64 @@ namespace qsmpm
       run_state.peak_excess_pressure > 0. ?
         1. - excess / run_state.peak_excess_pressure :
         0.;
+  }
+
+
+
+  template <int dim>
+  StepOperator<dim>
+  QuasiStaticProblem<dim>::step_operator() const
+  {
+    return StepOperator<dim>(*residual,
+                             step_constraints,
+                             preconditioner,
+                             stabilizations(),
+                             pressure_loads(),
+                             contact_loads(),
+                             pore_pressure ?
+                               1e-6 * residual->typical_increment_norm() :
+                               0.,
+                             plates());
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::solve_coupled(NewtonParameters &newton_parameters,
+                                         NewtonReport     &report)
+  {
+    TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
+    const StepOperator<dim> op = step_operator();
+    // The first iterate's pressure: the flow with the volume change of the
+    // initial guess (the first half of a fixed-stress iteration), so that
+    // the first residual is that of a guess of both fields.
+    {
+      TimerOutput::Scope scope(timer_output, "pore pressure");
+      VectorType         du_ghosted(residual->ghosted_layout());
+      du_ghosted = du;
+      pore_pressure->update(cache, points(), du_ghosted);
+    }
+    const CoupledStepOperator<dim> coupled(
+      op, *pore_pressure, *residual, cache, points(), du);
+    auto x = coupled.make_vector(du, pore_pressure->owned_pressure());
+    auto R_coupled = x;
+    // An extrapolated du is the first iterate itself: the stopping test's
+    // reference, the residual of its constrained part alone, would lack
+    // the pressure of all the free nodes.
+    using InitialGuess = NewtonParameters::InitialGuess;
+    if (newton_parameters.initial_guess == InitialGuess::extrapolation)
+      newton_parameters.initial_guess = InitialGuess::boundary_values;
+    const NewtonKrylov<CoupledStepOperator<dim>,
+                       typename CoupledStepOperator<dim>::VectorType>
+                                             newton(newton_parameters, &progress);
+    typename CoupledStepOperator<dim>::Evaluation evaluation;
+    report = newton.solve(coupled, x, R_coupled, evaluation);
+    coupled.reject_inverted_points(evaluation, report);
+    preconditioner_reuse.count_use(report, solver_parameters());
+    du                  = x.block(0);
+    R                   = R_coupled.block(0);
+    coupling_iterations = 1;
   }
 
 

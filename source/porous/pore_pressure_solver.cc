@@ -112,6 +112,18 @@ namespace qsmpm
                         "switches it off.",
                         Patterns::Double(0.));
       prm.add_parameter(
+        "Coupling",
+        coupling,
+        "How a step couples the displacement and the pressure. "
+        "fixed-stress: the fixed-stress split, flow and displacement "
+        "solved in turn until the pressure stops changing (Coupling "
+        "tolerance). monolithic: Newton-Krylov on both fields at once, "
+        "GMRES preconditioned block-triangularly with the displacement's "
+        "preconditioner and one AMG cycle of the fixed-stress Schur "
+        "complement (doc/example_consolidation.md); its stopping test is "
+        "Nonlinear solver/Tolerance.",
+        Patterns::Selection("fixed-stress|monolithic"));
+      prm.add_parameter(
         "Fixed-stress factor",
         fixed_stress_factor,
         "f >= 1 of the fixed-stress split: each point's pore volume "
@@ -303,6 +315,7 @@ namespace qsmpm
     const double h                 = grid.min_cell_size();
     cell_size                      = h;
     stress_scale                   = 0.;
+    double largest_modulus         = 0.;
 
     const auto                                 &offsets = points.get_offsets();
     const typename PointStateBatch<dim>::Layout layout{
@@ -359,6 +372,7 @@ namespace qsmpm
               }
             fixed_stress[p]  = parameters.fixed_stress_factor * b * b / K;
             stabilization[p] = parameters.stabilization_factor * h * h / Mc;
+            largest_modulus  = std::max(largest_modulus, Mc);
             // The iteration starts from the committed pressure (also after
             // a cut-back).
             double *state = data + state_offset;
@@ -368,6 +382,8 @@ namespace qsmpm
           }
       }
     stress_scale = Utilities::MPI::max(stress_scale, communicator);
+    modulus_scale =
+      Utilities::MPI::max(largest_modulus, communicator) / cell_size;
     forces       = stress_scale * std::pow(h, dim - 1) *
              std::sqrt(static_cast<double>(grid.get_dof_handler().n_dofs()));
     collect_group_dofs(grid, cache);
@@ -661,11 +677,12 @@ namespace qsmpm
 
 
   template <int dim>
-  double
-  PorePressureSolver<dim>::update(
+  void
+  PorePressureSolver<dim>::assemble_rhs(
     const ShapeCache<dim>               &cache,
-    MaterialPointSet<dim>               &points,
-    const TrilinosWrappers::MPI::Vector &du_ghosted)
+    const TrilinosWrappers::MPI::Vector &du_ghosted,
+    const bool                           coupling_only,
+    TrilinosWrappers::MPI::Vector       &vector) const
   {
     const double inverse_M =
       parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
@@ -675,7 +692,7 @@ namespace qsmpm
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const double *du = du_ghosted.trilinos_vector()[0];
 
-    rhs = 0.;
+    vector = 0.;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
@@ -691,9 +708,10 @@ namespace qsmpm
             const unsigned int    n     = cache.stencil_size(p);
             // The volume change of the step over the volume at its start:
             // tr(grad du) at small strain, det(I + grad du) - 1 at finite
-            // strain.
+            // strain (and its linearization at du = 0, tr(grad du), for
+            // the coupling alone).
             double eps_v = 0.;
-            if (finite_strain)
+            if (finite_strain && !coupling_only)
               {
                 Tensor<2, dim> delta_F = unit_symmetric_tensor<dim>();
                 for (unsigned int k = 0; k < n; ++k)
@@ -705,6 +723,12 @@ namespace qsmpm
               for (unsigned int k = 0; k < n; ++k)
                 for (unsigned int d = 0; d < dim; ++d)
                   eps_v += gradN[k][d] * du[local[nodes[k] * dim + d]];
+            if (coupling_only)
+              {
+                for (unsigned int i = 0; i < n; ++i)
+                  group_rhs(nodes[i]) += volume[p] * b * eps_v * N[i];
+                continue;
+              }
             const double  *state = cache.properties(p) + state_offset;
             Tensor<1, dim> grad_p_n;
             for (unsigned int d = 0; d < dim; ++d)
@@ -717,25 +741,23 @@ namespace qsmpm
                                                        stabilization[p] *
                                                        (gradN[i] * grad_p_n);
           }
-        constraints.distribute_local_to_global(group_rhs, dofs, rhs);
+        constraints.distribute_local_to_global(group_rhs, dofs, vector);
       }
-    rhs.compress(VectorOperation::add);
-    rhs += boundary_rhs;
+    vector.compress(VectorOperation::add);
+    if (!coupling_only)
+      vector += boundary_rhs;
+  }
 
-    // The previous iterate, for the change.
-    TrilinosWrappers::MPI::Vector previous(p_owned);
-    SolverControl control(1000, 1e-12 * rhs.l2_norm(), false, false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    if (rhs.l2_norm() > 0.)
-      cg.solve(matrix, p_owned, rhs, amg);
-    else
-      p_owned = 0.;
-    linear_iterations = control.last_step();
-    constraints.distribute(p_owned);
-    p_ghosted = p_owned;
 
-    // The new iterate at the points.
-    std::vector<double> nodal;
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::interpolate_to_points(const ShapeCache<dim> &cache,
+                                                 MaterialPointSet<dim> &points)
+  {
+    typename ShapeCache<dim>::ValueBuffer    N_buffer;
+    typename ShapeCache<dim>::GradientBuffer grad_buffer;
+    std::vector<double>                      nodal;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto &range = cache.cell(c);
@@ -760,11 +782,94 @@ namespace qsmpm
               state[2 + dim + d] = gradient[d];
           }
       }
+  }
+
+
+
+  template <int dim>
+  double
+  PorePressureSolver<dim>::update(
+    const ShapeCache<dim>               &cache,
+    MaterialPointSet<dim>               &points,
+    const TrilinosWrappers::MPI::Vector &du_ghosted)
+  {
+    assemble_rhs(cache, du_ghosted, false, rhs);
+
+    // The previous iterate, for the change.
+    TrilinosWrappers::MPI::Vector previous(p_owned);
+    SolverControl control(1000, 1e-12 * rhs.l2_norm(), false, false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    if (rhs.l2_norm() > 0.)
+      cg.solve(matrix, p_owned, rhs, amg);
+    else
+      p_owned = 0.;
+    linear_iterations = control.last_step();
+    constraints.distribute(p_owned);
+    p_ghosted = p_owned;
+    // The new iterate at the points.
+    interpolate_to_points(cache, points);
 
     previous -= p_owned;
     const double change  = previous.linfty_norm();
     const double largest = std::max(p_owned.linfty_norm(), stress_scale);
     return largest > 0. ? change / largest : (change > 0. ? 1. : 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::set_pressure(
+    const ShapeCache<dim>               &cache,
+    MaterialPointSet<dim>               &points,
+    const TrilinosWrappers::MPI::Vector &p)
+  {
+    p_ghosted = p;
+    interpolate_to_points(cache, points);
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::flow_residual(
+    const ShapeCache<dim>               &cache,
+    const TrilinosWrappers::MPI::Vector &du_ghosted,
+    const TrilinosWrappers::MPI::Vector &p,
+    TrilinosWrappers::MPI::Vector       &R) const
+  {
+    // The right-hand side holds L_p p(x_p) of the points' iterate, which
+    // set_pressure() made p: it cancels the fixed-stress term of the
+    // matrix, and what remains is the flow equation itself.
+    assemble_rhs(cache, du_ghosted, false, R);
+    R *= -1.;
+    matrix.vmult_add(R, p);
+    constraints.set_zero(R);
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::coupling_product(
+    const ShapeCache<dim>               &cache,
+    const TrilinosWrappers::MPI::Vector &du_ghosted,
+    TrilinosWrappers::MPI::Vector       &dst) const
+  {
+    assemble_rhs(cache, du_ghosted, true, dst);
+    constraints.set_zero(dst);
+  }
+
+
+
+  template <int dim>
+  void
+  PorePressureSolver<dim>::precondition_schur(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    amg.vmult(dst, src);
+    constraints.set_zero(dst);
   }
 
 

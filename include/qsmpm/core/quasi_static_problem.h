@@ -339,6 +339,19 @@ namespace qsmpm
                          const std::function<void(NewtonReport &)> &solve,
                          NewtonReport                              &report);
 
+    /**
+     * A step with a pore fluid solved for the displacement and the
+     * pressure at once (Pore fluid/Coupling = monolithic,
+     * CoupledStepOperator): the first iterate's pressure is the flow
+     * solve with the volume change of the initial guess du.
+     */
+    void
+    solve_coupled(NewtonParameters &newton_parameters, NewtonReport &report);
+
+    /// The displacement's nonlinear problem of the prepared step.
+    StepOperator<dim>
+    step_operator() const;
+
     /// With a pore fluid: the displacement solves stop at 1e-2 Coupling
     /// tolerance of the forces in the body; the residual floor is this
     /// factor times those forces.

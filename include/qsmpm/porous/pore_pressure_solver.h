@@ -112,6 +112,15 @@ namespace qsmpm
       double                    fixed_stress_factor     = 1.;
       double                    coupling_tolerance      = 1e-5;
       unsigned int              max_coupling_iterations = 100;
+      /// "fixed-stress" or "monolithic" (CoupledStepOperator).
+      std::string coupling = "fixed-stress";
+
+      /// Whether the step solves both fields at once.
+      bool
+      monolithic() const
+      {
+        return coupling == "monolithic";
+      }
 
       /// Declare the entries, bound to the members.
       void
@@ -150,7 +159,96 @@ namespace qsmpm
            MaterialPointSet<dim>               &points,
            const TrilinosWrappers::MPI::Vector &du_ghosted);
 
-    /// The nodal pressures of the last update() (ghosted).
+    /**
+     * @name The monolithic coupling (Pore fluid/Coupling = monolithic)
+     *
+     * The flow problem as one block of the coupled residual [R_u, R_p]
+     * that NewtonKrylov solves for [du, p] at once (CoupledStepOperator),
+     * and the pieces of its block-triangular preconditioner. Each needs
+     * begin_step() of the step.
+     */
+    /// @{
+
+    /**
+     * Make @p p (owned layout, the constraints of the step satisfied) the
+     * points' pressure iterate: its value and gradient at each point.
+     */
+    void
+    set_pressure(const ShapeCache<dim>               &cache,
+                 MaterialPointSet<dim>               &points,
+                 const TrilinosWrappers::MPI::Vector &p);
+
+    /**
+     * The residual of the flow equation, @p R = A p - f(du) (the rows of
+     * the constrained pressures zero), for the displacement increment
+     * @p du_ghosted and the pressure @p p that set_pressure() last gave
+     * the points. A is the step's matrix without the fixed-stress term
+     * (which the iterate's L_p p(x_p) on the right-hand side cancels).
+     */
+    void
+    flow_residual(const ShapeCache<dim>               &cache,
+                  const TrilinosWrappers::MPI::Vector &du_ghosted,
+                  const TrilinosWrappers::MPI::Vector &p,
+                  TrilinosWrappers::MPI::Vector       &R) const;
+
+    /**
+     * The derivative of the flow residual with respect to the
+     * displacement applied to @p du_ghosted, linearized at du = 0:
+     * sum_p Omega_p b N_i tr(grad du).
+     */
+    void
+    coupling_product(const ShapeCache<dim>               &cache,
+                     const TrilinosWrappers::MPI::Vector &du_ghosted,
+                     TrilinosWrappers::MPI::Vector       &dst) const;
+
+    /**
+     * One AMG cycle of the step's matrix, A plus the fixed-stress term
+     * L_p N_i N_j: the fixed-stress approximation of the Schur complement
+     * of the displacement block (White, Castelletto and Tchelepi 2016).
+     * The constrained rows of @p dst are zero.
+     */
+    void
+    precondition_schur(TrilinosWrappers::MPI::Vector       &dst,
+                       const TrilinosWrappers::MPI::Vector &src) const;
+
+    /**
+     * The largest constrained modulus M_c of the points' skeletons over
+     * the smallest cell size h. A pressure p balances the strain p / M_c,
+     * a displacement of p h / M_c across a cell; a volume of fluid V is
+     * the volume change of a force V M_c / h. The coupled system scales
+     * its pressure unknowns and flow residuals by this number, so that
+     * both blocks are displacements and forces of similar size.
+     */
+    double
+    pressure_scale() const
+    {
+      return modulus_scale;
+    }
+
+    /// Zero the rows of the constrained pressures of @p v.
+    void
+    set_constrained_to_zero(TrilinosWrappers::MPI::Vector &v) const
+    {
+      constraints.set_zero(v);
+    }
+
+    /// The pressure dofs this rank owns (the step's).
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned;
+    }
+
+    /// @}
+
+    /// The nodal pressures of the last update() (owned layout).
+    const TrilinosWrappers::MPI::Vector &
+    owned_pressure() const
+    {
+      return p_owned;
+    }
+
+    /// The nodal pressures of the last update() or set_pressure() (ghosted).
     const TrilinosWrappers::MPI::Vector &
     pressure() const
     {
@@ -202,6 +300,24 @@ namespace qsmpm
     }
 
   private:
+    /**
+     * The right-hand side of the flow problem for the displacement
+     * increment @p du_ghosted and the points' pressure iterate into
+     * @p vector (owned layout); with @p coupling_only just its volume
+     * change term, with the sign of the residual and linearized at du = 0:
+     * sum_p Omega_p b N_i tr(grad du).
+     */
+    void
+    assemble_rhs(const ShapeCache<dim>               &cache,
+                 const TrilinosWrappers::MPI::Vector &du_ghosted,
+                 const bool                           coupling_only,
+                 TrilinosWrappers::MPI::Vector       &vector) const;
+
+    /// Interpolate the nodal pressures of p_ghosted to the points' iterate.
+    void
+    interpolate_to_points(const ShapeCache<dim> &cache,
+                          MaterialPointSet<dim> &points);
+
     /// Find the pressure dofs of the nodes of each group of @p cache.
     void
     collect_group_dofs(const BackgroundGrid<dim> &grid,
@@ -278,6 +394,8 @@ namespace qsmpm
     double stress_scale = 0.;
     /// force_scale().
     double forces = 0.;
+    /// pressure_scale().
+    double modulus_scale = 0.;
   };
 } // namespace qsmpm
 
