@@ -182,9 +182,11 @@ namespace Consolidation
                   const double                       final_time,
                   const unsigned int                 steps);
 
-    /// The range of fixed-stress iterations per step, GMRES iterations per
-    /// Newton iteration and the wall time @p seconds of a run, as a line.
-    static std::string
+    /// The range of fixed-stress iterations per step (Newton iterations
+    /// per step with Pore fluid/Coupling = monolithic), GMRES iterations
+    /// per Newton iteration and the wall time @p seconds of a run, as a
+    /// line.
+    std::string
     iterations(const QuasiStaticProblem<2> &problem, const double seconds);
 
     /// The pressure of each point of @p problem, with its initial position
@@ -347,17 +349,24 @@ namespace Consolidation
   Consolidation::iterations(const QuasiStaticProblem<2> &problem,
                             const double                 seconds)
   {
-    unsigned int min_coupling = 1000, max_coupling = 0, newton = 0, gmres = 0;
+    prm.enter_subsection("Pore fluid");
+    const bool monolithic = prm.get("Coupling") == "monolithic";
+    prm.leave_subsection();
+    unsigned int min_count = 1000, max_count = 0, newton = 0, gmres = 0;
     for (const auto &report : problem.step_reports())
       {
-        min_coupling = std::min(min_coupling, report.coupling_iterations);
-        max_coupling = std::max(max_coupling, report.coupling_iterations);
+        const unsigned int count = monolithic ?
+                                     report.newton.newton_iterations :
+                                     report.coupling_iterations;
+        min_count                = std::min(min_count, count);
+        max_count                = std::max(max_count, count);
         newton += report.newton.newton_iterations;
         gmres += report.newton.linear_iterations;
       }
     std::ostringstream line;
-    line << "fixed-stress iterations per step " << min_coupling << "-"
-         << max_coupling << ", GMRES per Newton " << std::fixed
+    line << (monolithic ? "monolithic: Newton iterations per step " :
+                          "fixed-stress iterations per step ")
+         << min_count << "-" << max_count << ", GMRES per Newton " << std::fixed
          << std::setprecision(2) << static_cast<double>(gmres) / newton << ", "
          << std::setprecision(1) << seconds << " s";
     return line.str();

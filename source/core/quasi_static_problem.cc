@@ -666,7 +666,7 @@ namespace qsmpm
     }
     const CoupledStepOperator<dim> coupled(
       op, *pore_pressure, *residual, cache, points(), du);
-    auto x = coupled.make_vector(du, pore_pressure->owned_pressure());
+    auto x         = coupled.make_vector(du, pore_pressure->owned_pressure());
     auto R_coupled = x;
     // An extrapolated du is the first iterate itself: the stopping test's
     // reference, the residual of its constrained part alone, would lack
@@ -676,7 +676,7 @@ namespace qsmpm
       newton_parameters.initial_guess = InitialGuess::boundary_values;
     const NewtonKrylov<CoupledStepOperator<dim>,
                        typename CoupledStepOperator<dim>::VectorType>
-                                             newton(newton_parameters, &progress);
+      newton(newton_parameters, &progress);
     typename CoupledStepOperator<dim>::Evaluation evaluation;
     report = newton.solve(coupled, x, R_coupled, evaluation);
     coupled.reject_inverted_points(evaluation, report);

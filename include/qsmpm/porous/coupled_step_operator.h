@@ -102,7 +102,7 @@ namespace qsmpm
       flow.set_pressure(cache, points, p);
       residual_evaluator.point_state_changed();
       const Evaluation evaluation = step.residual(x.block(0), R.block(0));
-      du_ghosted = x.block(0);
+      du_ghosted                  = x.block(0);
       flow.flow_residual(cache, du_ghosted, p, R.block(1));
       R.block(1) *= scale;
       return evaluation;
@@ -162,11 +162,11 @@ namespace qsmpm
     }
 
   private:
-    const StepOperator<dim>        &step;
-    PorePressureSolver<dim>        &flow;
-    QuasiStaticResidual<dim>       &residual_evaluator;
-    const ShapeCache<dim>          &cache;
-    MaterialPointSet<dim>          &points;
+    const StepOperator<dim>  &step;
+    PorePressureSolver<dim>  &flow;
+    QuasiStaticResidual<dim> &residual_evaluator;
+    const ShapeCache<dim>    &cache;
+    MaterialPointSet<dim>    &points;
     /// PorePressureSolver::pressure_scale() of the step.
     const double scale;
     /// The layout of the unknowns.
