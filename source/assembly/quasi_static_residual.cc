@@ -161,6 +161,19 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  QuasiStaticResidual<dim>::import_ghosts(
+    const TrilinosWrappers::MPI::Vector &du,
+    TrilinosWrappers::MPI::Vector       &ghosted) const
+  {
+    const int ierr =
+      ghosted.trilinos_vector().Import(du.trilinos_vector(), *importer, Insert);
+    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+  }
+
+
+
+  template <int dim>
   double
   QuasiStaticResidual<dim>::typical_increment_norm() const
   {

@@ -661,7 +661,7 @@ namespace qsmpm
     {
       TimerOutput::Scope scope(timer_output, "pore pressure");
       VectorType         du_ghosted(residual->ghosted_layout());
-      du_ghosted = du;
+      residual->import_ghosts(du, du_ghosted);
       pore_pressure->update(cache, points(), du_ghosted);
     }
     const CoupledStepOperator<dim> coupled(
@@ -740,8 +740,8 @@ namespace qsmpm
         double change = 0.;
         {
           TimerOutput::Scope scope(timer_output, "pore pressure");
-          du_ghosted = du;
-          change     = pore_pressure->update(cache, points(), du_ghosted);
+          residual->import_ghosts(du, du_ghosted);
+          change = pore_pressure->update(cache, points(), du_ghosted);
           residual->point_state_changed();
         }
         ++coupling_iterations;

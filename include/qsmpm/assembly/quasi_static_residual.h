@@ -150,6 +150,16 @@ namespace qsmpm
     ghosted_layout() const;
 
     /**
+     * Copy @p du (the grid's owned layout) into @p ghosted (a copy of
+     * ghosted_layout()) with its ghost entries, by the import that
+     * evaluate() uses: without building the exchange anew, as the
+     * assignment of the two vectors would.
+     */
+    void
+    import_ghosts(const TrilinosWrappers::MPI::Vector &du,
+                  TrilinosWrappers::MPI::Vector       &ghosted) const;
+
+    /**
      * The l2 norm of a displacement of one (smallest) cell size at every
      * degree of freedom: the scale of finite-difference steps taken at
      * du = 0 (see JacobianFreeOperator).

@@ -76,7 +76,8 @@ namespace qsmpm
       p.reinit(layout.block(1));
     }
 
-    /// The unknowns with the displacement @p du and the pressure @p p.
+    /// The unknowns with the displacement @p du and the nodal pressure
+    /// @p pressure (both in the owned layout).
     VectorType
     make_vector(const TrilinosWrappers::MPI::Vector &du,
                 const TrilinosWrappers::MPI::Vector &pressure) const
@@ -102,7 +103,7 @@ namespace qsmpm
       flow.set_pressure(cache, points, p);
       residual_evaluator.point_state_changed();
       const Evaluation evaluation = step.residual(x.block(0), R.block(0));
-      du_ghosted                  = x.block(0);
+      residual_evaluator.import_ghosts(x.block(0), du_ghosted);
       flow.flow_residual(cache, du_ghosted, p, R.block(1));
       R.block(1) *= scale;
       return evaluation;
@@ -127,7 +128,7 @@ namespace qsmpm
     {
       step.precondition(dst.block(0), src.block(0));
       step.make_admissible(dst.block(0));
-      du_ghosted = dst.block(0);
+      residual_evaluator.import_ghosts(dst.block(0), du_ghosted);
       flow.coupling_product(cache, du_ghosted, p);
       // In the scaled unknowns: r_p / s - B du, and p / s.
       p.sadd(-1., 1. / scale, src.block(1));

@@ -1,6 +1,7 @@
 #ifndef qsmpm_porous_pore_pressure_solver_h
 #define qsmpm_porous_pore_pressure_solver_h
 
+#include <Epetra_Import.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -12,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <memory>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/surface_tractions.h>
@@ -25,7 +27,8 @@ namespace qsmpm
   /**
    * The pore pressure of a saturated porous body (Biot consolidation) on
    * the background grid, coupled to the displacement by the fixed-stress
-   * split.
+   * split (update()) or as one block of the monolithic problem
+   * (CoupledStepOperator).
    *
    * <h3>Equations</h3>
    * Mass balance of the pore fluid, with Darcy's law q = -kappa grad p
@@ -374,6 +377,8 @@ namespace qsmpm
     TrilinosWrappers::SparseMatrix    matrix;
     TrilinosWrappers::PreconditionAMG amg;
     TrilinosWrappers::MPI::Vector     p_owned, p_ghosted, rhs;
+    /// The exchange of the owned pressures into p_ghosted (set_pressure()).
+    std::unique_ptr<Epetra_Import> ghost_import;
     /// The part of the right-hand side that is the same for all iterations
     /// of a step: the fluxes and the prescribed pressures.
     TrilinosWrappers::MPI::Vector boundary_rhs;
@@ -383,6 +388,15 @@ namespace qsmpm
     /// group_offsets[c + 1]).
     std::vector<types::global_dof_index> group_dofs;
     std::vector<unsigned int>            group_offsets;
+    /// The position of each entry of group_dofs in p_ghosted's local
+    /// array and in the relevant set.
+    std::vector<int>          group_ghosted_entry;
+    std::vector<unsigned int> group_relevant_entry;
+    /// Per relevant dof: its position in an owned vector's local array
+    /// (-1: owned by another rank).
+    std::vector<int> relevant_owned_entry;
+    /// Scratch of assemble_rhs(): the sums per relevant dof.
+    mutable std::vector<double> relevant_sums;
     /// Per point of the cache: Omega_p, kappa_p, L_p and beta_p of the step.
     std::vector<double> volume, mobility, fixed_stress, stabilization;
     unsigned int        state_offset = 0;
