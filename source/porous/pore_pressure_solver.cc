@@ -521,18 +521,18 @@ namespace qsmpm
       std::make_unique<Epetra_Import>(p_ghosted.trilinos_vector().Map(),
                                       p_owned.trilinos_vector().Map());
 
-    // Where each group node's pressure lives in the ghosted vector (for
-    // the interpolation to the points) and in the relevant set (for the
-    // right-hand side's accumulation), found once per step instead of
-    // looking the global index up for every point.
-    group_ghosted_entry.resize(group_dofs.size());
+    // Where each group node's pressure lives in the relevant set, found
+    // once per step instead of looking the global index up for every
+    // point: the position in p_ghosted's local array too (its map lists
+    // the relevant set in order) and in the sums of assemble_rhs().
     group_relevant_entry.resize(group_dofs.size());
     for (unsigned int k = 0; k < group_dofs.size(); ++k)
       {
-        group_ghosted_entry[k] = p_ghosted.trilinos_partitioner().LID(
-          static_cast<TrilinosWrappers::types::int_type>(group_dofs[k]));
         group_relevant_entry[k] = relevant.index_within_set(group_dofs[k]);
-        AssertThrow(group_ghosted_entry[k] >= 0, ExcInternalError());
+        Assert(p_ghosted.trilinos_partitioner().LID(
+                 static_cast<TrilinosWrappers::types::int_type>(
+                   group_dofs[k])) == static_cast<int>(group_relevant_entry[k]),
+               ExcInternalError());
       }
     relevant_sums.assign(relevant.n_elements(), 0.);
     relevant_owned_entry.assign(relevant.n_elements(), -1);
@@ -814,7 +814,7 @@ namespace qsmpm
         nodal.resize(group_offsets[c + 1] - group_offsets[c]);
         const double *ghosted = p_ghosted.trilinos_vector()[0];
         for (unsigned int k = 0; k < nodal.size(); ++k)
-          nodal[k] = ghosted[group_ghosted_entry[group_offsets[c] + k]];
+          nodal[k] = ghosted[group_relevant_entry[group_offsets[c] + k]];
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double         *N     = cache.values(c, p, N_buffer);
@@ -908,8 +908,8 @@ namespace qsmpm
     const TrilinosWrappers::MPI::Vector &du_ghosted,
     TrilinosWrappers::MPI::Vector       &dst) const
   {
+    // assemble_rhs() leaves the constrained rows zero.
     assemble_rhs(cache, du_ghosted, true, dst);
-    constraints.set_zero(dst);
   }
 
 

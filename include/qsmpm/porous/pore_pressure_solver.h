@@ -388,9 +388,8 @@ namespace qsmpm
     /// group_offsets[c + 1]).
     std::vector<types::global_dof_index> group_dofs;
     std::vector<unsigned int>            group_offsets;
-    /// The position of each entry of group_dofs in p_ghosted's local
-    /// array and in the relevant set.
-    std::vector<int>          group_ghosted_entry;
+    /// The position of each entry of group_dofs in the relevant set, which
+    /// is also its position in p_ghosted's local array.
     std::vector<unsigned int> group_relevant_entry;
     /// Per relevant dof: its position in an owned vector's local array
     /// (-1: owned by another rank).
