@@ -543,6 +543,36 @@ namespace qsmpm
           relevant_owned_entry[k] = rhs.trilinos_partitioner().LID(
             static_cast<TrilinosWrappers::types::int_type>(dof));
       }
+
+    // What the committed state contributes to the flow's right-hand side,
+    // sum_p Omega_p (p_n / M N_i + beta_p grad N_i . grad p_n): the same in
+    // every evaluation of the step.
+    {
+      const double inverse_M =
+        parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+      typename ShapeCache<dim>::ValueBuffer    N_buffer;
+      typename ShapeCache<dim>::GradientBuffer grad_buffer;
+      step_sums.assign(relevant.n_elements(), 0.);
+      for (unsigned int c = 0; c < cache.n_cells(); ++c)
+        {
+          const auto         &range = cache.cell(c);
+          const unsigned int *entry = &group_relevant_entry[group_offsets[c]];
+          for (unsigned int p = range.first_point; p < range.end_point; ++p)
+            {
+              const double         *N     = cache.values(c, p, N_buffer);
+              const Tensor<1, dim> *gradN = cache.gradients(c, p, grad_buffer);
+              const unsigned short *nodes = cache.nodes(p);
+              const double         *state = cache.properties(p) + state_offset;
+              Tensor<1, dim>        grad_p_n;
+              for (unsigned int d = 0; d < dim; ++d)
+                grad_p_n[d] = state[2 + d];
+              for (unsigned int i = 0; i < cache.stencil_size(p); ++i)
+                step_sums[entry[nodes[i]]] +=
+                  volume[p] * (inverse_M * state[0] * N[i] +
+                               stabilization[p] * (gradN[i] * grad_p_n));
+            }
+        }
+    }
   }
 
 
@@ -717,15 +747,17 @@ namespace qsmpm
     const bool                           coupling_only,
     TrilinosWrappers::MPI::Vector       &vector) const
   {
-    const double inverse_M =
-      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
     typename ShapeCache<dim>::ValueBuffer    N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const double *du = du_ghosted.trilinos_vector()[0];
 
     // The sums over the points, per locally relevant node, then into the
-    // owners' entries (the ghost nodes' through the vector's exchange).
-    std::fill(relevant_sums.begin(), relevant_sums.end(), 0.);
+    // owners' entries (the ghost nodes' through the vector's exchange);
+    // the right-hand side starts from the step's part.
+    if (coupling_only)
+      std::fill(relevant_sums.begin(), relevant_sums.end(), 0.);
+    else
+      relevant_sums = step_sums;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const auto         &range = cache.cell(c);
@@ -754,24 +786,16 @@ namespace qsmpm
               for (unsigned int k = 0; k < n; ++k)
                 for (unsigned int d = 0; d < dim; ++d)
                   eps_v += gradN[k][d] * du[local[nodes[k] * dim + d]];
-            if (coupling_only)
-              {
-                for (unsigned int i = 0; i < n; ++i)
-                  relevant_sums[entry[nodes[i]]] +=
-                    volume[p] * b * eps_v * N[i];
-                continue;
-              }
-            const double  *state = cache.properties(p) + state_offset;
-            Tensor<1, dim> grad_p_n;
-            for (unsigned int d = 0; d < dim; ++d)
-              grad_p_n[d] = state[2 + d];
+            // The coupling B du, or the iterate's fixed-stress storage
+            // less the skeleton's volume change.
             const double source =
-              volume[p] *
-              (inverse_M * state[0] + fixed_stress[p] * state[1] - b * eps_v);
+              coupling_only ?
+                volume[p] * b * eps_v :
+                volume[p] *
+                  (fixed_stress[p] * (cache.properties(p) + state_offset)[1] -
+                   b * eps_v);
             for (unsigned int i = 0; i < n; ++i)
-              relevant_sums[entry[nodes[i]]] +=
-                source * N[i] +
-                volume[p] * stabilization[p] * (gradN[i] * grad_p_n);
+              relevant_sums[entry[nodes[i]]] += source * N[i];
           }
       }
     // Every owned vector of the step has the layout of rhs (the entries

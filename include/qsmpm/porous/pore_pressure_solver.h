@@ -396,6 +396,11 @@ namespace qsmpm
     std::vector<int> relevant_owned_entry;
     /// Scratch of assemble_rhs(): the sums per relevant dof.
     mutable std::vector<double> relevant_sums;
+    /// The part of the flow's right-hand side that does not change within
+    /// a step (the committed pressure's storage and the stabilization
+    /// with the committed pressure gradient), per relevant dof: found once
+    /// in begin_step(), the start of assemble_rhs()'s sums.
+    std::vector<double> step_sums;
     /// Per point of the cache: Omega_p, kappa_p, L_p and beta_p of the step.
     std::vector<double> volume, mobility, fixed_stress, stabilization;
     unsigned int        state_offset = 0;
