@@ -15,7 +15,7 @@
 #
 #   benchmarks/footing-consolidation.sh [build directory, default: build] [ranks, default: 1] [levels, default: "20 40 80"]
 #
-# Takes about 15 minutes on one core (most of it a / h = 16). Needs a
+# Takes about 10 minutes on one core (most of it a / h = 16). Needs a
 # Release build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
