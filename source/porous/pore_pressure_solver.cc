@@ -536,20 +536,27 @@ namespace qsmpm
       }
     relevant_sums.assign(relevant.n_elements(), 0.);
     relevant_owned_entry.assign(relevant.n_elements(), -1);
+    ghost_entries.clear();
+    ghost_dofs.clear();
     for (unsigned int k = 0; k < relevant.n_elements(); ++k)
       {
         const types::global_dof_index dof = relevant.nth_index_in_set(k);
         if (owned.is_element(dof))
           relevant_owned_entry[k] = rhs.trilinos_partitioner().LID(
             static_cast<TrilinosWrappers::types::int_type>(dof));
+        else
+          {
+            ghost_entries.push_back(k);
+            ghost_dofs.push_back(dof);
+          }
       }
+    ghost_sums.resize(ghost_entries.size());
 
     // What the committed state contributes to the flow's right-hand side,
     // sum_p Omega_p (p_n / M N_i + beta_p grad N_i . grad p_n): the same in
     // every evaluation of the step.
     {
-      const double inverse_M =
-        parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+      const double inverse_M = parameters.inverse_biot_modulus();
       typename ShapeCache<dim>::ValueBuffer    N_buffer;
       typename ShapeCache<dim>::GradientBuffer grad_buffer;
       step_sums.assign(relevant.n_elements(), 0.);
@@ -631,8 +638,7 @@ namespace qsmpm
                                         const unsigned int     c,
                                         FullMatrix<double>    &matrix) const
   {
-    const double inverse_M =
-      parameters.biot_modulus > 0. ? 1. / parameters.biot_modulus : 0.;
+    const double inverse_M = parameters.inverse_biot_modulus();
     typename ShapeCache<dim>::ValueBuffer    N_buffer;
     typename ShapeCache<dim>::GradientBuffer grad_buffer;
     const auto                              &range = cache.cell(c);
@@ -801,19 +807,14 @@ namespace qsmpm
     // Every owned vector of the step has the layout of rhs (the entries
     // relevant_owned_entry points to).
     AssertDimension(vector.locally_owned_size(), owned.n_elements());
-    vector                                      = 0.;
-    double                              *values = vector.trilinos_vector()[0];
-    std::vector<types::global_dof_index> ghost_dofs;
-    std::vector<double>                  ghost_values;
+    vector         = 0.;
+    double *values = vector.trilinos_vector()[0];
     for (unsigned int k = 0; k < relevant_sums.size(); ++k)
       if (relevant_owned_entry[k] >= 0)
         values[relevant_owned_entry[k]] += relevant_sums[k];
-      else if (relevant_sums[k] != 0.)
-        {
-          ghost_dofs.push_back(relevant.nth_index_in_set(k));
-          ghost_values.push_back(relevant_sums[k]);
-        }
-    vector.add(ghost_dofs, ghost_values);
+    for (unsigned int g = 0; g < ghost_entries.size(); ++g)
+      ghost_sums[g] = relevant_sums[ghost_entries[g]];
+    vector.add(ghost_dofs, ghost_sums);
     vector.compress(VectorOperation::add);
     // The constrained rows have no equation (as distribute_local_to_global()
     // would have dropped them); the boundary part gives them theirs.

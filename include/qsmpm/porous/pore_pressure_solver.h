@@ -118,6 +118,13 @@ namespace qsmpm
       /// "fixed-stress" or "monolithic" (CoupledStepOperator).
       std::string coupling = "fixed-stress";
 
+      /// 1 / M, 0 for an incompressible fluid and grains (M = 0).
+      double
+      inverse_biot_modulus() const
+      {
+        return biot_modulus > 0. ? 1. / biot_modulus : 0.;
+      }
+
       /// Whether the step solves both fields at once.
       bool
       monolithic() const
@@ -394,8 +401,13 @@ namespace qsmpm
     /// Per relevant dof: its position in an owned vector's local array
     /// (-1: owned by another rank).
     std::vector<int> relevant_owned_entry;
-    /// Scratch of assemble_rhs(): the sums per relevant dof.
-    mutable std::vector<double> relevant_sums;
+    /// The relevant dofs owned by other ranks: their positions in the
+    /// relevant set and their global indices.
+    std::vector<unsigned int>            ghost_entries;
+    std::vector<types::global_dof_index> ghost_dofs;
+    /// Scratch of assemble_rhs(): the sums per relevant dof, and those of
+    /// the ghost dofs.
+    mutable std::vector<double> relevant_sums, ghost_sums;
     /// The part of the flow's right-hand side that does not change within
     /// a step (the committed pressure's storage and the stabilization
     /// with the committed pressure gradient), per relevant dof: found once
