@@ -396,12 +396,13 @@ namespace qsmpm
     // step may serve again (PreconditionerReuse). K is not reassembled
     // either (with GIMP its pattern may change, and AMG and KLU refer to
     // it).
-    if (preconditioner_reuse.build_for_step(
-          preconditioner.needs_matrix(),
-          solver_parameters(),
-          step_constraints.get(),
-          background_grid.locally_owned_dofs(),
-          communicator))
+    const bool new_preconditioner =
+      preconditioner_reuse.build_for_step(preconditioner.needs_matrix(),
+                                          solver_parameters(),
+                                          step_constraints.get(),
+                                          background_grid.locally_owned_dofs(),
+                                          communicator);
+    if (new_preconditioner)
       {
         {
           TimerOutput::Scope scope(timer_output, "tangent assembly");
@@ -428,6 +429,21 @@ namespace qsmpm
                              background_grid,
                              tangent.pattern_generation());
       }
+    // The plates' part of the preconditioner (RigidPlates), in every step:
+    // the plates' nodes change with the material.
+    if (!rigid_plates.empty() && preconditioner.needs_matrix())
+      {
+        TimerOutput::Scope scope(timer_output, "preconditioner setup");
+        rigid_plates.setup_preconditioner(
+          tangent.matrix(),
+          [this](VectorType &dst, const VectorType &src) {
+            preconditioner.vmult(dst, src);
+          },
+          [this](VectorType &v) {
+            step_constraints.set_constrained_to_zero(v);
+          },
+          new_preconditioner);
+      }
   }
 
 
@@ -453,12 +469,12 @@ namespace qsmpm
     const bool hold = with_hold && null_mode_hold.active();
     if (rigid_contact.empty() && rigid_plates.empty() && !hold)
       return {};
-    return [this, hold](const AffineConstraints<double> &c,
-                        TrilinosWrappers::SparseMatrix  &K) {
+    return [this, hold, with_hold](const AffineConstraints<double> &c,
+                                   TrilinosWrappers::SparseMatrix  &K) {
       if (!rigid_contact.empty())
         rigid_contact.add_to(c, K);
       if (!rigid_plates.empty())
-        rigid_plates.add_to(K);
+        rigid_plates.add_to(K, /*preconditioner's matrix:*/ with_hold);
       if (hold)
         null_mode_hold.add_to(c, K);
     };

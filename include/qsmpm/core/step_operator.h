@@ -167,10 +167,20 @@ namespace qsmpm
         }
     }
 
+    /// The preconditioner, completed by the plates' tie
+    /// (RigidPlates::precondition()) if there are plates.
     void
     precondition(VectorType &dst, const VectorType &src) const
     {
-      preconditioner.vmult(dst, src);
+      if (plates != nullptr && plates->has_preconditioner())
+        plates->precondition(
+          [this](VectorType &d, const VectorType &s) {
+            preconditioner.vmult(d, s);
+          },
+          dst,
+          src);
+      else
+        preconditioner.vmult(dst, src);
     }
 
   private:
