@@ -429,20 +429,28 @@ namespace qsmpm
                              background_grid,
                              tangent.pattern_generation());
       }
-    // The plates' part of the preconditioner (RigidPlates), in every step:
-    // the plates' nodes change with the material.
-    if (!rigid_plates.empty() && preconditioner.needs_matrix())
+    // The bodies driven by a force (RigidContact) and the plates
+    // (RigidPlates) complete the preconditioner; the plates in every step,
+    // since their nodes change with the material.
+    if (preconditioner.needs_matrix() &&
+        !(rigid_contact.empty() && rigid_plates.empty()))
       {
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
-        rigid_plates.setup_preconditioner(
-          tangent.matrix(),
-          [this](VectorType &dst, const VectorType &src) {
-            preconditioner.vmult(dst, src);
-          },
-          [this](VectorType &v) {
-            step_constraints.set_constrained_to_zero(v);
-          },
-          new_preconditioner);
+        const auto         M = [this](VectorType &dst, const VectorType &src) {
+          preconditioner.vmult(dst, src);
+        };
+        if (!rigid_contact.empty())
+          rigid_contact.setup_preconditioner(tangent.matrix(),
+                                             M,
+                                             new_preconditioner);
+        if (!rigid_plates.empty())
+          rigid_plates.setup_preconditioner(
+            tangent.matrix(),
+            M,
+            [this](VectorType &v) {
+              step_constraints.set_constrained_to_zero(v);
+            },
+            new_preconditioner);
       }
   }
 
@@ -472,7 +480,7 @@ namespace qsmpm
     return [this, hold, with_hold](const AffineConstraints<double> &c,
                                    TrilinosWrappers::SparseMatrix  &K) {
       if (!rigid_contact.empty())
-        rigid_contact.add_to(c, K);
+        rigid_contact.add_to(c, K, /*preconditioner's matrix:*/ with_hold);
       if (!rigid_plates.empty())
         rigid_plates.add_to(K, /*preconditioner's matrix:*/ with_hold);
       if (hold)

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/rigid_contact.h>
@@ -598,10 +600,22 @@ namespace qsmpm
   template <int dim>
   void
   RigidContact<dim>::add_to(const AffineConstraints<double> &constraints,
-                            TrilinosWrappers::SparseMatrix  &K) const
+                            TrilinosWrappers::SparseMatrix  &K,
+                            const bool preconditioner_matrix) const
   {
     FullMatrix<double>                   K_point;
     std::vector<types::global_dof_index> dofs;
+    Vector<double>                       b_point(dofs_per_cell);
+    const auto                          &bodies = boundary.rigid_bodies();
+    if (preconditioner_matrix)
+      {
+        stiffness_shift.resize(bodies.size());
+        shift_stiffness.assign(bodies.size(), 0.);
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          if (bodies[b].load_driven())
+            stiffness_shift[b].reinit(K.locally_owned_range_indices(),
+                                      K.get_mpi_communicator());
+      }
     for (const Candidate &c : candidates)
       {
         if (!c.penetrates)
@@ -636,7 +650,139 @@ namespace qsmpm
         dofs.assign(dof_global.begin() + c.first,
                     dof_global.begin() + c.first + dofs_per_cell);
         constraints.distribute_local_to_global(K_point, dofs, K);
+        if (preconditioner_matrix && body.load_driven())
+          {
+            // b = K_c e_d and beta = e_d^T K_c e_d of this point.
+            const Tensor<1, dim> &d = load_unit[c.body];
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                b_point[i] = 0.;
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  b_point[i] += K_point(i, j) * d[dof_component[c.first + j]];
+                shift_stiffness[c.body] +=
+                  d[dof_component[c.first + i]] * b_point[i];
+              }
+            constraints.distribute_local_to_global(b_point,
+                                                   dofs,
+                                                   stiffness_shift[c.body]);
+          }
       }
+    if (preconditioner_matrix)
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (bodies[b].load_driven())
+          stiffness_shift[b].compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::setup_preconditioner(
+    const TrilinosWrappers::SparseMatrix &K_A,
+    const Preconditioning                &M,
+    const bool                            new_preconditioner)
+  {
+    if (!new_preconditioner)
+      return;
+    corrected_bodies.clear();
+    corrections.clear();
+    const auto &bodies = boundary.rigid_bodies();
+    if (stiffness_shift.size() != bodies.size())
+      return;
+    const MPI_Comm communicator = K_A.get_mpi_communicator();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b].load_driven())
+        {
+          shift_stiffness[b] =
+            Utilities::MPI::sum(shift_stiffness[b], communicator);
+          if (shift_stiffness[b] > 0.)
+            corrected_bodies.push_back(b);
+        }
+    if (corrected_bodies.empty())
+      return;
+    // m = K_A^{-1} b, to 1e-10: G = beta - b^T m is a small difference of
+    // two large numbers where the penalty is much stiffer than the
+    // material.
+    struct Inverse
+    {
+      const Preconditioning &M;
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        M(dst, src);
+        dst *= -1.;
+      }
+    } inverse{M};
+    const unsigned int n = corrected_bodies.size();
+    corrections.assign(n, stiffness_shift[corrected_bodies[0]]);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const VectorType &b = stiffness_shift[corrected_bodies[k]];
+        corrections[k]      = 0.;
+        // Right preconditioning: the stopping test sees the true residual,
+        // a force like b.
+        SolverControl           control(500, 1e-10 * b.l2_norm(), false, false);
+        SolverGMRES<VectorType> gmres(
+          control, typename SolverGMRES<VectorType>::AdditionalData(50, true));
+        try
+          {
+            gmres.solve(K_A, corrections[k], b, inverse);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            // The preconditioner without the correction; Newton will say
+            // whether the step converges.
+            corrected_bodies.clear();
+            corrections.clear();
+            return;
+          }
+      }
+    FullMatrix<double> G(n, n);
+    bool               positive = true;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        for (unsigned int l = 0; l < n; ++l)
+          G(k, l) = (k == l ? shift_stiffness[corrected_bodies[k]] : 0.) -
+                    stiffness_shift[corrected_bodies[k]] * corrections[l];
+        positive =
+          positive && G(k, k) > 1e-12 * shift_stiffness[corrected_bodies[k]];
+      }
+    if (!positive)
+      {
+        corrected_bodies.clear();
+        corrections.clear();
+        return;
+      }
+    correction_inverse.reinit(n, n);
+    correction_inverse.invert(G);
+    correction_rhs.reinit(n);
+    correction_solution.reinit(n);
+  }
+
+
+
+  template <int dim>
+  bool
+  RigidContact<dim>::has_preconditioner() const
+  {
+    return !corrected_bodies.empty();
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::precondition(const Preconditioning &M,
+                                  VectorType            &dst,
+                                  const VectorType      &src) const
+  {
+    // dst = -(K_A - B Beta^{-1} B^T)^{-1} src = M(src) - m G^{-1} m^T src.
+    M(dst, src);
+    for (unsigned int k = 0; k < corrections.size(); ++k)
+      correction_rhs[k] = corrections[k] * src;
+    correction_inverse.vmult(correction_solution, correction_rhs);
+    for (unsigned int k = 0; k < corrections.size(); ++k)
+      dst.add(-correction_solution[k], corrections[k]);
   }
 
 

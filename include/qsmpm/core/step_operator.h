@@ -167,20 +167,27 @@ namespace qsmpm
         }
     }
 
-    /// The preconditioner, completed by the plates' tie
-    /// (RigidPlates::precondition()) if there are plates.
+    /// The preconditioner, completed by the bodies driven by a force
+    /// (RigidContact::precondition()) and by the plates' tie
+    /// (RigidPlates::precondition()) where there are such.
     void
     precondition(VectorType &dst, const VectorType &src) const
     {
+      const auto base = [this](VectorType &d, const VectorType &s) {
+        if (contact != nullptr && contact->has_preconditioner())
+          contact->precondition(
+            [this](VectorType &d0, const VectorType &s0) {
+              preconditioner.vmult(d0, s0);
+            },
+            d,
+            s);
+        else
+          preconditioner.vmult(d, s);
+      };
       if (plates != nullptr && plates->has_preconditioner())
-        plates->precondition(
-          [this](VectorType &d, const VectorType &s) {
-            preconditioner.vmult(d, s);
-          },
-          dst,
-          src);
+        plates->precondition(base, dst, src);
       else
-        preconditioner.vmult(dst, src);
+        base(dst, src);
     }
 
   private:

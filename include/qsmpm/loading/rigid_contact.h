@@ -2,8 +2,11 @@
 #define qsmpm_loading_rigid_contact_h
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+#include <functional>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -112,6 +115,24 @@ namespace qsmpm
    * no s balances F (the body finds no material to push against within
    * two cells), check_loads() stops the run with a message naming the
    * body.
+   *
+   * <h3>The preconditioner of a body driven by a force</h3>
+   * The preconditioner's matrix K_A holds the contact stiffness K_c of
+   * each body as if the body were held (add_to()). A body driven by a
+   * force is free: with b = K_c e_d (e_d: the direction d at every node)
+   * and beta = e_d^T K_c e_d, ds/du = b^T / beta, and the Jacobian of the
+   * condensed residual is -(K_A - sum_k b_k b_k^T / beta_k), a rank-one
+   * change per body. precondition() applies its inverse by the
+   * Sherman-Morrison-Woodbury formula,
+   *
+   *   (K_A - B Beta^{-1} B^T)^{-1} = K_A^{-1} + m G^{-1} m^T,
+   *   m = K_A^{-1} B,  G = Beta - B^T m,
+   *
+   * with K_A^{-1} the preconditioner and m solved for to 1e-10 by GMRES
+   * (preconditioned by it) whenever the preconditioner is built
+   * (setup_preconditioner()); b and beta are those of the contact
+   * stiffness add_to() gave K_A. Without it AMG sees the body held by the
+   * penalty springs, and GMRES has to find the body's motion itself.
    */
   template <int dim>
   class RigidContact
@@ -181,9 +202,40 @@ namespace qsmpm
     /// K += the contact stiffness of the points that touch or penetrate a
     /// body at du = 0 (the couplings of their cells' nodes are in K's
     /// pattern already).
+    /// If @p preconditioner_matrix, K is the matrix of the step's
+    /// preconditioner, and b and beta of the bodies driven by a force are
+    /// kept for setup_preconditioner() (collective then).
     void
     add_to(const AffineConstraints<double> &constraints,
-           TrilinosWrappers::SparseMatrix  &K) const;
+           TrilinosWrappers::SparseMatrix  &K,
+           const bool                       preconditioner_matrix = true) const;
+
+    /// dst = M(src): the preconditioner of K_A, with the sign of
+    /// Preconditioner::vmult() (dst = -K_A^{-1} src).
+    using Preconditioning =
+      std::function<void(VectorType &, const VectorType &)>;
+
+    /**
+     * m = K_A^{-1} B and G^{-1} of the bodies driven by a force (see the
+     * class description), from @p K_A, the matrix add_to() added to, and
+     * its preconditioner @p M, if @p new_preconditioner; otherwise those
+     * of the last call serve. Collective.
+     */
+    void
+    setup_preconditioner(const TrilinosWrappers::SparseMatrix &K_A,
+                         const Preconditioning                &M,
+                         const bool new_preconditioner);
+
+    /// Whether precondition() has a correction to apply.
+    bool
+    has_preconditioner() const;
+
+    /// dst = M(src) with the bodies' rank-one corrections (the class
+    /// description). Collective.
+    void
+    precondition(const Preconditioning &M,
+                 VectorType            &dst,
+                 const VectorType      &src) const;
 
     /// Store each candidate's contact traction at the converged increment
     /// @p du_ghosted (the layout of reinit_step()) on its point, and
@@ -274,6 +326,17 @@ namespace qsmpm
     mutable VectorType                   forces;
     /// Scratch of add_contact_forces(): one cell's nodal forces.
     mutable std::vector<double> values;
+
+    /// Per body driven by a force, b and beta of the contact stiffness
+    /// add_to() gave the preconditioner's matrix (beta summed over the
+    /// ranks in setup_preconditioner()).
+    mutable std::vector<VectorType> stiffness_shift;
+    mutable std::vector<double>     shift_stiffness;
+    /// The bodies the correction covers, m = K_A^{-1} b of each, and G^{-1}.
+    std::vector<unsigned int> corrected_bodies;
+    std::vector<VectorType>   corrections;
+    FullMatrix<double>        correction_inverse;
+    mutable Vector<double>    correction_rhs, correction_solution;
   };
 } // namespace qsmpm
 
