@@ -168,29 +168,42 @@ namespace qsmpm
     }
 
     /// The preconditioner, completed by the bodies driven by a force
-    /// (RigidContact::precondition()) and by the plates' tie
+    /// (RigidContact::precondition()) and then by the plates' tie
     /// (RigidPlates::precondition()) where there are such.
     void
     precondition(VectorType &dst, const VectorType &src) const
     {
-      const auto base = [this](VectorType &d, const VectorType &s) {
-        if (contact != nullptr && contact->has_preconditioner())
-          contact->precondition(
-            [this](VectorType &d0, const VectorType &s0) {
-              preconditioner.vmult(d0, s0);
-            },
-            d,
-            s);
-        else
-          preconditioner.vmult(d, s);
-      };
-      if (plates != nullptr && plates->has_preconditioner())
-        plates->precondition(base, dst, src);
-      else
-        base(dst, src);
+      corrected_preconditioner(2, dst, src);
     }
 
   private:
+    /// The preconditioner completed by the first @p n of the bodies'
+    /// and the plates' corrections (those that have one in this step).
+    void
+    corrected_preconditioner(const unsigned int n,
+                             VectorType        &dst,
+                             const VectorType  &src) const
+    {
+      if (n == 0)
+        {
+          preconditioner.vmult(dst, src);
+          return;
+        }
+      const PreconditionerCorrection<VectorType> *correction =
+        n == 1 ?
+          static_cast<const PreconditionerCorrection<VectorType> *>(contact) :
+          plates;
+      if (correction == nullptr || !correction->has_preconditioner())
+        corrected_preconditioner(n - 1, dst, src);
+      else
+        correction->precondition(
+          [this, n](VectorType &d, const VectorType &s) {
+            corrected_preconditioner(n - 1, d, s);
+          },
+          dst,
+          src);
+    }
+
     /// The residual of all the terms above but the plates' tie.
     Evaluation
     residual_of(const VectorType &du, VectorType &R) const

@@ -6,9 +6,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
-#include <functional>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
+#include <qsmpm/loading/preconditioner_correction.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
 #include <vector>
@@ -136,6 +136,7 @@ namespace qsmpm
    */
   template <int dim>
   class RigidContact
+    : public PreconditionerCorrection<TrilinosWrappers::MPI::Vector>
   {
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
@@ -210,10 +211,6 @@ namespace qsmpm
            TrilinosWrappers::SparseMatrix  &K,
            const bool                       preconditioner_matrix = true) const;
 
-    /// dst = M(src): the preconditioner of K_A, with the sign of
-    /// Preconditioner::vmult() (dst = -K_A^{-1} src).
-    using Preconditioning =
-      std::function<void(VectorType &, const VectorType &)>;
 
     /**
      * m = K_A^{-1} B and G^{-1} of the bodies driven by a force (see the
@@ -228,14 +225,14 @@ namespace qsmpm
 
     /// Whether precondition() has a correction to apply.
     bool
-    has_preconditioner() const;
+    has_preconditioner() const override;
 
     /// dst = M(src) with the bodies' rank-one corrections (the class
     /// description). Collective.
     void
     precondition(const Preconditioning &M,
                  VectorType            &dst,
-                 const VectorType      &src) const;
+                 const VectorType      &src) const override;
 
     /// Store each candidate's contact traction at the converged increment
     /// @p du_ghosted (the layout of reinit_step()) on its point, and

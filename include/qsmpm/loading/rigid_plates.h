@@ -6,9 +6,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
-#include <functional>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/loading/boundary_descriptor.h>
+#include <qsmpm/loading/preconditioner_correction.h>
 #include <vector>
 
 namespace qsmpm
@@ -75,6 +75,7 @@ namespace qsmpm
    */
   template <int dim>
   class RigidPlates
+    : public PreconditionerCorrection<TrilinosWrappers::MPI::Vector>
   {
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
@@ -117,10 +118,6 @@ namespace qsmpm
     add_to(TrilinosWrappers::SparseMatrix &K,
            const bool                      preconditioner_matrix = true) const;
 
-    /// dst = M(src): the preconditioner of K_A, with the sign of
-    /// Preconditioner::vmult() (dst = -K_A^{-1} src).
-    using Preconditioning =
-      std::function<void(VectorType &, const VectorType &)>;
 
     /**
      * The plates' modes phi_k and their coarse matrix Phi^T K Phi for this
@@ -142,7 +139,7 @@ namespace qsmpm
 
     /// Whether setup_preconditioner() was called for the current step.
     bool
-    has_preconditioner() const;
+    has_preconditioner() const override;
 
     /**
      * dst = the tied problem's preconditioner applied to @p src (see the
@@ -152,7 +149,7 @@ namespace qsmpm
     void
     precondition(const Preconditioning &M,
                  VectorType            &dst,
-                 const VectorType      &src) const;
+                 const VectorType      &src) const override;
 
     /// The mean of @p v over each plate's dofs (all ranks): of a converged
     /// increment, each plate's motion in the step. Collective.
