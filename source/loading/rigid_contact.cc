@@ -609,12 +609,12 @@ namespace qsmpm
     const auto                          &bodies = boundary.rigid_bodies();
     if (preconditioner_matrix)
       {
-        stiffness_shift.resize(bodies.size());
-        shift_stiffness.assign(bodies.size(), 0.);
+        unit_shift_forces.resize(bodies.size());
+        unit_shift_stiffness.assign(bodies.size(), 0.);
         for (unsigned int b = 0; b < bodies.size(); ++b)
           if (bodies[b].load_driven())
-            stiffness_shift[b].reinit(K.locally_owned_range_indices(),
-                                      K.get_mpi_communicator());
+            unit_shift_forces[b].reinit(K.locally_owned_range_indices(),
+                                        K.get_mpi_communicator());
       }
     for (const Candidate &c : candidates)
       {
@@ -659,18 +659,18 @@ namespace qsmpm
                 b_point[i] = 0.;
                 for (unsigned int j = 0; j < dofs_per_cell; ++j)
                   b_point[i] += K_point(i, j) * d[dof_component[c.first + j]];
-                shift_stiffness[c.body] +=
+                unit_shift_stiffness[c.body] +=
                   d[dof_component[c.first + i]] * b_point[i];
               }
             constraints.distribute_local_to_global(b_point,
                                                    dofs,
-                                                   stiffness_shift[c.body]);
+                                                   unit_shift_forces[c.body]);
           }
       }
     if (preconditioner_matrix)
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (bodies[b].load_driven())
-          stiffness_shift[b].compress(VectorOperation::add);
+          unit_shift_forces[b].compress(VectorOperation::add);
   }
 
 
@@ -687,15 +687,15 @@ namespace qsmpm
     corrected_bodies.clear();
     corrections.clear();
     const auto &bodies = boundary.rigid_bodies();
-    if (stiffness_shift.size() != bodies.size())
+    if (unit_shift_forces.size() != bodies.size())
       return;
     const MPI_Comm communicator = K_A.get_mpi_communicator();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       if (bodies[b].load_driven())
         {
-          shift_stiffness[b] =
-            Utilities::MPI::sum(shift_stiffness[b], communicator);
-          if (shift_stiffness[b] > 0.)
+          unit_shift_stiffness[b] =
+            Utilities::MPI::sum(unit_shift_stiffness[b], communicator);
+          if (unit_shift_stiffness[b] > 0.)
             corrected_bodies.push_back(b);
         }
     if (corrected_bodies.empty())
@@ -714,10 +714,10 @@ namespace qsmpm
       }
     } inverse{M};
     const unsigned int n = corrected_bodies.size();
-    corrections.assign(n, stiffness_shift[corrected_bodies[0]]);
+    corrections.assign(n, unit_shift_forces[corrected_bodies[0]]);
     for (unsigned int k = 0; k < n; ++k)
       {
-        const VectorType &b = stiffness_shift[corrected_bodies[k]];
+        const VectorType &b = unit_shift_forces[corrected_bodies[k]];
         corrections[k]      = 0.;
         // Right preconditioning: the stopping test sees the true residual,
         // a force like b.
@@ -742,10 +742,10 @@ namespace qsmpm
     for (unsigned int k = 0; k < n; ++k)
       {
         for (unsigned int l = 0; l < n; ++l)
-          G(k, l) = (k == l ? shift_stiffness[corrected_bodies[k]] : 0.) -
-                    stiffness_shift[corrected_bodies[k]] * corrections[l];
-        positive =
-          positive && G(k, k) > 1e-12 * shift_stiffness[corrected_bodies[k]];
+          G(k, l) = (k == l ? unit_shift_stiffness[corrected_bodies[k]] : 0.) -
+                    unit_shift_forces[corrected_bodies[k]] * corrections[l];
+        positive = positive &&
+                   G(k, k) > 1e-12 * unit_shift_stiffness[corrected_bodies[k]];
       }
     if (!positive)
       {

@@ -211,7 +211,6 @@ namespace qsmpm
            TrilinosWrappers::SparseMatrix  &K,
            const bool                       preconditioner_matrix = true) const;
 
-
     /**
      * m = K_A^{-1} B and G^{-1} of the bodies driven by a force (see the
      * class description), from @p K_A, the matrix add_to() added to, and
@@ -324,11 +323,12 @@ namespace qsmpm
     /// Scratch of add_contact_forces(): one cell's nodal forces.
     mutable std::vector<double> values;
 
-    /// Per body driven by a force, b and beta of the contact stiffness
-    /// add_to() gave the preconditioner's matrix (beta summed over the
-    /// ranks in setup_preconditioner()).
-    mutable std::vector<VectorType> stiffness_shift;
-    mutable std::vector<double>     shift_stiffness;
+    /// Per body driven by a force, b = K_c e_d (the nodal forces of a
+    /// unit shift of the body) and beta = e_d^T K_c e_d of the contact
+    /// stiffness add_to() gave the preconditioner's matrix (beta summed
+    /// over the ranks in setup_preconditioner()).
+    mutable std::vector<VectorType> unit_shift_forces;
+    mutable std::vector<double>     unit_shift_stiffness;
     /// The bodies the correction covers, m = K_A^{-1} b of each, and G^{-1}.
     std::vector<unsigned int> corrected_bodies;
     std::vector<VectorType>   corrections;
