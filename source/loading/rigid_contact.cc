@@ -670,7 +670,12 @@ namespace qsmpm
     if (preconditioner_matrix)
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (bodies[b].load_driven())
-          unit_shift_forces[b].compress(VectorOperation::add);
+          {
+            unit_shift_forces[b].compress(VectorOperation::add);
+            unit_shift_stiffness[b] =
+              Utilities::MPI::sum(unit_shift_stiffness[b],
+                                  K.get_mpi_communicator());
+          }
   }
 
 
@@ -689,15 +694,9 @@ namespace qsmpm
     const auto &bodies = boundary.rigid_bodies();
     if (unit_shift_forces.size() != bodies.size())
       return;
-    const MPI_Comm communicator = K_A.get_mpi_communicator();
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (bodies[b].load_driven())
-        {
-          unit_shift_stiffness[b] =
-            Utilities::MPI::sum(unit_shift_stiffness[b], communicator);
-          if (unit_shift_stiffness[b] > 0.)
-            corrected_bodies.push_back(b);
-        }
+      if (bodies[b].load_driven() && unit_shift_stiffness[b] > 0.)
+        corrected_bodies.push_back(b);
     if (corrected_bodies.empty())
       return;
     // m = K_A^{-1} b, to 1e-10: G = beta - b^T m is a small difference of

@@ -103,12 +103,21 @@ namespace qsmpm
   std::vector<double>
   RigidPlates<dim>::project(const VectorType &du, VectorType &projected) const
   {
-    std::vector<double> mean = means(du);
-    projected                = du;
+    projected = du;
+    return average_plates(projected);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  RigidPlates<dim>::average_plates(VectorType &v) const
+  {
+    std::vector<double> mean = means(v);
     for (unsigned int k = 0; k < dofs.size(); ++k)
       for (const auto dof : dofs[k])
-        projected(dof) = mean[k];
-    projected.compress(VectorOperation::insert);
+        v(dof) = mean[k];
+    v.compress(VectorOperation::insert);
     return mean;
   }
 
@@ -254,11 +263,7 @@ namespace qsmpm
     Assert(has_preconditioner(), ExcInternalError());
     // With the sign of Preconditioner::vmult(): dst solves K z = -src.
     M(dst, src);
-    const std::vector<double> mean = means(dst);
-    for (unsigned int k = 0; k < dofs.size(); ++k)
-      for (const auto dof : dofs[k])
-        dst(dof) = mean[k];
-    dst.compress(VectorOperation::insert);
+    average_plates(dst);
     // The coarse correction: (Phi^T K Phi) c = Phi^T (-src - K z).
     material_vmult(*preconditioner_matrix, scratch, dst);
     scratch += src;

@@ -325,8 +325,8 @@ namespace qsmpm
 
     /// Per body driven by a force, b = K_c e_d (the nodal forces of a
     /// unit shift of the body) and beta = e_d^T K_c e_d of the contact
-    /// stiffness add_to() gave the preconditioner's matrix (beta summed
-    /// over the ranks in setup_preconditioner()).
+    /// stiffness add_to() gave the preconditioner's matrix (both summed
+    /// over the ranks).
     mutable std::vector<VectorType> unit_shift_forces;
     mutable std::vector<double>     unit_shift_stiffness;
     /// The bodies the correction covers, m = K_A^{-1} b of each, and G^{-1}.

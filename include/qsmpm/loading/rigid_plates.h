@@ -179,6 +179,11 @@ namespace qsmpm
     mutable VectorType                    scratch;
     mutable Vector<double>                coarse_rhs, coarse_solution;
 
+    /// Each plate's entries of @p v replaced by their mean (P v), which
+    /// it returns (one per plate). Collective.
+    std::vector<double>
+    average_plates(VectorType &v) const;
+
     /// y = K x, K the material's part of K_A (the plates' diagonal removed).
     void
     material_vmult(const TrilinosWrappers::SparseMatrix &K_A,
