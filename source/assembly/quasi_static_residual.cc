@@ -55,6 +55,8 @@ namespace qsmpm
       add(offsets.volume, 1);
     if (finite_strain)
       add(offsets.deformation_gradient, dim * dim);
+    if (points.get_formulation().axisymmetric)
+      add(offsets.hoop_stress, 1);
     std::sort(sources.begin(), sources.end());
     sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
 
@@ -97,6 +99,9 @@ namespace qsmpm
         own_offsets.deformation_gradient =
           finite_strain ? packed_offset(offsets.deformation_gradient) :
                           numbers::invalid_unsigned_int;
+        own_offsets.hoop_stress = points.get_formulation().axisymmetric ?
+                                    packed_offset(offsets.hoop_stress) :
+                                    numbers::invalid_unsigned_int;
       }
     reinit();
   }
@@ -271,9 +276,11 @@ namespace qsmpm
   QuasiStaticResidual<dim>::loop_kind() const
   {
     LoopKind kind;
-    kind.finite_strain          = points.get_formulation().finite_strain();
-    kind.fbar                   = points.get_formulation().fbar();
-    kind.symmetric_small_strain = !kind.finite_strain && !kind.fbar;
+    kind.finite_strain = points.get_formulation().finite_strain();
+    kind.fbar          = points.get_formulation().fbar();
+    kind.axisymmetric  = points.get_formulation().axisymmetric;
+    kind.symmetric_small_strain =
+      !kind.finite_strain && !kind.fbar && !kind.axisymmetric;
     kind.vertex_stencil =
       cache.stencil_size() == GeometryInfo<dim>::vertices_per_cell;
     return kind;
@@ -303,7 +310,10 @@ namespace qsmpm
           du_cell[i] = du_values[dofs[i]];
         const auto              &range = cache.cell(c);
         const AffineQ1Cell<dim> *affine =
-          kind.vertex_stencil ? cache.affine_cell(c) : nullptr;
+          (kind.vertex_stencil && !kind.axisymmetric) ? cache.affine_cell(c) :
+                                                        nullptr;
+        if (kind.axisymmetric)
+          cell_hoop_increments(du_cell, c);
         if (affine && kind.symmetric_small_strain)
           affine_cell_kinematics<true>(*affine, du_cell, range);
         else if (affine)
@@ -358,6 +368,8 @@ namespace qsmpm
                                                n_points);
     if (kind.finite_strain)
       finite_strain_stresses<write_back>(old, first, result);
+    else if (kind.axisymmetric)
+      axisymmetric_stresses<write_back>(old, first, result);
     else
       small_strain_stresses<write_back>(old, first, result);
 
@@ -404,8 +416,11 @@ namespace qsmpm
         const auto              &range  = cache.cell(c);
         const unsigned int       n_dofs = cache.n_dofs(c);
         const AffineQ1Cell<dim> *affine =
-          kind.vertex_stencil ? cache.affine_cell(c) : nullptr;
+          (kind.vertex_stencil && !kind.axisymmetric) ? cache.affine_cell(c) :
+                                                        nullptr;
         std::fill(f_cell, f_cell + n_dofs, 0.);
+        if (kind.axisymmetric)
+          add_hoop_forces(c, f_cell);
         if (affine && kind.symmetric_small_strain)
           add_affine_symmetric_forces(*affine, range, f_cell);
         else if (affine)
@@ -649,6 +664,113 @@ namespace qsmpm
               for (unsigned int b = 0; b < dim; ++b)
                 scratch.force_stress[i][a][b] =
                   volume * scratch.stress[i][a][b];
+          }
+      }
+    result.minimum_volume_ratio = min_J;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticResidual<dim>::cell_hoop_increments(const double      *du_cell,
+                                                 const unsigned int c) const
+  {
+    // d eps_thetatheta = d u_r / r = sum_k N_k(x_p) du_k,r / r_p, with r_p
+    // the point's radius at the start of the step (the grid's x).
+    const auto                           &range = cache.cell(c);
+    typename ShapeCache<dim>::ValueBuffer buffer;
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const double         *N       = cache.values(c, p, buffer);
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = cache.stencil_size(p);
+        double                u_r     = 0.;
+        for (unsigned int k = 0; k < stencil; ++k)
+          u_r += N[k] * du_cell[nodes[k] * dim];
+        scratch.hoop_increment[p - scratch.block_first] =
+          u_r / cache.position(p)[0];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticResidual<dim>::add_hoop_forces(const unsigned int c,
+                                            double            *f_cell) const
+  {
+    const auto                           &range = cache.cell(c);
+    typename ShapeCache<dim>::ValueBuffer buffer;
+    for (unsigned int p = range.first_point; p < range.end_point; ++p)
+      {
+        const double         *N       = cache.values(c, p, buffer);
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = cache.stencil_size(p);
+        const double          f = scratch.hoop_force[p - scratch.block_first];
+        for (unsigned int k = 0; k < stencil; ++k)
+          f_cell[nodes[k] * dim] -= f * N[k];
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::axisymmetric_stresses(
+    const PointStateBatch<dim> &old,
+    const unsigned int          first,
+    Evaluation                 &result) const
+  {
+    const auto        &offsets         = own_offsets;
+    const auto        &written_offsets = points.get_offsets();
+    const unsigned int n_state         = state_layout.n_state;
+    double             min_J           = result.minimum_volume_ratio;
+    for (unsigned int i = 0; i < old.size(); ++i)
+      {
+        const double *data       = committed(first + i);
+        const double  d_eps_hoop = scratch.hoop_increment[i];
+        model.update_stress_axisymmetric(
+          old[i],
+          data[offsets.hoop_stress],
+          scratch.strain_increment[i],
+          d_eps_hoop,
+          scratch.stress[i],
+          scratch.hoop_stress[i],
+          ArrayView<double>(scratch.state.data() + i * n_state, n_state));
+        // The volume per radian, r dA, changes with the in-plane and the
+        // hoop strain.
+        const double J =
+          (1. + trace(scratch.strain_increment[i]) + d_eps_hoop) *
+          data[offsets.J];
+        const double volume = update_volumes ?
+                                J * data[offsets.initial_volume] :
+                                data[offsets.initial_volume];
+        if (write_back)
+          {
+            double *const out = cache.properties(first + i, writable_points);
+            Utils::write_symmetric<dim>(Utils::read_symmetric<dim>(
+                                          out + written_offsets.strain) +
+                                          scratch.strain_increment[i],
+                                        out + written_offsets.strain);
+            Utils::write_symmetric<dim>(scratch.stress[i],
+                                        out + written_offsets.stress);
+            out[written_offsets.hoop_strain] += d_eps_hoop;
+            out[written_offsets.hoop_stress] = scratch.hoop_stress[i];
+            out[written_offsets.J]           = J;
+            out[written_offsets.volume]      = volume;
+          }
+        else
+          {
+            min_J             = std::min(min_J, J);
+            scratch.volume[i] = volume;
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                scratch.force_stress[i][a][b] =
+                  volume * scratch.stress[i][a][b];
+            scratch.hoop_force[i] =
+              volume * scratch.hoop_stress[i] / cache.position(first + i)[0];
           }
       }
     result.minimum_volume_ratio = min_J;

@@ -216,6 +216,48 @@ namespace qsmpm
      * TangentAssembler::assemble() (192 against 256 per point), and with it
      * the last digits of the paper's compact-tension runs.
      */
+    /**
+     * Axisymmetric (r, z): the terms of the hoop strain d eps_thetatheta =
+     * du_r / r of one point at radius @p r,
+     *
+     *   K_(v,a),(w,b) += Omega [C_tttt N_v N_w / r^2 delta_a0 delta_b0
+     *                    + C_ttkk (N_v / r delta_a0 dN_w/dx_b
+     *                              + dN_v/dx_a N_w / r delta_b0)],
+     *
+     * with the hoop entries of an isotropic tangent taken from the in-plane
+     * one: C_tttt = C_xxxx, C_ttkk = C_xxyy (exact for isotropic
+     * elasticity; a preconditioner's estimate for anisotropic or plastic
+     * tangents, whose hoop entries the in-plane tangent does not hold).
+     */
+    template <int dim>
+    void
+    add_hoop_stiffness(const double         *N,
+                       const Tensor<1, dim> *grad_N,
+                       const unsigned int    stencil,
+                       const unsigned short *nodes,
+                       const Tensor<4, dim> &C,
+                       const double          volume,
+                       const double          r,
+                       FullMatrix<double>   &K_cell)
+    {
+      const double c_hoop = C[0][0][0][0], c_cross = C[0][0][1][1];
+      for (unsigned int v = 0; v < stencil; ++v)
+        for (unsigned int w = 0; w < stencil; ++w)
+          {
+            const unsigned int row = nodes[v] * dim, column = nodes[w] * dim;
+            K_cell(row, column) += volume * c_hoop * N[v] * N[w] / (r * r);
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                K_cell(row, column + b) +=
+                  volume * c_cross * N[v] / r * grad_N[w][b];
+                K_cell(row + b, column) +=
+                  volume * c_cross * grad_N[v][b] * N[w] / r;
+              }
+          }
+    }
+
+
+
     template <int dim>
     void
     add_point_stiffness_factored(const Tensor<1, dim> *grad_N,
@@ -379,6 +421,8 @@ namespace qsmpm
     FullMatrix<double>                       K_cell;
     std::vector<types::global_dof_index>     dofs;
     typename ShapeCache<dim>::GradientBuffer buffer;
+    typename ShapeCache<dim>::ValueBuffer    values;
+    const bool axisymmetric = points.get_formulation().axisymmetric;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const unsigned int n_dofs = cache.n_dofs(c);
@@ -409,6 +453,15 @@ namespace qsmpm
                         K_cell(nodes[v] * dim + a, nodes[w] * dim + b) +=
                           volume * sum;
                       }
+            if (axisymmetric)
+              add_hoop_stiffness(cache.values(c, p, values),
+                                 grad_N,
+                                 stencil,
+                                 nodes,
+                                 C,
+                                 volume,
+                                 cache.position(p)[0],
+                                 K_cell);
           }
         dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + n_dofs);
         constraints.distribute_local_to_global(K_cell, dofs, K);

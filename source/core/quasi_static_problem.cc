@@ -211,12 +211,20 @@ namespace qsmpm
           pore_pressure->set_drained_surface(drained_surface_condition(),
                                              surface_tractions);
       }
-    material_points = std::make_unique<MaterialPointSet<dim>>(
-      background_grid,
-      *model,
-      prm_values.material_points.formulation,
-      bcs.surface_tractions().size(),
-      rigid_body_names());
+    const Formulation &formulation = prm_values.material_points.formulation;
+    AssertThrow(!formulation.axisymmetric ||
+                  !(pore_fluid.enabled || body_contact.enabled()),
+                ExcMessage("Material points: <Axisymmetric = true> is not "
+                           "available with a pore fluid or contact between "
+                           "bodies."));
+    material_points =
+      std::make_unique<MaterialPointSet<dim>>(background_grid,
+                                              *model,
+                                              formulation,
+                                              bcs.surface_tractions().size(),
+                                              rigid_body_names());
+    external_force.set_axisymmetric(formulation.axisymmetric);
+    audit.set_axisymmetric(formulation.axisymmetric);
   }
 
 

@@ -154,7 +154,8 @@ namespace qsmpm
           held_nodes,
           lower + 0.5 * (upper - lower),
           lower.distance(upper),
-          communicator);
+          communicator,
+          points.get_formulation().axisymmetric);
       }
 
     // Where two bodies press on each other, their fields are tied (after

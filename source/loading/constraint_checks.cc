@@ -126,10 +126,20 @@ namespace qsmpm
       const std::vector<std::pair<Point<dim>, unsigned int>> &held,
       const Point<dim>                                       &centre,
       const double                                            length,
-      const MPI_Comm                                          communicator)
+      const MPI_Comm                                          communicator,
+      const bool                                              axisymmetric)
     {
-      const auto free =
-        free_rigid_body_motions<dim>(held, centre, length, communicator);
+      std::vector<std::string> free;
+      if (axisymmetric)
+        {
+          unsigned int axial = 0;
+          for (const auto &entry : held)
+            axial += (entry.second == 1 ? 1 : 0);
+          if (Utilities::MPI::sum(axial, communicator) == 0)
+            free.push_back(mode_name<dim>(1) + " (along the axis)");
+        }
+      else
+        free = free_rigid_body_motions<dim>(held, centre, length, communicator);
       if (free.empty())
         return;
       std::string list;
@@ -188,12 +198,14 @@ namespace qsmpm
       const std::vector<std::pair<Point<2>, unsigned int>> &,
       const Point<2> &,
       const double,
-      const MPI_Comm);
+      const MPI_Comm,
+      const bool);
     template void
     assert_no_rigid_body_motion<3>(
       const std::vector<std::pair<Point<3>, unsigned int>> &,
       const Point<3> &,
       const double,
-      const MPI_Comm);
+      const MPI_Comm,
+      const bool);
   } // namespace ConstraintChecks
 } // namespace qsmpm

@@ -146,6 +146,15 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  EquilibriumAudit<dim>::set_axisymmetric(const bool value)
+  {
+    axisymmetric = value;
+  }
+
+
+
+  template <int dim>
   typename EquilibriumAudit<dim>::Result
   EquilibriumAudit<dim>::evaluate(
     const BackgroundGrid<dim>           &grid,
@@ -224,6 +233,13 @@ namespace qsmpm
     // zero, their forces added to their masters' rows.
     result.internal =
       result.applied + result.supports + result.held + result.free_residual;
+    if (axisymmetric)
+      for (Tensor<1, dim> *term : {&result.applied,
+                                   &result.supports,
+                                   &result.held,
+                                   &result.held_load,
+                                   &result.internal})
+        (*term)[0] = 0.;
 
     // Supports whose forces balance each other (a body whose every node
     // is prescribed) have a resultant of round-off size: measured against

@@ -17,6 +17,15 @@ namespace qsmpm
 
   template <int dim>
   void
+  ExternalForceAssembler<dim>::set_axisymmetric(const bool value)
+  {
+    axisymmetric = value;
+  }
+
+
+
+  template <int dim>
+  void
   ExternalForceAssembler<dim>::assemble(
     const BackgroundGrid<dim>     &grid,
     const ShapeCache<dim>         &cache,
@@ -105,15 +114,17 @@ namespace qsmpm
                 std::fill(cell_force.begin(), cell_force.end(), 0.);
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   {
-                    function->vector_value(fe_face.quadrature_point(q),
-                                           traction);
+                    const Point<dim> &x = fe_face.quadrature_point(q);
+                    function->vector_value(x, traction);
+                    // Axisymmetric: the face's area per radian is r dGamma.
+                    const double JxW =
+                      fe_face.JxW(q) * (axisymmetric ? x[0] : 1.);
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
                         const unsigned int c =
                           grid.get_fe().system_to_component_index(i).first;
-                        cell_force[i] += traction[c] *
-                                         fe_face.shape_value(i, q) *
-                                         fe_face.JxW(q);
+                        cell_force[i] +=
+                          traction[c] * fe_face.shape_value(i, q) * JxW;
                       }
                   }
                 cell->get_dof_indices(dofs);

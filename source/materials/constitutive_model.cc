@@ -235,6 +235,36 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  ConstitutiveModel<dim>::supports_axisymmetry() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::update_stress_axisymmetric(
+    const PointState<dim> &,
+    const double,
+    const SymmetricTensor<2, dim> &,
+    const double,
+    SymmetricTensor<2, dim> &,
+    double &,
+    ArrayView<double>) const
+  {
+    AssertThrow(false,
+                ExcMessage("The constitutive model <" + name() +
+                           "> does not support Material points/Axisymmetric "
+                           "= true; choose linear elastic or a plasticity "
+                           "model (von Mises, Drucker-Prager, Mohr-Coulomb, "
+                           "modified Cam clay)."));
+  }
+
+
+
+  template <int dim>
   void
   ConstitutiveModel<dim>::update_kirchhoff_stress(
     const PointState<dim> &,

@@ -417,6 +417,44 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  IsotropicPlasticity<dim>::supports_axisymmetry() const
+  {
+    return dim == 2;
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::update_stress_axisymmetric(
+    const PointState<dim> &old,
+    const double,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    double                        &hoop_stress,
+    ArrayView<double>              new_state) const
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Material points/Axisymmetric needs dim = 2."));
+    SymmetricTensor<2, 3> increment = embed(strain_increment);
+    increment[2][2]                 = hoop_strain_increment;
+    Return r;
+    return_map(elastic_strain(old.state) + increment,
+               equivalent_plastic_strain(old.state),
+               false,
+               r);
+    stress      = extract(r.stress);
+    hoop_stress = r.stress[2][2];
+    Utils::write_symmetric<3>(r.elastic_strain, new_state.data() + eps_offset);
+    new_state[alpha_offset]     = r.alpha;
+    new_state[increment_offset] = r.increment;
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   IsotropicPlasticity<dim>::tangent(const PointState<dim> &old) const
   {

@@ -45,7 +45,41 @@ namespace qsmpm
     : C(isotropic_stiffness(young_modulus, poisson_ratio, plane_stress))
     , lambda(C[0][0][1][1])
     , two_mu(2. * C[0][1][0][1])
+    , is_plane_stress(dim == 2 && plane_stress)
   {
+  }
+
+
+
+  template <int dim>
+  bool
+  LinearElastic<dim>::supports_axisymmetry() const
+  {
+    return dim == 2 && !is_plane_stress;
+  }
+
+
+
+  template <int dim>
+  void
+  LinearElastic<dim>::update_stress_axisymmetric(
+    const PointState<dim>         &old,
+    const double                   old_hoop_stress,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    double                        &hoop_stress,
+    ArrayView<double>) const
+  {
+    AssertThrow(supports_axisymmetry(),
+                ExcMessage("linear elastic: <Plane stress = true> and "
+                           "Material points/Axisymmetric = true exclude each "
+                           "other."));
+    const double volumetric =
+      lambda * (trace(strain_increment) + hoop_strain_increment);
+    stress = old.stress + two_mu * strain_increment +
+             volumetric * unit_symmetric_tensor<dim>();
+    hoop_stress = old_hoop_stress + volumetric + two_mu * hoop_strain_increment;
   }
 
 

@@ -328,6 +328,34 @@ namespace qsmpm
 
 
   template <int dim>
+  void
+  MaterialMap<dim>::update_stress_axisymmetric(
+    const PointState<dim>         &old,
+    const double                   old_hoop_stress,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    double                        &hoop_stress,
+    ArrayView<double>              new_state) const
+  {
+    update(old,
+           new_state,
+           [&](const ConstitutiveModel<dim> &model,
+               const PointState<dim>        &own,
+               const ArrayView<double>      &own_new) {
+             model.update_stress_axisymmetric(own,
+                                              old_hoop_stress,
+                                              strain_increment,
+                                              hoop_strain_increment,
+                                              stress,
+                                              hoop_stress,
+                                              own_new);
+           });
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   MaterialMap<dim>::tangent(const PointState<dim> &old) const
   {
@@ -439,6 +467,18 @@ namespace qsmpm
     return !ordered.empty() &&
            std::all_of(ordered.begin(), ordered.end(), [](const auto &entry) {
              return entry.second->model->supports_finite_strain();
+           });
+  }
+
+
+
+  template <int dim>
+  bool
+  MaterialMap<dim>::supports_axisymmetry() const
+  {
+    return !ordered.empty() &&
+           std::all_of(ordered.begin(), ordered.end(), [](const auto &entry) {
+             return entry.second->model->supports_axisymmetry();
            });
   }
 

@@ -113,6 +113,19 @@ namespace qsmpm
         "first step: what it does not balance moves the body. Empty: the "
         "model's own (zero, or -p0 I for Modified Cam Clay).",
         Patterns::Anything());
+      prm.add_parameter(
+        "Axisymmetric",
+        formulation.axisymmetric,
+        "2D only: axisymmetric (r, z) kinematics, x the radius r >= 0 and y "
+        "the axis z. Volumes, forces and reactions are per radian (times "
+        "2 pi for the whole ring), the strain has the hoop component u_r / r "
+        "and the stress sigma_thetatheta (the points' fields hoop_strain and "
+        "hoop_stress). Small strain, linear shape functions, Volumetric "
+        "locking = none; models: linear elastic (not plane stress) and the "
+        "plasticity models (von Mises, Drucker-Prager, Mohr-Coulomb, "
+        "modified Cam clay). Hold u_r = 0 on the axis r = 0 if the body "
+        "reaches it.",
+        Patterns::Bool());
       prm.add_parameter("Update volumes",
                         update_volumes,
                         "Update point volumes with J (paper eqs. 2.23-2.24). "
@@ -249,6 +262,18 @@ namespace qsmpm
                 ExcMessage("Material points: <Update volumes = false> "
                            "(a geometrically linear model) contradicts "
                            "<Kinematics = finite strain>."));
+    AssertThrow(!formulation.axisymmetric ||
+                  (dim == 2 && !formulation.finite_strain() &&
+                   !formulation.gimp() && !formulation.fbar()),
+                ExcMessage("Material points: <Axisymmetric = true> needs a "
+                           "2D grid, Kinematics = small strain, Shape "
+                           "functions = linear and Volumetric locking = "
+                           "none."));
+    AssertThrow(!formulation.axisymmetric ||
+                  (ghost_penalty == 0. && min_nodal_volume_fraction == 0.),
+                ExcMessage("Material points: <Axisymmetric = true> is not "
+                           "available with <Ghost penalty> or <Minimum nodal "
+                           "volume> above 0."));
     if (restrict_to_box())
       region();
   }
@@ -272,6 +297,23 @@ namespace qsmpm
                            model.name() +
                            "> is small-strain only. Finite-strain models: "
                            "hencky, neo-Hookean, von Mises, Drucker-Prager."));
+    AssertThrow(!formulation.axisymmetric || model.supports_axisymmetry(),
+                ExcMessage("Material points: Axisymmetric = true, but the "
+                           "constitutive model <" +
+                           model.name() +
+                           "> has no axisymmetric update. Models that have "
+                           "one: linear elastic (plane strain), von Mises, "
+                           "Drucker-Prager, Mohr-Coulomb, modified Cam "
+                           "clay."));
+    AssertThrow(!formulation.axisymmetric ||
+                  (n_surface_loads == 0 && contact_bodies.empty()),
+                ExcMessage("Material points: <Axisymmetric = true> is not "
+                           "available with tractions on the body's surface or "
+                           "rigid bodies (tractions on grid faces, plates and "
+                           "displacement conditions are)."));
+    AssertThrow(!formulation.axisymmetric || grid.lower_corner()[0] >= 0.,
+                ExcMessage("Material points: Axisymmetric = true, but the "
+                           "grid reaches x = r < 0; the axis is x = 0."));
     using Kind               = PropertyLayout::Kind;
     const unsigned int n_sym = Utils::n_symmetric_components<dim>;
     offsets.initial_volume   = layout.add("initial_volume", 1, Kind::scalar);
@@ -284,6 +326,11 @@ namespace qsmpm
     if (formulation.finite_strain())
       offsets.deformation_gradient =
         layout.add("deformation_gradient", dim * dim, Kind::scalar);
+    if (formulation.axisymmetric)
+      {
+        offsets.hoop_strain = layout.add("hoop_strain", 1, Kind::scalar);
+        offsets.hoop_stress = layout.add("hoop_stress", 1, Kind::scalar);
+      }
     if (formulation.gimp())
       offsets.initial_half_length =
         layout.add("initial_half_length", dim, Kind::vector);
@@ -423,11 +470,13 @@ namespace qsmpm
               const Point<dim> x =
                 grid.get_mapping().transform_unit_to_real_cell(
                   cell, reference_points[q]);
+              // Axisymmetric: the volume per radian, r dA.
               if (inside(x))
                 new_points.push_back({cell,
                                       x,
                                       reference_points[q],
-                                      volume * fractions[q],
+                                      volume * fractions[q] *
+                                        (formulation.axisymmetric ? x[0] : 1.),
                                       fractions[q],
                                       0});
             }
@@ -456,7 +505,8 @@ namespace qsmpm
     const unsigned int  n_state = model.n_state_components();
     std::vector<double> initial_states(new_points.size() * n_state);
     std::vector<SymmetricTensor<2, dim>> initial_stresses(new_points.size());
-    std::string                          error;
+    std::vector<double> initial_hoop_stresses(new_points.size(), 0.);
+    std::string         error;
     try
       {
         for (std::size_t i = 0; i < new_points.size(); ++i)
@@ -477,6 +527,8 @@ namespace qsmpm
                                    p.material_id,
                                    initial_stress ? &sigma0 : nullptr,
                                    state);
+            // The out-of-plane entry is the hoop stress.
+            initial_hoop_stresses[i] = sigma0[2][2];
           }
       }
     catch (const std::exception &exc)
@@ -501,6 +553,8 @@ namespace qsmpm
         if (formulation.finite_strain())
           for (unsigned int d = 0; d < dim; ++d)
             properties[offsets.deformation_gradient + d * dim + d] = 1.;
+        if (formulation.axisymmetric)
+          properties[offsets.hoop_stress] = initial_hoop_stresses[i];
         if (formulation.gimp())
           for (unsigned int d = 0; d < dim; ++d)
             properties[offsets.initial_half_length + d] =

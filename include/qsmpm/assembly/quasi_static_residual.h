@@ -185,7 +185,12 @@ namespace qsmpm
       std::vector<typename AffineQ1Cell<dim>::Monomials> monomials;
       std::vector<double>                                volume;
       std::vector<double>                                mean_volume_change;
-      unsigned int                                       block_first = 0;
+      /// Axisymmetric: the hoop strain increments, the trial hoop stresses
+      /// and the points' volume times hoop stress over r.
+      std::vector<double> hoop_increment;
+      std::vector<double> hoop_stress;
+      std::vector<double> hoop_force;
+      unsigned int        block_first = 0;
 
       /// Start the block of @p n_points points from @p first, with
       /// @p n_state state variables each; the arrays only grow.
@@ -204,6 +209,9 @@ namespace qsmpm
             monomials.resize(n_points);
             volume.resize(n_points);
             mean_volume_change.resize(n_points);
+            hoop_increment.resize(n_points);
+            hoop_stress.resize(n_points);
+            hoop_force.resize(n_points);
             state.resize(n_points * n_state);
           }
       }
@@ -216,6 +224,10 @@ namespace qsmpm
       bool fbar;
       /// Small strain without F-bar: sym(grad du) suffices.
       bool symmetric_small_strain;
+      /// Axisymmetric (r, z): the hoop strain from the shape functions'
+      /// values, and its force; the cells' stored or computed gradients
+      /// instead of AffineQ1Cell's monomial form.
+      bool axisymmetric;
       /// Linear shape functions: every point's stencil is the cell's
       /// vertices in their order, known at compile time.
       bool vertex_stencil;
@@ -321,6 +333,33 @@ namespace qsmpm
     template <bool vertex_stencil>
     void
     add_cell_forces(const unsigned int c, double *f_cell) const;
+
+    /**
+     * Axisymmetric: the hoop strain increments d u_r / r of the points of
+     * the cache's cell @p c into Scratch::hoop_increment.
+     */
+    void
+    cell_hoop_increments(const double *du_cell, const unsigned int c) const;
+
+    /**
+     * Axisymmetric: subtract the hoop forces, sum_p Omega_p sigma_thetatheta
+     * N_i(x_p) / r_p in the radial direction, of the points of the cache's
+     * cell @p c (from Scratch::hoop_force) from @p f_cell.
+     */
+    void
+    add_hoop_forces(const unsigned int c, double *f_cell) const;
+
+    /**
+     * Axisymmetric small strain: the points' trial stresses one by one
+     * (ConstitutiveModel::update_stress_axisymmetric()), J and the
+     * volumes, as small_strain_stresses(); commit() also writes the hoop
+     * strain and stress.
+     */
+    template <bool write_back>
+    void
+    axisymmetric_stresses(const PointStateBatch<dim> &old,
+                          const unsigned int          first,
+                          Evaluation                 &result) const;
 
     /**
      * Small strain: from the strain increments in Scratch::strain_increment

@@ -39,7 +39,10 @@ namespace qsmpm
       const MPI_Comm                                          communicator);
 
     /**
-     * Throw with a message naming the free motions if there are any.
+     * Throw with a message naming the free motions if there are any. With
+     * @p axisymmetric (2D, x = r) the only rigid-body motion is the
+     * translation along the axis: the hoop strain u_r / r resists a radial
+     * one, and the plane's rotation is none of the body's.
      */
     template <int dim>
     void
@@ -47,7 +50,8 @@ namespace qsmpm
       const std::vector<std::pair<Point<dim>, unsigned int>> &held,
       const Point<dim>                                       &centre,
       const double                                            length,
-      const MPI_Comm                                          communicator);
+      const MPI_Comm                                          communicator,
+      const bool axisymmetric = false);
 
     /**
      * Throw if the displacement condition @p name prescribes a non-zero

@@ -151,7 +151,19 @@ namespace qsmpm
              const TrilinosWrappers::MPI::Vector &f_ext,
              const double                         reference_scale);
 
+    /**
+     * Axisymmetric (r, z) kinematics: the forces are per radian, and the
+     * radial ones have no resultant to balance (the hoop stresses carry
+     * them: the internal forces' radial sum is sum_p Omega_p
+     * sigma_thetatheta / r_p). The radial components of A, C, H and E are
+     * then left out of the balance; the axial ones and the residual F are
+     * checked as in plane problems, and the reactions keep both.
+     */
+    void
+    set_axisymmetric(const bool axisymmetric);
+
   private:
+    bool axisymmetric = false;
     /// The vector component of each locally owned degree of freedom, made
     /// again when the grid's degrees of freedom change.
     std::vector<unsigned char> component;

@@ -29,6 +29,14 @@ namespace qsmpm
     explicit ExternalForceAssembler(const BoundaryDescriptor<dim> &boundary);
 
     /**
+     * Axisymmetric (r, z) kinematics: the tractions are integrated over
+     * r dGamma, the force per radian (the body force is per radian through
+     * the points' volumes, point loads are taken as given: per radian).
+     */
+    void
+    set_axisymmetric(const bool axisymmetric);
+
+    /**
      * f_ext at load factor @p t. The volume of a point is read at offset
      * @p volume_offset of its properties: the current volume at small
      * strain, the initial one at finite strain, where a body force is per
@@ -58,6 +66,7 @@ namespace qsmpm
                     TrilinosWrappers::MPI::Vector &f_ext) const;
 
     const BoundaryDescriptor<dim> &boundary;
+    bool                           axisymmetric = false;
   };
 } // namespace qsmpm
 

@@ -292,6 +292,33 @@ namespace qsmpm
                       const FiniteStrainKinematics<dim> &kinematics) const;
 
     /**
+     * Whether the model implements update_stress_axisymmetric() (axisymmetric
+     * (r, z) kinematics in 2D, `Material points/Axisymmetric`). False by
+     * default.
+     */
+    virtual bool
+    supports_axisymmetry() const;
+
+    /**
+     * Axisymmetric (r, z) kinematics at small strain: update_stress() with
+     * the hoop strain increment @p hoop_strain_increment = d u_r / r beside
+     * the in-plane increment (r, z as x, y). The model's 3D stress has the
+     * hoop stress sigma_thetatheta where plane strain has sigma_zz: returned
+     * in @p hoop_stress, from the committed @p old_hoop_stress (kept by the
+     * residual on every point, for models that do not keep the
+     * out-of-plane stress in their own state). Pure, like update_stress().
+     * The default throws: the model is plane only.
+     */
+    virtual void
+    update_stress_axisymmetric(const PointState<dim>         &old,
+                               const double                   old_hoop_stress,
+                               const SymmetricTensor<2, dim> &strain_increment,
+                               const double             hoop_strain_increment,
+                               SymmetricTensor<2, dim> &stress,
+                               double                  &hoop_stress,
+                               ArrayView<double>        new_state) const;
+
+    /**
      * Whether the stress is a function of the strain (or deformation)
      * alone, without history: the solver's `auto` settings
      * (NewtonParameters::resolve()) then extrapolate the last step's

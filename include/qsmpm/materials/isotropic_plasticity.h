@@ -156,6 +156,24 @@ namespace qsmpm
                   SymmetricTensor<2, dim>       &stress,
                   ArrayView<double>              new_state) const override;
 
+    /// True in 2D: the hoop strain enters where plane strain has eps_zz.
+    bool
+    supports_axisymmetry() const override;
+
+    /**
+     * update_stress() with eps_zz = @p hoop_strain_increment in the embedded
+     * increment; the hoop stress is the returned sigma_zz (the model keeps
+     * it in its own state, so @p old_hoop_stress is not read).
+     */
+    void
+    update_stress_axisymmetric(const PointState<dim>         &old,
+                               const double                   old_hoop_stress,
+                               const SymmetricTensor<2, dim> &strain_increment,
+                               const double             hoop_strain_increment,
+                               SymmetricTensor<2, dim> &stress,
+                               double                  &hoop_stress,
+                               ArrayView<double> new_state) const override;
+
     /// The elastic D (the preconditioner's tangent; see the class description).
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;

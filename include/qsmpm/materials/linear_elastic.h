@@ -91,6 +91,24 @@ namespace qsmpm
                     ArrayView<SymmetricTensor<2, dim>>       stresses,
                     ArrayView<double> new_states) const override;
 
+    /// True unless plane stress.
+    bool
+    supports_axisymmetry() const override;
+
+    /**
+     * sigma = sigma_old + lambda (tr d_eps + d_eps_hoop) I + 2 mu d_eps,
+     * sigma_hoop = sigma_hoop_old + lambda (tr d_eps + d_eps_hoop) + 2 mu
+     * d_eps_hoop: the 3D law with the hoop direction out of the plane.
+     */
+    void
+    update_stress_axisymmetric(const PointState<dim>         &old,
+                               const double                   old_hoop_stress,
+                               const SymmetricTensor<2, dim> &strain_increment,
+                               const double             hoop_strain_increment,
+                               SymmetricTensor<2, dim> &stress,
+                               double                  &hoop_stress,
+                               ArrayView<double> new_state) const override;
+
     /// The batched update reads the committed stress only.
     typename PointStateBatch<dim>::Fields
     batch_fields() const override;
@@ -135,6 +153,8 @@ namespace qsmpm
     /// chosen): the two constants the batched update uses.
     double lambda;
     double two_mu;
+    /// Plane stress (2D): no out-of-plane strain, so no axisymmetry.
+    bool is_plane_stress;
   };
 } // namespace qsmpm
 

@@ -121,6 +121,19 @@ namespace qsmpm
     bool
     supports_finite_strain() const override;
 
+    /// True if every model supports axisymmetry.
+    bool
+    supports_axisymmetry() const override;
+
+    void
+    update_stress_axisymmetric(const PointState<dim>         &old,
+                               const double                   old_hoop_stress,
+                               const SymmetricTensor<2, dim> &strain_increment,
+                               const double             hoop_strain_increment,
+                               SymmetricTensor<2, dim> &stress,
+                               double                  &hoop_stress,
+                               ArrayView<double> new_state) const override;
+
     void
     update_kirchhoff_stress(const PointState<dim>             &old,
                             const FiniteStrainKinematics<dim> &kinematics,

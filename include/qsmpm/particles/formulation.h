@@ -92,6 +92,14 @@ namespace qsmpm
     Kinematics          kinematics      = Kinematics::small_strain;
     ShapeFunctions      shape_functions = ShapeFunctions::linear;
     VolumetricTreatment volumetric      = VolumetricTreatment::none;
+    /**
+     * 2D only: axisymmetric (r, z) kinematics with x = r >= 0, y = z. The
+     * points' volumes and every force are per radian (volume r dA), and the
+     * strain has the hoop component u_r / r, which the models see where
+     * plane strain has eps_zz (ConstitutiveModel::
+     * update_stress_axisymmetric()).
+     */
+    bool axisymmetric = false;
 
     bool
     fbar() const

@@ -107,6 +107,10 @@ namespace qsmpm
       unsigned int material_id;
       /// Finite strain only: F, dim x dim, row by row (else invalid).
       unsigned int deformation_gradient = numbers::invalid_unsigned_int;
+      /// Axisymmetric only: the hoop strain u_r / r and stress
+      /// sigma_thetatheta (else invalid).
+      unsigned int hoop_strain = numbers::invalid_unsigned_int;
+      unsigned int hoop_stress = numbers::invalid_unsigned_int;
       /// GIMP only: the half-lengths l_d^0 of the point's initial domain.
       unsigned int initial_half_length = numbers::invalid_unsigned_int;
       /// With surface tractions only: per condition, the point's share A_0
