@@ -45,7 +45,7 @@ namespace Footing
   using namespace dealii;
   using namespace qsmpm;
 
-  // The footing is a plane-strain problem.
+  // The footing is a plane-strain or an axisymmetric problem (x = r).
   constexpr int dim = 2;
 
   // @sect3{The problem and its exact limit load}
@@ -72,6 +72,16 @@ namespace Footing
   // soil surface, moved down by the settlement $s$ with their horizontal
   // displacement free (smooth) or held (rough, `Footing surface`). The mean
   // pressure is the vertical reaction of these nodes over $a$.
+  //
+  // With `Material points/Axisymmetric = true` the same grid is the
+  // meridian plane (r, z) of a circular footing of radius $a$, $x = r$ and
+  // the symmetry line the axis. The reactions are per radian, and the mean
+  // pressure is $q = 2\pi F / (\pi a^2) = 2F/a^2$. For a Tresca soil
+  // (Mohr-Coulomb with $\phi = 0$) the limit pressure of a circular punch
+  // comes from the method of characteristics: $q_u = 5.69\,c$ for the
+  // smooth footing (Shield 1955) and $6.05\,c$ for the rough one (Eason
+  // and Shield 1960); a von Mises soil has no such solution in axisymmetry
+  // (its surface is not Tresca's away from plane strain).
   //
   // Plastic flow of a von Mises material conserves volume. A bilinear cell
   // with 2x2 points has more volume constraints than it can satisfy, and the
@@ -202,11 +212,36 @@ namespace Footing
   };
 
   Reference
-  prandtl_reference(ParameterHandler &prm)
+  prandtl_reference(ParameterHandler &prm, const std::string &surface)
   {
     Reference reference;
+    prm.enter_subsection("Material points");
+    const bool axisymmetric = prm.get_bool("Axisymmetric");
+    prm.leave_subsection();
     prm.enter_subsection("Material");
     const std::string model = prm.get("Model");
+    if (axisymmetric)
+      {
+        // The circular footing on a Tresca soil: Mohr-Coulomb with phi = 0.
+        AssertThrow(model == "Mohr-Coulomb",
+                    ExcMessage("Footing: with Material points/Axisymmetric = "
+                               "true the soil must be Mohr-Coulomb with "
+                               "Friction angle = 0 (Tresca), whose circular "
+                               "footing has a known limit pressure."));
+        prm.enter_subsection(model);
+        reference.cohesion = prm.get_double("Cohesion");
+        AssertThrow(prm.get_double("Friction angle") == 0.,
+                    ExcMessage("Footing: with Material points/Axisymmetric = "
+                               "true, Friction angle must be 0 (Tresca)."));
+        prm.leave_subsection();
+        prm.leave_subsection();
+        const bool rough         = surface == "rough";
+        reference.bearing_factor = rough ? 6.05 : 5.69;
+        reference.description =
+          rough ? "circular, rough: Eason & Shield 1960, 6.05 c" :
+                  "circular, smooth: Shield 1955, 5.69 c";
+        return reference;
+      }
     if (model == "von Mises")
       {
         prm.enter_subsection("von Mises");
@@ -529,7 +564,13 @@ namespace Footing
     const double force = footing.footing_model == "rigid body" ?
                            problem.rigid_body_loads().front().force[1] :
                            -problem.reactions()[footing_condition][1];
-    curve.emplace_back(current_settlement, force / footing.half_width);
+    // Axisymmetric: the force per radian of the circle of radius a.
+    const double a = footing.half_width;
+    curve.emplace_back(
+      current_settlement,
+      problem.parameters().material_points.formulation.axisymmetric ?
+        2. * force / (a * a) :
+        force / a);
     return true;
   }
 
@@ -697,7 +738,7 @@ namespace Footing
     AssertThrow(!footing.cells.empty() && !footing.treatments.empty(),
                 ExcMessage("Footing: give at least one grid and one "
                            "treatment."));
-    return prandtl_reference(prm);
+    return prandtl_reference(prm, footing.footing_surface);
   }
 
 
@@ -710,7 +751,7 @@ namespace Footing
   void
   FootingStudy::run()
   {
-    pcout << "Strip footing: c = " << reference.cohesion
+    pcout << "Footing: c = " << reference.cohesion
           << ", exact limit pressure q_u / c = " << std::setprecision(6)
           << reference.bearing_factor << " (" << reference.description << ")"
           << std::endl;
@@ -823,7 +864,7 @@ namespace Footing
     summary.close();
     std::cout << std::setprecision(6)
               << "limit_pressure_over_c = " << reported.limit_pressure_over_c
-              << " (Prandtl " << reference.bearing_factor << ", difference "
+              << " (exact " << reference.bearing_factor << ", difference "
               << std::setprecision(3) << 100. * error << " %";
     if (footing.check)
       std::cout << ", "

@@ -336,7 +336,17 @@ namespace qsmpm
               SymmetricTensor<2, dim> &d_eps =
                 scratch.strain_increment[p - first];
               d_eps = symmetrize(scratch.grad_du[p - first]);
-              if (kind.fbar)
+              if (kind.fbar && kind.axisymmetric)
+                {
+                  // The volume change has three parts, the hoop strain's
+                  // among them: the correction is shared by all three.
+                  double      &hoop = scratch.hoop_increment[p - first];
+                  const double shift =
+                    (mean_volume_change - trace(d_eps) - hoop) / 3.;
+                  d_eps += shift * unit_symmetric_tensor<dim>();
+                  hoop += shift;
+                }
+              else if (kind.fbar)
                 d_eps += (mean_volume_change - trace(d_eps)) / dim *
                          unit_symmetric_tensor<dim>();
             }
@@ -366,7 +376,9 @@ namespace qsmpm
                                                cache.property_arrays(first),
                                                &cache.position(first),
                                                n_points);
-    if (kind.finite_strain)
+    if (kind.finite_strain && kind.axisymmetric)
+      axisymmetric_finite_strain_stresses<write_back>(old, first, result);
+    else if (kind.finite_strain)
       finite_strain_stresses<write_back>(old, first, result);
     else if (kind.axisymmetric)
       axisymmetric_stresses<write_back>(old, first, result);
@@ -707,7 +719,8 @@ namespace qsmpm
         const double         *N       = cache.values(c, p, buffer);
         const unsigned short *nodes   = cache.nodes(p);
         const unsigned int    stencil = cache.stencil_size(p);
-        const double          f = scratch.hoop_force[p - scratch.block_first];
+        const double          f =
+          scratch.hoop_force[p - scratch.block_first] / cache.position(p)[0];
         for (unsigned int k = 0; k < stencil; ++k)
           f_cell[nodes[k] * dim] -= f * N[k];
       }
@@ -769,8 +782,91 @@ namespace qsmpm
               for (unsigned int b = 0; b < dim; ++b)
                 scratch.force_stress[i][a][b] =
                   volume * scratch.stress[i][a][b];
+            scratch.hoop_force[i] = volume * scratch.hoop_stress[i];
+          }
+      }
+    result.minimum_volume_ratio = min_J;
+  }
+
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::axisymmetric_finite_strain_stresses(
+    const PointStateBatch<dim> &old,
+    const unsigned int          first,
+    Evaluation                 &result) const
+  {
+    const auto        &offsets         = own_offsets;
+    const auto        &written_offsets = points.get_offsets();
+    const unsigned int n_state         = state_layout.n_state;
+    const bool         fbar            = points.get_formulation().fbar();
+    double             min_J           = result.minimum_volume_ratio;
+    for (unsigned int i = 0; i < old.size(); ++i)
+      {
+        const double   *data = committed(first + i);
+        Tensor<2, dim> &S    = scratch.force_stress[i];
+        // The step's stretches: in plane Delta F, out of it (hoop) r_{n+1}
+        // / r_n = 1 + d u_r / r_n; their volume change, and with F-bar the
+        // cell's mean shared by the three directions.
+        const Tensor<2, dim> delta_F =
+          unit_symmetric_tensor<dim>() + scratch.grad_du[i];
+        const double hoop_stretch = 1. + scratch.hoop_increment[i];
+        const double det_delta_F  = determinant(delta_F) * hoop_stretch;
+        const double mean         = scratch.mean_volume_change[i];
+        const double scale        = fbar ? std::cbrt(mean / det_delta_F) : 1.;
+        FiniteStrainKinematics<dim> kinematics;
+        kinematics.F_old =
+          Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+        kinematics.delta_F            = scale * delta_F;
+        kinematics.delta_hoop_stretch = scale * hoop_stretch;
+        kinematics.F                  = kinematics.delta_F * kinematics.F_old;
+        if (!(det_delta_F > 0. && hoop_stretch > 0. && (!fbar || mean > 0.)))
+          {
+            S                     = std::numeric_limits<double>::quiet_NaN();
+            scratch.hoop_force[i] = std::numeric_limits<double>::quiet_NaN();
+            continue;
+          }
+        SymmetricTensor<2, dim> tau;
+        double                  tau_hoop;
+        model.update_kirchhoff_stress_axisymmetric(
+          old[i],
+          kinematics,
+          tau,
+          tau_hoop,
+          ArrayView<double>(scratch.state.data() + i * n_state, n_state));
+        // The volume per radian follows the in-plane and the hoop stretch.
+        const double J = data[offsets.J] * (fbar ? mean : det_delta_F);
+        if (write_back)
+          {
+            double *const out = cache.properties(first + i, writable_points);
+            Utils::write_symmetric<dim>(
+              0.5 * TensorFunctions::log(
+                      TensorFunctions::left_cauchy_green(kinematics.F)),
+              out + written_offsets.strain);
+            Utils::write_symmetric<dim>(tau / J, out + written_offsets.stress);
+            Utils::write_tensor<dim>(kinematics.F,
+                                     out +
+                                       written_offsets.deformation_gradient);
+            // The logarithmic hoop strain ln(r / R).
+            out[written_offsets.hoop_strain] +=
+              std::log(kinematics.delta_hoop_stretch);
+            out[written_offsets.hoop_stress] = tau_hoop / J;
+            out[written_offsets.J]           = J;
+            out[written_offsets.volume]      = J * data[offsets.initial_volume];
+          }
+        else
+          {
+            // Omega sigma grad_{n+1} N = Omega_0 tau Delta F^{-T} grad_n N,
+            // and the hoop force Omega sigma_tt N / r_{n+1} = Omega_0 tau_tt
+            // N / (r_n Delta F_tt), both with the point's own Delta F (as
+            // finite_strain_stresses()).
+            S = data[offsets.initial_volume] * Tensor<2, dim>(tau) *
+                transpose(invert(delta_F));
             scratch.hoop_force[i] =
-              volume * scratch.hoop_stress[i] / cache.position(first + i)[0];
+              data[offsets.initial_volume] * tau_hoop / hoop_stretch;
+            min_J = std::min(min_J, det_delta_F * data[offsets.J]);
           }
       }
     result.minimum_volume_ratio = min_J;
@@ -865,16 +961,20 @@ namespace qsmpm
   {
     // Weighted with the volumes at the start of the step: the mean is then
     // the volume change of the cell's material as a whole.
-    const unsigned int volume = own_offsets.volume;
+    const unsigned int volume       = own_offsets.volume;
+    const bool         axisymmetric = points.get_formulation().axisymmetric;
     double             sum = 0., total_volume = 0.;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         const double          omega = committed(p)[volume];
         const Tensor<2, dim> &grad_du =
           scratch.grad_du[p - scratch.block_first];
+        const double hoop =
+          axisymmetric ? scratch.hoop_increment[p - scratch.block_first] : 0.;
         sum += omega * (finite_strain ?
-                          determinant(unit_symmetric_tensor<dim>() + grad_du) :
-                          trace(grad_du));
+                          determinant(unit_symmetric_tensor<dim>() + grad_du) *
+                            (1. + hoop) :
+                          trace(grad_du) + hoop);
         total_volume += omega;
       }
     return sum / total_volume;
@@ -901,21 +1001,34 @@ namespace qsmpm
     // trace: pressures that vary between the points of a cell do no work on
     // the points' own volume changes, which the F-bar kinematics does not
     // let them resist.
-    const unsigned int volume  = own_offsets.volume;
-    double             W       = 0.;
-    double             V_trace = 0.;
+    //
+    // Axisymmetric: the same with the traces and the identity of the three
+    // directions, the hoop one (Scratch::hoop_force, Omega sigma_thetatheta)
+    // among them.
+    const unsigned int volume       = own_offsets.volume;
+    const bool         axisymmetric = points.get_formulation().axisymmetric;
+    const double       n_directions = axisymmetric ? 3. : dim;
+    const auto         trace_of     = [&](const unsigned int i) {
+      return trace(scratch.force_stress[i]) +
+             (axisymmetric ? scratch.hoop_force[i] : 0.);
+    };
+    double W       = 0.;
+    double V_trace = 0.;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
         W += committed(p)[volume];
-        V_trace += trace(scratch.force_stress[p - scratch.block_first]);
+        V_trace += trace_of(p - scratch.block_first);
       }
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        Tensor<2, dim> &S = scratch.force_stress[p - scratch.block_first];
-        const double    shift =
-          (committed(p)[volume] / W * V_trace - trace(S)) / dim;
+        const unsigned int i = p - scratch.block_first;
+        const double       shift =
+          (committed(p)[volume] / W * V_trace - trace_of(i)) / n_directions;
+        Tensor<2, dim> &S = scratch.force_stress[i];
         for (unsigned int a = 0; a < dim; ++a)
           S[a][a] += shift;
+        if (axisymmetric)
+          scratch.hoop_force[i] += shift;
       }
   }
 

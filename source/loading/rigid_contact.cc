@@ -70,8 +70,14 @@ namespace qsmpm
     const bool   finite  = points.get_formulation().finite_strain();
     const bool   gimp    = points.get_formulation().gimp();
     const double h_power = std::pow(h, dim - 1);
-    const auto  &fe      = grid.get_dof_handler().get_fe();
-    dofs_per_cell        = fe.n_dofs_per_cell();
+    // Axisymmetric: the grid's stiffness is per radian, r times that of a
+    // plane problem; the penalty is the plane one at the grid's mid-radius.
+    const bool   axisymmetric = points.get_formulation().axisymmetric;
+    const double radius =
+      axisymmetric ? 0.5 * (grid.lower_corner()[0] + grid.upper_corner()[0]) :
+                     1.;
+    const auto &fe = grid.get_dof_handler().get_fe();
+    dofs_per_cell  = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> cell_dofs(dofs_per_cell);
     const Epetra_BlockMap &ghosted_map = ghosted_layout.trilinos_vector().Map();
     penalty.resize(bodies.size());
@@ -93,7 +99,7 @@ namespace qsmpm
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const RigidBody<dim> &body = bodies[b];
-        penalty[b]    = body.penalty_factor * stiffness_scale / h_power;
+        penalty[b] = body.penalty_factor * stiffness_scale / (radius * h_power);
         load_unit[b]  = body.load_unit();
         load_force[b] = body.force(t_new);
         if (body.load_driven() && b < load_displacements.size())
@@ -121,11 +127,16 @@ namespace qsmpm
             const double    *data = cache->properties(p);
             const Point<dim> x    = cache->position(p);
             // The point's box: half-lengths and its deformation so far.
+            // Axisymmetric: the initial volume is per radian, R dA, with R
+            // the point's initial radius.
+            const double initial_size =
+              axisymmetric ? data[offsets.initial_volume] /
+                               (x[0] - data[offsets.displacement]) :
+                             data[offsets.initial_volume];
             Tensor<1, dim> half;
             for (unsigned int d = 0; d < dim; ++d)
-              half[d] =
-                gimp ? data[offsets.initial_half_length + d] :
-                       0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
+              half[d] = gimp ? data[offsets.initial_half_length + d] :
+                               0.5 * std::pow(initial_size, 1. / dim);
             // With F-bar, the point's own volume change replaces the
             // cell's that F-bar stores: the contact point moves in a step
             // with the grid's motion at it, and the box of the next step

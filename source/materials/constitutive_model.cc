@@ -265,6 +265,35 @@ namespace qsmpm
 
 
   template <int dim>
+  bool
+  ConstitutiveModel<dim>::supports_axisymmetric_finite_strain() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  ConstitutiveModel<dim>::update_kirchhoff_stress_axisymmetric(
+    const PointState<dim> &,
+    const FiniteStrainKinematics<dim> &,
+    SymmetricTensor<2, dim> &,
+    double &,
+    ArrayView<double>) const
+  {
+    AssertThrow(false,
+                ExcMessage("The constitutive model <" + name() +
+                           "> does not support Material points/Axisymmetric "
+                           "= true at finite strain; choose a plasticity "
+                           "model (von Mises, Drucker-Prager, Mohr-Coulomb, "
+                           "modified Cam clay: Hencky elasticity inside the "
+                           "yield surface)."));
+  }
+
+
+
+  template <int dim>
   void
   ConstitutiveModel<dim>::update_kirchhoff_stress(
     const PointState<dim> &,

@@ -498,17 +498,47 @@ namespace qsmpm
     SymmetricTensor<2, dim>           &tau,
     ArrayView<double>                  new_state) const
   {
-    const double J  = determinant(kinematics.F);
-    const double Jd = determinant(kinematics.delta_F);
+    double unused;
+    update_kirchhoff_stress_axisymmetric(
+      old, kinematics, tau, unused, new_state);
+  }
+
+
+
+  template <int dim>
+  bool
+  IsotropicPlasticity<dim>::supports_axisymmetric_finite_strain() const
+  {
+    return dim == 2;
+  }
+
+
+
+  template <int dim>
+  void
+  IsotropicPlasticity<dim>::update_kirchhoff_stress_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    SymmetricTensor<2, dim>           &tau,
+    double                            &tau_hoop,
+    ArrayView<double>                  new_state) const
+  {
+    // Plane strain: the hoop stretch is one, and tau_zz is the
+    // out-of-plane stress.
+    const double J = determinant(kinematics.F);
+    const double Jd =
+      determinant(kinematics.delta_F) * kinematics.delta_hoop_stretch;
     if (!(J > 0.) || !std::isfinite(J) || !(Jd > 0.) || !std::isfinite(Jd))
       {
-        tau = nan_tensor<dim>();
+        tau      = nan_tensor<dim>();
+        tau_hoop = std::numeric_limits<double>::quiet_NaN();
         // Keep the state well defined (a failed trial is not committed).
         for (unsigned int i = 0; i < n_state; ++i)
           new_state[i] = old.state[i];
         return;
       }
-    const Tensor<2, 3>          f = embed(kinematics.delta_F, 1.);
+    const Tensor<2, 3> f =
+      embed(kinematics.delta_F, kinematics.delta_hoop_stretch);
     const SymmetricTensor<2, 3> b_trial =
       push_forward(f, tensor_exp(2. * elastic_strain(old.state)));
     Return r;
@@ -516,7 +546,8 @@ namespace qsmpm
                equivalent_plastic_strain(old.state),
                false,
                r);
-    tau = extract(r.stress);
+    tau      = extract(r.stress);
+    tau_hoop = r.stress[2][2];
     Utils::write_symmetric<3>(r.elastic_strain, new_state.data() + eps_offset);
     new_state[alpha_offset]     = r.alpha;
     new_state[increment_offset] = r.increment;
@@ -530,11 +561,12 @@ namespace qsmpm
     const PointState<dim>             &old,
     const FiniteStrainKinematics<dim> &kinematics) const
   {
-    const Tensor<2, 3>          f = embed(kinematics.delta_F, 1.);
+    const Tensor<2, 3> f =
+      embed(kinematics.delta_F, kinematics.delta_hoop_stretch);
     const SymmetricTensor<2, 3> b_trial =
       push_forward(f, tensor_exp(2. * elastic_strain(old.state)));
     SymmetricTensor<4, 3> D_alg;
-    if (is_identity(kinematics.delta_F))
+    if (is_identity(kinematics.delta_F) && kinematics.delta_hoop_stretch == 1.)
       D_alg = elastic_tangent(elastic_strain(old.state));
     else
       {

@@ -474,6 +474,39 @@ namespace qsmpm
 
   template <int dim>
   bool
+  MaterialMap<dim>::supports_axisymmetric_finite_strain() const
+  {
+    return !ordered.empty() &&
+           std::all_of(ordered.begin(), ordered.end(), [](const auto &entry) {
+             return entry.second->model->supports_axisymmetric_finite_strain();
+           });
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialMap<dim>::update_kirchhoff_stress_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    SymmetricTensor<2, dim>           &tau,
+    double                            &tau_hoop,
+    ArrayView<double>                  new_state) const
+  {
+    update(old,
+           new_state,
+           [&](const ConstitutiveModel<dim> &model,
+               const PointState<dim>        &own,
+               const ArrayView<double>      &own_new) {
+             model.update_kirchhoff_stress_axisymmetric(
+               own, kinematics, tau, tau_hoop, own_new);
+           });
+  }
+
+
+
+  template <int dim>
+  bool
   MaterialMap<dim>::supports_axisymmetry() const
   {
     return !ordered.empty() &&

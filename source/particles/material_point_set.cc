@@ -120,11 +120,13 @@ namespace qsmpm
         "the axis z. Volumes, forces and reactions are per radian (times "
         "2 pi for the whole ring), the strain has the hoop component u_r / r "
         "and the stress sigma_thetatheta (the points' fields hoop_strain and "
-        "hoop_stress). Small strain, linear shape functions, Volumetric "
-        "locking = none; models: linear elastic (not plane stress) and the "
+        "hoop_stress; at finite strain ln(r / R) and the Cauchy hoop "
+        "stress). Linear shape functions, with or without F-bar (the hoop "
+        "strain's share of the volume change included); small strain: "
+        "models linear elastic (not plane stress) and the "
         "plasticity models (von Mises, Drucker-Prager, Mohr-Coulomb, "
-        "modified Cam clay). Hold u_r = 0 on the axis r = 0 if the body "
-        "reaches it.",
+        "modified Cam clay); finite strain: the plasticity models. Hold u_r = "
+        "0 on the axis r = 0 if the body reaches it.",
         Patterns::Bool());
       prm.add_parameter("Update volumes",
                         update_volumes,
@@ -262,13 +264,9 @@ namespace qsmpm
                 ExcMessage("Material points: <Update volumes = false> "
                            "(a geometrically linear model) contradicts "
                            "<Kinematics = finite strain>."));
-    AssertThrow(!formulation.axisymmetric ||
-                  (dim == 2 && !formulation.finite_strain() &&
-                   !formulation.gimp() && !formulation.fbar()),
+    AssertThrow(!formulation.axisymmetric || (dim == 2 && !formulation.gimp()),
                 ExcMessage("Material points: <Axisymmetric = true> needs a "
-                           "2D grid, Kinematics = small strain, Shape "
-                           "functions = linear and Volumetric locking = "
-                           "none."));
+                           "2D grid and Shape functions = linear."));
     AssertThrow(!formulation.axisymmetric ||
                   (ghost_penalty == 0. && min_nodal_volume_fraction == 0.),
                 ExcMessage("Material points: <Axisymmetric = true> is not "
@@ -297,6 +295,16 @@ namespace qsmpm
                            model.name() +
                            "> is small-strain only. Finite-strain models: "
                            "hencky, neo-Hookean, von Mises, Drucker-Prager."));
+    AssertThrow(!formulation.axisymmetric || !formulation.finite_strain() ||
+                  model.supports_axisymmetric_finite_strain(),
+                ExcMessage("Material points: Axisymmetric = true and "
+                           "Kinematics = finite strain, but the constitutive "
+                           "model <" +
+                           model.name() +
+                           "> has no axisymmetric finite-strain update. Models "
+                           "that have one: von Mises, Drucker-Prager, "
+                           "Mohr-Coulomb, modified Cam clay (Hencky "
+                           "elasticity inside the yield surface)."));
     AssertThrow(!formulation.axisymmetric || model.supports_axisymmetry(),
                 ExcMessage("Material points: Axisymmetric = true, but the "
                            "constitutive model <" +
@@ -305,12 +313,10 @@ namespace qsmpm
                            "one: linear elastic (plane strain), von Mises, "
                            "Drucker-Prager, Mohr-Coulomb, modified Cam "
                            "clay."));
-    AssertThrow(!formulation.axisymmetric ||
-                  (n_surface_loads == 0 && contact_bodies.empty()),
+    AssertThrow(!formulation.axisymmetric || n_surface_loads == 0,
                 ExcMessage("Material points: <Axisymmetric = true> is not "
-                           "available with tractions on the body's surface or "
-                           "rigid bodies (tractions on grid faces, plates and "
-                           "displacement conditions are)."));
+                           "available with tractions on the body's surface "
+                           "(tractions on grid faces are)."));
     AssertThrow(!formulation.axisymmetric || grid.lower_corner()[0] >= 0.,
                 ExcMessage("Material points: Axisymmetric = true, but the "
                            "grid reaches x = r < 0; the axis is x = 0."));

@@ -186,7 +186,8 @@ namespace qsmpm
       std::vector<double>                                volume;
       std::vector<double>                                mean_volume_change;
       /// Axisymmetric: the hoop strain increments, the trial hoop stresses
-      /// and the points' volume times hoop stress over r.
+      /// and the points' volume times hoop stress (the hoop force's
+      /// measure, divided by r in add_hoop_forces()).
       std::vector<double> hoop_increment;
       std::vector<double> hoop_stress;
       std::vector<double> hoop_force;
@@ -344,10 +345,25 @@ namespace qsmpm
     /**
      * Axisymmetric: subtract the hoop forces, sum_p Omega_p sigma_thetatheta
      * N_i(x_p) / r_p in the radial direction, of the points of the cache's
-     * cell @p c (from Scratch::hoop_force) from @p f_cell.
+     * cell @p c (from Scratch::hoop_force, with F-bar the projected
+     * measure) from @p f_cell.
      */
     void
     add_hoop_forces(const unsigned int c, double *f_cell) const;
+
+    /**
+     * Axisymmetric finite strain: finite_strain_stresses() with the hoop
+     * stretch 1 + d u_r / r_n of each point (with F-bar the cell's mean
+     * volume change shared by the three directions), the hoop Kirchhoff
+     * stress from ConstitutiveModel::update_kirchhoff_stress_axisymmetric()
+     * and its force; commit() writes the logarithmic hoop strain ln(r / R)
+     * and the hoop Cauchy stress.
+     */
+    template <bool write_back>
+    void
+    axisymmetric_finite_strain_stresses(const PointStateBatch<dim> &old,
+                                        const unsigned int          first,
+                                        Evaluation &result) const;
 
     /**
      * Axisymmetric small strain: the points' trial stresses one by one

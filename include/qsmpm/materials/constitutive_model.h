@@ -319,6 +319,28 @@ namespace qsmpm
                                ArrayView<double>        new_state) const;
 
     /**
+     * Whether the model implements update_kirchhoff_stress_axisymmetric()
+     * (axisymmetric kinematics at finite strain). False by default.
+     */
+    virtual bool
+    supports_axisymmetric_finite_strain() const;
+
+    /**
+     * Axisymmetric kinematics at finite strain: update_kirchhoff_stress()
+     * with the step's hoop stretch kinematics.delta_hoop_stretch where
+     * plane strain has Delta F_zz = 1, and the hoop Kirchhoff stress
+     * tau_thetatheta in @p tau_hoop. kirchhoff_tangent() then takes the
+     * same hoop stretch. The default throws.
+     */
+    virtual void
+    update_kirchhoff_stress_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics,
+      SymmetricTensor<2, dim>           &tau,
+      double                            &tau_hoop,
+      ArrayView<double>                  new_state) const;
+
+    /**
      * Whether the stress is a function of the strain (or deformation)
      * alone, without history: the solver's `auto` settings
      * (NewtonParameters::resolve()) then extrapolate the last step's

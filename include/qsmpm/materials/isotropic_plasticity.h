@@ -174,6 +174,23 @@ namespace qsmpm
                                double                  &hoop_stress,
                                ArrayView<double> new_state) const override;
 
+    /// True in 2D.
+    bool
+    supports_axisymmetric_finite_strain() const override;
+
+    /**
+     * update_kirchhoff_stress() with the hoop stretch of @p kinematics as
+     * the embedded increment's zz entry; tau_thetatheta is the returned
+     * tau_zz.
+     */
+    void
+    update_kirchhoff_stress_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics,
+      SymmetricTensor<2, dim>           &tau,
+      double                            &tau_hoop,
+      ArrayView<double>                  new_state) const override;
+
     /// The elastic D (the preconditioner's tangent; see the class description).
     SymmetricTensor<4, dim>
     tangent(const PointState<dim> &old) const override;

@@ -125,6 +125,18 @@ namespace qsmpm
     bool
     supports_axisymmetry() const override;
 
+    /// True if every model supports axisymmetry at finite strain.
+    bool
+    supports_axisymmetric_finite_strain() const override;
+
+    void
+    update_kirchhoff_stress_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics,
+      SymmetricTensor<2, dim>           &tau,
+      double                            &tau_hoop,
+      ArrayView<double>                  new_state) const override;
+
     void
     update_stress_axisymmetric(const PointState<dim>         &old,
                                const double                   old_hoop_stress,

@@ -39,7 +39,9 @@ namespace qsmpm
    * the start of the step, the increment Delta F = I + grad_n(Delta u)
    * (gradient on the grid, i.e. in the configuration at the start of the
    * step), and F = Delta F F_old. In 2D (plane strain) the out-of-plane
-   * stretch is one and all tensors are 2x2.
+   * stretch is one and all tensors are 2x2; axisymmetric (r, z), the
+   * out-of-plane (hoop) stretch of the step is delta_hoop_stretch =
+   * r_{n+1} / r_n = 1 + d u_r / r_n.
    */
   template <int dim>
   struct FiniteStrainKinematics
@@ -47,6 +49,7 @@ namespace qsmpm
     Tensor<2, dim> F_old;
     Tensor<2, dim> delta_F;
     Tensor<2, dim> F;
+    double         delta_hoop_stretch = 1.;
   };
 } // namespace qsmpm
 

@@ -95,9 +95,10 @@ namespace qsmpm
     /**
      * 2D only: axisymmetric (r, z) kinematics with x = r >= 0, y = z. The
      * points' volumes and every force are per radian (volume r dA), and the
-     * strain has the hoop component u_r / r, which the models see where
-     * plane strain has eps_zz (ConstitutiveModel::
-     * update_stress_axisymmetric()).
+     * strain has the hoop component u_r / r (finite strain: the stretch
+     * r / R), which the models see where plane strain has eps_zz
+     * (ConstitutiveModel::update_stress_axisymmetric(),
+     * update_kirchhoff_stress_axisymmetric()).
      */
     bool axisymmetric = false;
 

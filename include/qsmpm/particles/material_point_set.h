@@ -107,8 +107,9 @@ namespace qsmpm
       unsigned int material_id;
       /// Finite strain only: F, dim x dim, row by row (else invalid).
       unsigned int deformation_gradient = numbers::invalid_unsigned_int;
-      /// Axisymmetric only: the hoop strain u_r / r and stress
-      /// sigma_thetatheta (else invalid).
+      /// Axisymmetric only: the hoop strain (small strain: the sum of the
+      /// steps' d u_r / r; finite strain: ln(r / R)) and the Cauchy hoop
+      /// stress sigma_thetatheta (else invalid).
       unsigned int hoop_strain = numbers::invalid_unsigned_int;
       unsigned int hoop_stress = numbers::invalid_unsigned_int;
       /// GIMP only: the half-lengths l_d^0 of the point's initial domain.
