@@ -8,6 +8,39 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /**
+     * Store a finite-strain point's state of a converged step in its
+     * property array @p out: the logarithmic strain 1/2 ln b (for output),
+     * the Cauchy stress tau / J, F, J and the volume J Omega_0; and the F-bar
+     * excess (own volume change over the cell's mean) if the points keep it.
+     */
+    template <int dim>
+    void
+    write_finite_strain_state(
+      double                                        *out,
+      const typename MaterialPointSet<dim>::Offsets &offsets,
+      const Tensor<2, dim>                          &F,
+      const SymmetricTensor<2, dim>                 &tau,
+      const double                                   J,
+      const double                                   initial_volume,
+      const double                                   volume_change_over_mean)
+    {
+      Utils::write_symmetric<dim>(
+        0.5 * TensorFunctions::log(TensorFunctions::left_cauchy_green(F)),
+        out + offsets.strain);
+      Utils::write_symmetric<dim>(tau / J, out + offsets.stress);
+      Utils::write_tensor<dim>(F, out + offsets.deformation_gradient);
+      out[offsets.J]      = J;
+      out[offsets.volume] = J * initial_volume;
+      if (offsets.fbar_volume_excess != numbers::invalid_unsigned_int)
+        out[offsets.fbar_volume_excess] += std::log(volume_change_over_mean);
+    }
+  } // namespace
+
+
+
   template <int dim>
   QuasiStaticResidual<dim>::QuasiStaticResidual(const BackgroundGrid<dim> &grid,
                                                 MaterialPointSet<dim> &points,
@@ -773,6 +806,14 @@ namespace qsmpm
             out[written_offsets.hoop_stress] = scratch.hoop_stress[i];
             out[written_offsets.J]           = J;
             out[written_offsets.volume]      = volume;
+            // F-bar shifted each of the three directions by the same
+            // amount: the point's own volume change minus the cell's mean
+            // is 3/2 of the in-plane traces' difference.
+            if (written_offsets.fbar_volume_excess !=
+                numbers::invalid_unsigned_int)
+              out[written_offsets.fbar_volume_excess] +=
+                1.5 * (trace(scratch.grad_du[i]) -
+                       trace(scratch.strain_increment[i]));
           }
         else
           {
@@ -841,20 +882,17 @@ namespace qsmpm
         if (write_back)
           {
             double *const out = cache.properties(first + i, writable_points);
-            Utils::write_symmetric<dim>(
-              0.5 * TensorFunctions::log(
-                      TensorFunctions::left_cauchy_green(kinematics.F)),
-              out + written_offsets.strain);
-            Utils::write_symmetric<dim>(tau / J, out + written_offsets.stress);
-            Utils::write_tensor<dim>(kinematics.F,
-                                     out +
-                                       written_offsets.deformation_gradient);
+            write_finite_strain_state<dim>(out,
+                                           written_offsets,
+                                           kinematics.F,
+                                           tau,
+                                           J,
+                                           data[offsets.initial_volume],
+                                           fbar ? det_delta_F / mean : 1.);
             // The logarithmic hoop strain ln(r / R).
             out[written_offsets.hoop_strain] +=
               std::log(kinematics.delta_hoop_stretch);
             out[written_offsets.hoop_stress] = tau_hoop / J;
-            out[written_offsets.J]           = J;
-            out[written_offsets.volume]      = J * data[offsets.initial_volume];
           }
         else
           {
@@ -922,23 +960,14 @@ namespace qsmpm
           ArrayView<double>(scratch.state.data() + i * n_state, n_state));
         if (write_back)
           {
-            double *const out = cache.properties(first + i, writable_points);
-            const double  J   = determinant(kinematics.F);
-            // For output: the logarithmic strain 1/2 ln b.
-            Utils::write_symmetric<dim>(
-              0.5 * TensorFunctions::log(
-                      TensorFunctions::left_cauchy_green(kinematics.F)),
-              out + written_offsets.strain);
-            Utils::write_symmetric<dim>(tau / J, out + written_offsets.stress);
-            Utils::write_tensor<dim>(kinematics.F,
-                                     out +
-                                       written_offsets.deformation_gradient);
-            out[written_offsets.J]      = J;
-            out[written_offsets.volume] = J * data[offsets.initial_volume];
-            if (written_offsets.fbar_volume_excess !=
-                numbers::invalid_unsigned_int)
-              out[written_offsets.fbar_volume_excess] +=
-                std::log(det_delta_F / mean_volume_change);
+            write_finite_strain_state<dim>(
+              cache.properties(first + i, writable_points),
+              written_offsets,
+              kinematics.F,
+              tau,
+              determinant(kinematics.F),
+              data[offsets.initial_volume],
+              fbar ? det_delta_F / mean_volume_change : 1.);
           }
         else
           {

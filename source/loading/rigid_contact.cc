@@ -149,12 +149,14 @@ namespace qsmpm
               offsets.fbar_volume_excess != numbers::invalid_unsigned_int ?
                 data[offsets.fbar_volume_excess] :
                 0.;
+            // Axisymmetric: the excess is shared by the three directions.
+            const double         n_directions = axisymmetric ? 3. : dim;
             const Tensor<2, dim> F =
               finite ?
-                std::exp(excess / dim) *
+                std::exp(excess / n_directions) *
                   Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
                 Tensor<2, dim>(
-                  (1. + excess / dim) * unit_symmetric_tensor<dim>() +
+                  (1. + excess / n_directions) * unit_symmetric_tensor<dim>() +
                   Utils::read_symmetric<dim>(data + offsets.strain));
             for (unsigned int b = 0; b < bodies.size(); ++b)
               {
