@@ -722,19 +722,24 @@ namespace qsmpm
                                                  const unsigned int c) const
   {
     // d eps_thetatheta = d u_r / r = sum_k N_k(x_p) du_k,r / r_p, with r_p
-    // the point's radius at the start of the step (the grid's x).
-    const auto                           &range = cache.cell(c);
+    // the point's radius at the start of the step (the grid's x). Linear
+    // shape functions only (MaterialPointSet checks): the stencil is the
+    // cell's vertices in their order.
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const auto            &range      = cache.cell(c);
     typename ShapeCache<dim>::ValueBuffer buffer;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const double         *N       = cache.values(c, p, buffer);
-        const unsigned short *nodes   = cache.nodes(p);
-        const unsigned int    stencil = cache.stencil_size(p);
-        double                u_r     = 0.;
-        for (unsigned int k = 0; k < stencil; ++k)
-          u_r += N[k] * du_cell[nodes[k] * dim];
-        scratch.hoop_increment[p - scratch.block_first] =
-          u_r / cache.position(p)[0];
+        const unsigned int i   = p - scratch.block_first;
+        const double      *N   = cache.values(c, p, buffer);
+        const double       r   = cache.position(p)[0];
+        double             u_r = 0.;
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          {
+            scratch.hoop_values[i][k] = N[k] / r;
+            u_r += N[k] * du_cell[k * dim];
+          }
+        scratch.hoop_increment[i] = u_r / r;
       }
   }
 
@@ -745,17 +750,13 @@ namespace qsmpm
   QuasiStaticResidual<dim>::add_hoop_forces(const unsigned int c,
                                             double            *f_cell) const
   {
-    const auto                           &range = cache.cell(c);
-    typename ShapeCache<dim>::ValueBuffer buffer;
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const auto            &range      = cache.cell(c);
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const double         *N       = cache.values(c, p, buffer);
-        const unsigned short *nodes   = cache.nodes(p);
-        const unsigned int    stencil = cache.stencil_size(p);
-        const double          f =
-          scratch.hoop_force[p - scratch.block_first] / cache.position(p)[0];
-        for (unsigned int k = 0; k < stencil; ++k)
-          f_cell[nodes[k] * dim] -= f * N[k];
+        const unsigned int i = p - scratch.block_first;
+        for (unsigned int k = 0; k < n_vertices; ++k)
+          f_cell[k * dim] -= scratch.hoop_force[i] * scratch.hoop_values[i][k];
       }
   }
 

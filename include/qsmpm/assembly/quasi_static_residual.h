@@ -4,6 +4,7 @@
 #include <Epetra_Export.h>
 #include <Epetra_Import.h>
 #include <Epetra_Vector.h>
+#include <array>
 #include <deal.II/lac/trilinos_vector.h>
 #include <limits>
 #include <memory>
@@ -185,9 +186,13 @@ namespace qsmpm
       std::vector<typename AffineQ1Cell<dim>::Monomials> monomials;
       std::vector<double>                                volume;
       std::vector<double>                                mean_volume_change;
-      /// Axisymmetric: the hoop strain increments, the trial hoop stresses
-      /// and the points' volume times hoop stress (the hoop force's
-      /// measure, divided by r in add_hoop_forces()).
+      /// Axisymmetric: the points' shape-function values N_k(x_p) over
+      /// their radius r_p (linear functions: the cell's vertices), once
+      /// for the hoop strain and its force; the hoop strain increments,
+      /// the trial hoop stresses and the points' volume times hoop stress
+      /// (the hoop force's measure).
+      std::vector<std::array<double, GeometryInfo<dim>::vertices_per_cell>>
+                          hoop_values;
       std::vector<double> hoop_increment;
       std::vector<double> hoop_stress;
       std::vector<double> hoop_force;
@@ -210,6 +215,7 @@ namespace qsmpm
             monomials.resize(n_points);
             volume.resize(n_points);
             mean_volume_change.resize(n_points);
+            hoop_values.resize(n_points);
             hoop_increment.resize(n_points);
             hoop_stress.resize(n_points);
             hoop_force.resize(n_points);
@@ -337,7 +343,8 @@ namespace qsmpm
 
     /**
      * Axisymmetric: the hoop strain increments d u_r / r of the points of
-     * the cache's cell @p c into Scratch::hoop_increment.
+     * the cache's cell @p c into Scratch::hoop_increment, and the values
+     * N_k / r they come from into Scratch::hoop_values.
      */
     void
     cell_hoop_increments(const double *du_cell, const unsigned int c) const;
@@ -346,7 +353,7 @@ namespace qsmpm
      * Axisymmetric: subtract the hoop forces, sum_p Omega_p sigma_thetatheta
      * N_i(x_p) / r_p in the radial direction, of the points of the cache's
      * cell @p c (from Scratch::hoop_force, with F-bar the projected
-     * measure) from @p f_cell.
+     * measure, and Scratch::hoop_values) from @p f_cell.
      */
     void
     add_hoop_forces(const unsigned int c, double *f_cell) const;
