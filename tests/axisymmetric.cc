@@ -192,8 +192,11 @@ namespace
     unsigned int              steps = 0, newton = 0, gmres = 0;
   };
 
-  Run
-  run(const std::string &text)
+  // The driver's route: the .prm text parsed, the problem initialized from
+  // it and run; @p inspect then reads the finished problem.
+  template <typename Inspect>
+  void
+  run_and_inspect(const std::string &text, const Inspect &inspect)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
@@ -203,28 +206,38 @@ namespace
     problem.pcout().set_condition(false);
     problem.initialize(prm);
     problem.run();
+    inspect(problem);
+  }
+
+
+
+  Run
+  run(const std::string &text)
+  {
     Run result;
-    for (const auto &report : problem.step_reports())
-      {
-        ++result.steps;
-        result.newton += report.newton.newton_iterations;
-        result.gmres += report.newton.linear_iterations;
-      }
-    const auto &offsets = problem.points().get_offsets();
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const auto  data = particle.get_properties();
-        PointRecord p;
-        for (unsigned int d = 0; d < 2; ++d)
-          p.u[d] = data[offsets.displacement + d];
-        p.X           = particle.get_location() - p.u;
-        p.stress      = qsmpm::Utils::read_symmetric<2>(&data[offsets.stress]);
-        p.hoop_stress = data[offsets.hoop_stress];
-        p.hoop_strain = data[offsets.hoop_strain];
-        p.volume      = data[offsets.volume];
-        result.points.push_back(p);
-      }
-    result.reactions = problem.reactions();
+    run_and_inspect(text, [&](const QuasiStaticProblem<2> &problem) {
+      for (const auto &report : problem.step_reports())
+        {
+          ++result.steps;
+          result.newton += report.newton.newton_iterations;
+          result.gmres += report.newton.linear_iterations;
+        }
+      const auto &offsets = problem.points().get_offsets();
+      for (const auto &particle : problem.points().get_particle_handler())
+        {
+          const auto  data = particle.get_properties();
+          PointRecord p;
+          for (unsigned int d = 0; d < 2; ++d)
+            p.u[d] = data[offsets.displacement + d];
+          p.X      = particle.get_location() - p.u;
+          p.stress = qsmpm::Utils::read_symmetric<2>(&data[offsets.stress]);
+          p.hoop_stress = data[offsets.hoop_stress];
+          p.hoop_strain = data[offsets.hoop_strain];
+          p.volume      = data[offsets.volume];
+          result.points.push_back(p);
+        }
+      result.reactions = problem.reactions();
+    });
     return result;
   }
 
@@ -628,34 +641,28 @@ main(int argc, char **argv)
          << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
          << "subsection Output\n  set Interval = 0\n"
          << "  set Directory = axisymmetric-out\nend\n";
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
-    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
-    problem.run();
     const double M = lambda + 2 * mu, d = 0.01;
     const double sigma_zz = -M * d, sigma_rr = -lambda * d;
-    const auto  &offsets = problem.points().get_offsets();
-    double       error   = 0.;
-    for (const auto &particle : problem.points().get_particle_handler())
-      if (particle.get_location()[1] < 0.875)
-        {
-          const auto data = particle.get_properties();
-          const auto sigma =
-            qsmpm::Utils::read_symmetric<2>(&data[offsets.stress]);
-          error = std::max({error,
-                            std::abs(sigma[1][1] - sigma_zz),
-                            std::abs(sigma[0][0] - sigma_rr),
-                            std::abs(data[offsets.hoop_stress] - sigma_rr)});
-        }
+    double       error = 0., force = 0., base = 0.;
+    run_and_inspect(text.str(), [&](const QuasiStaticProblem<2> &problem) {
+      const auto &offsets = problem.points().get_offsets();
+      for (const auto &particle : problem.points().get_particle_handler())
+        if (particle.get_location()[1] < 0.875)
+          {
+            const auto data = particle.get_properties();
+            const auto sigma =
+              qsmpm::Utils::read_symmetric<2>(&data[offsets.stress]);
+            error = std::max({error,
+                              std::abs(sigma[1][1] - sigma_zz),
+                              std::abs(sigma[0][0] - sigma_rr),
+                              std::abs(data[offsets.hoop_stress] - sigma_rr)});
+          }
+      force = problem.rigid_body_loads().at(0).force[1];
+      base  = problem.reactions().at(2)[1];
+    });
     error                    = max_over_ranks(error) / std::abs(sigma_zz);
-    const double force       = problem.rigid_body_loads().at(0).force[1];
     const double force_error = std::abs(force + sigma_zz / 2.) / -sigma_zz;
-    const double balance =
-      std::abs(force - problem.reactions().at(2)[1]) / -sigma_zz;
+    const double balance     = std::abs(force - base) / -sigma_zz;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cout << "plate: stress error " << error << ", force error "
                 << force_error << ", balance " << balance << std::endl;
@@ -694,16 +701,12 @@ main(int argc, char **argv)
            << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
            << "subsection Output\n  set Interval = 0\n"
            << "  set Directory = axisymmetric-out\nend\n";
-      ParameterHandler prm;
-      prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-      QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-      prm.parse_input_from_string(text.str());
-      QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-      problem.pcout().set_condition(false);
-      problem.initialize(prm);
-      problem.run();
-      const double force = problem.rigid_body_loads().at(0).force[1];
-      return std::make_pair(force, problem.reactions().at(2)[1]);
+      std::pair<double, double> forces;
+      run_and_inspect(text.str(), [&](const QuasiStaticProblem<2> &problem) {
+        forces = {problem.rigid_body_loads().at(0).force[1],
+                  problem.reactions().at(2)[1]};
+      });
+      return forces;
     };
     const double alpha = 80. * numbers::PI / 180., d = 0.14;
     const double sneddon = 2. / numbers::PI * E / (1. - nu * nu) *
