@@ -117,6 +117,20 @@
 // 7. Bad input: axisymmetry with a grid reaching r < 0, with a model that
 //    has no axisymmetric update (cubic elastic), and with one that has none
 //    at finite strain (hencky), stop with a message naming the entry.
+// 8. GIMP shape functions (`Shape functions = uGIMP, cpGIMP`): a point's
+//    weights are the averages of the linear functions over its domain,
+//    and its hoop strain sum_k N_k du_k,r / r_p is then the exact average
+//    of u_r / r over its ring (volume r_p A_p). The patch test of part 1
+//    (exact in the grid's space: 1e-8); Lame's cylinder in one step, where
+//    every domain lies in its point's cell and GIMP is the linear
+//    functions' point rule (the errors of part 2 to 1e-6: the stencil of
+//    3 x 3 nodes and its hoop terms give the vertex stencil's sums); the
+//    finite-strain compression of part 5 on a grid reaching r = 1.25,
+//    where the points move outwards by 6 % and their growing domains
+//    cross the cells' faces (a homogeneous state, exact to 1e-8: a hoop
+//    strain read from the wrong nodes of the stencil fails here), with
+//    F-bar also with `Ghost penalty = 1e-4` (which vanishes for linear
+//    fields); and the cone of part 6b with cpGIMP (the same bounds).
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -261,6 +275,165 @@ namespace
     return Utilities::MPI::max(x, MPI_COMM_WORLD);
   }
 
+  /// Part 1 (and 8 with GIMP): the solid cylinder under a radial pressure,
+  /// with @p shape_functions.
+  void
+  patch_test(const std::string &shape_functions)
+  {
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    const double mu     = E / (2 * (1 + nu));
+    const Run    r =
+      run(prm_text("  set Lower corner = 0,0\n"
+                   "  set Upper corner = 1,1\n",
+                   "4,4",
+                   elastic(),
+                   "0:x, 2:y, 3:y",
+                   "0; 0",
+                   "1:-t; 0",
+                   1,
+                   "  set Shape functions = " + shape_functions + "\n"));
+    const double eps          = -1. / (2 * (lambda + mu));
+    double       stress_error = 0., u_error = 0.;
+    for (const auto &q : r.points)
+      {
+        stress_error = std::max({stress_error,
+                                 std::abs(q.stress[0][0] + 1.),
+                                 std::abs(q.hoop_stress + 1.),
+                                 std::abs(q.stress[1][1] + 2 * nu),
+                                 std::abs(q.stress[0][1])});
+        u_error      = std::max(
+          {u_error, std::abs(q.u[0] - eps * q.X[0]), std::abs(q.u[1])});
+      }
+    stress_error = max_over_ranks(stress_error);
+    u_error      = max_over_ranks(u_error) / std::abs(eps);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "patch (" << shape_functions << "): stress error "
+                << stress_error << ", u error " << u_error << std::endl;
+    check("  " + shape_functions +
+            ": every point's stress within 1e-8 p of the exact",
+          stress_error < 1e-8);
+    check("  " + shape_functions +
+            ": every point's displacement within 1e-8 of the exact (over "
+            "eps R)",
+          u_error < 1e-8);
+    // Dirichlet conditions in their order: the base (2) and the top (3).
+    const double end_reaction = -nu; // sigma_zz R^2 / 2 per radian
+    check("  " + shape_functions +
+            ": the base's reaction per radian sigma_zz R^2 / 2 = -nu p R^2 "
+            "within 1e-8",
+          r.reactions.size() == 3 &&
+            std::abs(-r.reactions[1][1] - end_reaction) < 1e-8 &&
+            std::abs(r.reactions[2][1] - end_reaction) < 1e-8);
+  }
+
+
+
+  /// Part 5 (and 8 with GIMP): the cylinder compressed at finite strain
+  /// between frictionless platens, with @p treatment, @p shape_functions
+  /// and the ghost penalty factor @p ghost_penalty.
+  void
+  finite_strain_compression(const std::string &treatment,
+                            const std::string &shape_functions,
+                            const std::string &ghost_penalty = "0")
+  {
+    std::ostringstream material;
+    material << "subsection Material\n  set Model = von Mises\n"
+             << "  subsection von Mises\n    set Young's modulus = " << E
+             << "\n    set Poisson's ratio = " << nu
+             << "\n    set Yield stress = 1e9\n  end\nend\n";
+    // GIMP: the domains of the outer points grow with r / R beyond r = 1,
+    // and a domain that the grid clips no longer reproduces linear fields;
+    // the grid reaches r = 1.25 (empty beyond 1).
+    const bool gimp = shape_functions != "linear";
+    const Run  r    = run(
+      prm_text(gimp ? "  set Lower corner = 0,0\n"
+                          "  set Upper corner = 1.25,0.25\n" :
+                      "  set Lower corner = 0,0\n"
+                          "  set Upper corner = 1,0.25\n",
+               gimp ? "5,1" : "4,1",
+               material.str(),
+               "0:x, 2:y, 3:y",
+               "0; -0.2*t*y",
+               "1:0; 0",
+               20,
+               "  set Kinematics = finite strain\n"
+                   "  set Update volumes = true\n"
+                   "  set Volumetric locking = " +
+                 treatment + "\n  set Shape functions = " + shape_functions +
+                 "\n  set Ghost penalty = " + ghost_penalty + "\n" +
+                 (gimp ? "  set Region lower corner = 0,0\n"
+                             "  set Region upper corner = 1,0.25\n" :
+                             "")));
+    // The grid's top nodes move by -0.2 t y: each step shortens the
+    // material by 1 % of its current height.
+    const double stretch = std::pow(0.99, 20), log_stretch = std::log(stretch);
+    const double J     = std::pow(stretch, 1. - 2. * nu);
+    double       error = 0., hoop_error = 0.;
+    for (const auto &q : r.points)
+      {
+        error = std::max({error,
+                          std::abs(q.stress[1][1] - E * log_stretch / J),
+                          std::abs(q.stress[0][0]),
+                          std::abs(q.stress[0][1]),
+                          std::abs(q.hoop_stress)});
+        hoop_error =
+          std::max(hoop_error, std::abs(q.hoop_strain + nu * log_stretch));
+      }
+    error      = max_over_ranks(error) / std::abs(E * log_stretch);
+    hoop_error = max_over_ranks(hoop_error) / std::abs(nu * log_stretch);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "finite strain (" << treatment << ", " << shape_functions
+                << "): stress error " << error << ", hoop strain error "
+                << hoop_error << std::endl;
+    check("  " + shape_functions + ", " + treatment +
+            ": 20 steps, every point's stress within "
+            "1e-8 of E ln(lambda) of the exact",
+          r.steps == 20 && error < 1e-8);
+    check("  " + shape_functions + ", " + treatment +
+            ": hoop strain ln(r / R) = -nu ln(lambda) within 1e-8",
+          hoop_error < 1e-8);
+  }
+
+  /// Part 6b (and 8 with GIMP): the rigid cone pressed into the elastic
+  /// cylinder to @p final_load_factor of d = 0.14; the cone's force and
+  /// the base's reaction per radian.
+  std::pair<double, double>
+  cone_forces(const double       final_load_factor,
+              const std::string &shape_functions)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Geometry\n  set Lower corner = 0,0\n"
+         << "  set Upper corner = 8,8.5\n  set Subdivisions = 64,68\nend\n"
+         << "subsection Material points\n"
+         << "  set Points per cell per direction = 2\n"
+         << "  set Axisymmetric = true\n"
+         << "  set Shape functions = " << shape_functions << "\n"
+         << "  set Region lower corner = 0,0\n"
+         << "  set Region upper corner = 8,8\nend\n"
+         << elastic() << "subsection Boundary conditions\n"
+         << "  set Dirichlet boundaries = 0:x, 1:x, 2:xy\n"
+         << "  subsection Rigid body\n"
+         << "    set Shape = polygon\n    set Name = cone\n"
+         << "    set Vertices = -4, 8.7053079; 0, 8; 4, 8.7053079; 4, 10; "
+            "-4, 10\n"
+         << "    set Penalty factor = 10\n"
+         << "    subsection Motion\n"
+         << "      set Function expression = 0; -0.14*t\n"
+         << "    end\n  end\nend\n"
+         << "subsection Load stepping\n  set Number of steps = 8\n"
+         << "  set Final load factor = " << final_load_factor << "\nend\n"
+         << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
+         << "subsection Output\n  set Interval = 0\n"
+         << "  set Directory = axisymmetric-out\nend\n";
+    std::pair<double, double> forces;
+    run_and_inspect(text.str(), [&](const QuasiStaticProblem<2> &problem) {
+      forces = {problem.rigid_body_loads().at(0).force[1],
+                problem.reactions().at(2)[1]};
+    });
+    return forces;
+  }
+
   struct LameErrors
   {
     double u, stress;
@@ -271,7 +444,10 @@ namespace
   /// displacement error (volume-weighted L2 over the largest u_r) and
   /// stress error (over p).
   LameErrors
-  lame(const unsigned int n, const double poisson, const std::string &treatment)
+  lame(const unsigned int n,
+       const double       poisson,
+       const std::string &treatment,
+       const std::string &shape_functions = "linear")
   {
     const double       r_i = 1., r_o = 2., p = 1.;
     const double       A = p * r_i * r_i / (r_o * r_o - r_i * r_i);
@@ -288,7 +464,8 @@ namespace
                "0; 0",
                "0:t; 0",
                1,
-               "  set Volumetric locking = " + treatment + "\n"));
+               "  set Volumetric locking = " + treatment +
+                 "\n  set Shape functions = " + shape_functions + "\n"));
     double u2 = 0., s2 = 0., volume = 0.;
     for (const auto &q : r.points)
       {
@@ -418,44 +595,7 @@ main(int argc, char **argv)
   const double                     mu     = E / (2 * (1 + nu));
 
   deallog << "1. Solid cylinder under a radial pressure" << std::endl;
-  {
-    const Run    r            = run(prm_text("  set Lower corner = 0,0\n"
-                                             "  set Upper corner = 1,1\n",
-                               "4,4",
-                               elastic(),
-                               "0:x, 2:y, 3:y",
-                               "0; 0",
-                               "1:-t; 0",
-                               1));
-    const double eps          = -1. / (2 * (lambda + mu));
-    double       stress_error = 0., u_error = 0.;
-    for (const auto &q : r.points)
-      {
-        stress_error = std::max({stress_error,
-                                 std::abs(q.stress[0][0] + 1.),
-                                 std::abs(q.hoop_stress + 1.),
-                                 std::abs(q.stress[1][1] + 2 * nu),
-                                 std::abs(q.stress[0][1])});
-        u_error      = std::max(
-          {u_error, std::abs(q.u[0] - eps * q.X[0]), std::abs(q.u[1])});
-      }
-    stress_error = max_over_ranks(stress_error);
-    u_error      = max_over_ranks(u_error) / std::abs(eps);
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << "patch: stress error " << stress_error << ", u error "
-                << u_error << std::endl;
-    check("  every point's stress within 1e-8 p of the exact",
-          stress_error < 1e-8);
-    check("  every point's displacement within 1e-8 of the exact (over eps R)",
-          u_error < 1e-8);
-    // Dirichlet conditions in their order: the base (2) and the top (3).
-    const double end_reaction = -nu; // sigma_zz R^2 / 2 per radian
-    check("  the base's reaction per radian sigma_zz R^2 / 2 = -nu p R^2 "
-          "within 1e-8",
-          r.reactions.size() == 3 &&
-            std::abs(-r.reactions[1][1] - end_reaction) < 1e-8 &&
-            std::abs(r.reactions[2][1] - end_reaction) < 1e-8);
-  }
+  patch_test("linear");
 
   deallog << "2. Lame's thick cylinder, internal pressure" << std::endl;
   {
@@ -569,53 +709,7 @@ main(int argc, char **argv)
   deallog << "5. Finite strain: a cylinder compressed to 0.82 of its height"
           << std::endl;
   for (const std::string treatment : {"none", "F-bar"})
-    {
-      std::ostringstream material;
-      material << "subsection Material\n  set Model = von Mises\n"
-               << "  subsection von Mises\n    set Young's modulus = " << E
-               << "\n    set Poisson's ratio = " << nu
-               << "\n    set Yield stress = 1e9\n  end\nend\n";
-      const Run r = run(prm_text("  set Lower corner = 0,0\n"
-                                 "  set Upper corner = 1,0.25\n",
-                                 "4,1",
-                                 material.str(),
-                                 "0:x, 2:y, 3:y",
-                                 "0; -0.2*t*y",
-                                 "1:0; 0",
-                                 20,
-                                 "  set Kinematics = finite strain\n"
-                                 "  set Update volumes = true\n"
-                                 "  set Volumetric locking = " +
-                                   treatment + "\n"));
-      // The grid's top nodes move by -0.2 t y: each step shortens the
-      // material by 1 % of its current height.
-      const double stretch     = std::pow(0.99, 20),
-                   log_stretch = std::log(stretch);
-      const double J           = std::pow(stretch, 1. - 2. * nu);
-      double       error = 0., hoop_error = 0.;
-      for (const auto &q : r.points)
-        {
-          error = std::max({error,
-                            std::abs(q.stress[1][1] - E * log_stretch / J),
-                            std::abs(q.stress[0][0]),
-                            std::abs(q.stress[0][1]),
-                            std::abs(q.hoop_stress)});
-          hoop_error =
-            std::max(hoop_error, std::abs(q.hoop_strain + nu * log_stretch));
-        }
-      error      = max_over_ranks(error) / std::abs(E * log_stretch);
-      hoop_error = max_over_ranks(hoop_error) / std::abs(nu * log_stretch);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cout << "finite strain (" << treatment << "): stress error "
-                  << error << ", hoop strain error " << hoop_error << std::endl;
-      check("  " + treatment +
-              ": 20 steps, every point's stress within "
-              "1e-8 of E ln(lambda) of the exact",
-            r.steps == 20 && error < 1e-8);
-      check("  " + treatment +
-              ": hoop strain ln(r / R) = -nu ln(lambda) within 1e-8",
-            hoop_error < 1e-8);
-    }
+    finite_strain_compression(treatment, "linear");
 
   deallog << "6. A rigid plate compacting the solid cylinder" << std::endl;
   {
@@ -676,43 +770,11 @@ main(int argc, char **argv)
 
   deallog << "6b. A rigid cone on an elastic cylinder (Sneddon)" << std::endl;
   {
-    const auto cone = [&](const double final_load_factor) {
-      std::ostringstream text;
-      text << "set Dimension = 2\n"
-           << "subsection Geometry\n  set Lower corner = 0,0\n"
-           << "  set Upper corner = 8,8.5\n  set Subdivisions = 64,68\nend\n"
-           << "subsection Material points\n"
-           << "  set Points per cell per direction = 2\n"
-           << "  set Axisymmetric = true\n"
-           << "  set Region lower corner = 0,0\n"
-           << "  set Region upper corner = 8,8\nend\n"
-           << elastic() << "subsection Boundary conditions\n"
-           << "  set Dirichlet boundaries = 0:x, 1:x, 2:xy\n"
-           << "  subsection Rigid body\n"
-           << "    set Shape = polygon\n    set Name = cone\n"
-           << "    set Vertices = -4, 8.7053079; 0, 8; 4, 8.7053079; 4, 10; "
-              "-4, 10\n"
-           << "    set Penalty factor = 10\n"
-           << "    subsection Motion\n"
-           << "      set Function expression = 0; -0.14*t\n"
-           << "    end\n  end\nend\n"
-           << "subsection Load stepping\n  set Number of steps = 8\n"
-           << "  set Final load factor = " << final_load_factor << "\nend\n"
-           << "subsection Nonlinear solver\n  set Tolerance = 1e-10\nend\n"
-           << "subsection Output\n  set Interval = 0\n"
-           << "  set Directory = axisymmetric-out\nend\n";
-      std::pair<double, double> forces;
-      run_and_inspect(text.str(), [&](const QuasiStaticProblem<2> &problem) {
-        forces = {problem.rigid_body_loads().at(0).force[1],
-                  problem.reactions().at(2)[1]};
-      });
-      return forces;
-    };
     const double alpha = 80. * numbers::PI / 180., d = 0.14;
     const double sneddon = 2. / numbers::PI * E / (1. - nu * nu) *
                            std::tan(alpha) * d * d / (2. * numbers::PI);
-    const auto [force, base]  = cone(1.);
-    const auto [half, unused] = cone(0.5);
+    const auto [force, base]  = cone_forces(1., "linear");
+    const auto [half, unused] = cone_forces(0.5, "linear");
     (void)unused;
     const double excess  = force / sneddon - 1.;
     const double ratio   = force / half;
@@ -763,5 +825,43 @@ main(int argc, char **argv)
                          "  set Kinematics = finite strain\n"
                          "  set Update volumes = true\n"));
     deallog << "  hencky at finite strain: " << finite << std::endl;
+  }
+
+  deallog << "8. GIMP shape functions" << std::endl;
+  for (const std::string shape_functions : {"uGIMP", "cpGIMP"})
+    patch_test(shape_functions);
+  {
+    // One step of the Lame cylinder: no point has moved, every domain lies
+    // in its point's cell, and the average of a bilinear function and of
+    // its gradient over a rectangle are their values at its centre: GIMP
+    // is the linear functions' point rule there, through its own stencil
+    // of 3 x 3 nodes.
+    const LameErrors linear = lame(8, nu, "none");
+    const LameErrors gimp   = lame(8, nu, "none", "cpGIMP");
+    deallog << "  cpGIMP, Lame, 8 cells across: u error "
+            << significant(gimp.u, 2) << ", stress error "
+            << significant(gimp.stress, 2) << std::endl;
+    check("  cpGIMP, Lame: the errors of the linear functions to 1e-6",
+          std::abs(gimp.u / linear.u - 1.) < 1e-6 &&
+            std::abs(gimp.stress / linear.stress - 1.) < 1e-6);
+  }
+  // The domains of the outer points reach into the cells beyond r = 1,
+  // whose outer nodes the material barely touches: the ghost penalty ties
+  // them to the cells inside, and must leave the homogeneous state (a
+  // linear field, no gradient jumps) exact.
+  finite_strain_compression("none", "cpGIMP");
+  finite_strain_compression("F-bar", "cpGIMP", "1e-4");
+  {
+    const double alpha = 80. * numbers::PI / 180., d = 0.14;
+    const double sneddon = 2. / numbers::PI * E / (1. - nu * nu) *
+                           std::tan(alpha) * d * d / (2. * numbers::PI);
+    const auto [force, base] = cone_forces(1., "cpGIMP");
+    const double excess      = force / sneddon - 1.;
+    deallog << "  cpGIMP, cone: force per radian / Sneddon's - 1: "
+            << significant(100. * excess, 2) << " %" << std::endl;
+    check("  cpGIMP, cone: the force within 10 % of Sneddon's",
+          std::abs(excess) < 0.1);
+    check("  cpGIMP, cone: the cone's force = the base's reaction to 1e-6",
+          std::abs(force - base) / force < 1e-6);
   }
 }

@@ -13,7 +13,8 @@ namespace qsmpm
                             const ShapeCache<dim>     &cache,
                             const unsigned int         volume_offset,
                             const double               gamma,
-                            const double               stiffness_scale)
+                            const double               stiffness_scale,
+                            const bool                 axisymmetric)
   {
     const auto &dof_handler = grid.get_dof_handler();
 
@@ -27,8 +28,10 @@ namespace qsmpm
     // whole cell's, a node on a straight surface half of it). A cell with
     // such a node is cut.
     const double   h_dim = std::pow(grid.min_cell_size(), dim);
-    const IndexSet weak =
-      cache.dofs_without_points(grid, volume_offset, 0.25 * h_dim);
+    const IndexSet weak  = cache.dofs_without_points(grid,
+                                                    volume_offset,
+                                                    0.25 * h_dim,
+                                                    axisymmetric);
     std::vector<types::global_dof_index> dofs(grid.get_fe().n_dofs_per_cell()),
       neighbor_dofs(dofs.size());
     const auto any_in = [&](const auto &cell, const IndexSet &set) {
@@ -71,13 +74,15 @@ namespace qsmpm
                            fe,
                            quadrature,
                            update_gradients | update_JxW_values |
-                             update_normal_vectors);
-    FEFaceValues<dim>     there(grid.get_mapping(),
+                             update_normal_vectors | update_quadrature_points);
+    const double          mid_radius =
+      0.5 * (grid.lower_corner()[0] + grid.upper_corner()[0]);
+    FEFaceValues<dim>  there(grid.get_mapping(),
                             fe,
                             quadrature,
                             update_gradients);
-    const unsigned int    n = fe.n_dofs_per_cell();
-    FullMatrix<double>    local(2 * n, 2 * n);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> local(2 * n, 2 * n);
     clear();
     std::vector<types::global_dof_index> local_dofs(2 * n);
     std::vector<double>                  jump(2 * n);
@@ -105,7 +110,9 @@ namespace qsmpm
                 jump[i]     = here.shape_grad(i, q) * normal;
                 jump[n + i] = -(there.shape_grad(i, q) * normal);
               }
-            const double weight = gamma * stiffness_scale * h * here.JxW(q);
+            const double weight =
+              gamma * stiffness_scale * h * here.JxW(q) *
+              (axisymmetric ? here.quadrature_point(q)[0] / mid_radius : 1.);
             for (unsigned int i = 0; i < 2 * n; ++i)
               for (unsigned int j = 0; j < 2 * n; ++j)
                 if (component[i] == component[j])

@@ -722,22 +722,24 @@ namespace qsmpm
                                                  const unsigned int c) const
   {
     // d eps_thetatheta = d u_r / r = sum_k N_k(x_p) du_k,r / r_p, with r_p
-    // the point's radius at the start of the step (the grid's x). Linear
-    // shape functions only (MaterialPointSet checks): the stencil is the
-    // cell's vertices in their order.
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const auto            &range      = cache.cell(c);
+    // the point's radius at the start of the step (the grid's x). With GIMP
+    // N_k is the average of the linear function over the point's domain,
+    // and Omega_p = r_p A_p, so Omega_p N_k / r_p = integral of N_k r dA / r
+    // over the domain: the hoop term is the domain's exact average.
+    const auto                           &range = cache.cell(c);
     typename ShapeCache<dim>::ValueBuffer buffer;
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const unsigned int i   = p - scratch.block_first;
-        const double      *N   = cache.values(c, p, buffer);
-        const double       r   = cache.position(p)[0];
-        double             u_r = 0.;
-        for (unsigned int k = 0; k < n_vertices; ++k)
+        const unsigned int    i       = p - scratch.block_first;
+        const double         *N       = cache.values(c, p, buffer);
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = cache.stencil_size(p);
+        const double          r       = cache.position(p)[0];
+        double                u_r     = 0.;
+        for (unsigned int k = 0; k < stencil; ++k)
           {
             scratch.hoop_values[i][k] = N[k] / r;
-            u_r += N[k] * du_cell[k * dim];
+            u_r += N[k] * du_cell[nodes[k] * dim];
           }
         scratch.hoop_increment[i] = u_r / r;
       }
@@ -750,13 +752,15 @@ namespace qsmpm
   QuasiStaticResidual<dim>::add_hoop_forces(const unsigned int c,
                                             double            *f_cell) const
   {
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const auto            &range      = cache.cell(c);
+    const auto &range = cache.cell(c);
     for (unsigned int p = range.first_point; p < range.end_point; ++p)
       {
-        const unsigned int i = p - scratch.block_first;
-        for (unsigned int k = 0; k < n_vertices; ++k)
-          f_cell[k * dim] -= scratch.hoop_force[i] * scratch.hoop_values[i][k];
+        const unsigned int    i       = p - scratch.block_first;
+        const unsigned short *nodes   = cache.nodes(p);
+        const unsigned int    stencil = cache.stencil_size(p);
+        for (unsigned int k = 0; k < stencil; ++k)
+          f_cell[nodes[k] * dim] -=
+            scratch.hoop_force[i] * scratch.hoop_values[i][k];
       }
   }
 

@@ -331,7 +331,8 @@ namespace qsmpm
                              cache,
                              points().get_offsets().volume,
                              gamma,
-                             constraint_maker.mean_stiffness(points()));
+                             constraint_maker.mean_stiffness(points()),
+                             points().get_formulation().axisymmetric);
       }
     {
       TimerOutput::Scope        scope(timer_output, "constraints and loads");

@@ -121,8 +121,10 @@ namespace qsmpm
         "2 pi for the whole ring), the strain has the hoop component u_r / r "
         "and the stress sigma_thetatheta (the points' fields hoop_strain and "
         "hoop_stress; at finite strain ln(r / R) and the Cauchy hoop "
-        "stress). Linear shape functions, with or without F-bar (the hoop "
-        "strain's share of the volume change included); small strain: "
+        "stress). Linear or GIMP shape functions (the hoop strain from the "
+        "weights over r_p, which with GIMP is its exact average over the "
+        "point's ring), with or without F-bar (the hoop strain's share of "
+        "the volume change included); small strain: "
         "models linear elastic (not plane stress) and the "
         "plasticity models (von Mises, Drucker-Prager, Mohr-Coulomb, "
         "modified Cam clay); finite strain: the plasticity models. Hold u_r = "
@@ -264,14 +266,12 @@ namespace qsmpm
                 ExcMessage("Material points: <Update volumes = false> "
                            "(a geometrically linear model) contradicts "
                            "<Kinematics = finite strain>."));
-    AssertThrow(!formulation.axisymmetric || (dim == 2 && !formulation.gimp()),
+    AssertThrow(!formulation.axisymmetric || dim == 2,
                 ExcMessage("Material points: <Axisymmetric = true> needs a "
-                           "2D grid and Shape functions = linear."));
-    AssertThrow(!formulation.axisymmetric ||
-                  (ghost_penalty == 0. && min_nodal_volume_fraction == 0.),
+                           "2D grid."));
+    AssertThrow(!formulation.axisymmetric || min_nodal_volume_fraction == 0.,
                 ExcMessage("Material points: <Axisymmetric = true> is not "
-                           "available with <Ghost penalty> or <Minimum nodal "
-                           "volume> above 0."));
+                           "available with <Minimum nodal volume> above 0."));
     if (restrict_to_box())
       region();
   }

@@ -474,7 +474,8 @@ namespace qsmpm
   IndexSet
   ShapeCache<dim>::dofs_without_points(const BackgroundGrid<dim> &grid,
                                        const unsigned int         volume_offset,
-                                       const double min_nodal_volume) const
+                                       const double min_nodal_volume,
+                                       const bool   per_radian) const
   {
     // Count, for every degree of freedom, the cells with points around it
     // (or, with a threshold, the material volume sum_p Omega_p N_i(x_p) in
@@ -492,9 +493,10 @@ namespace qsmpm
             const auto &range = cell(c);
             for (unsigned int p = range.first_point; p < range.end_point; ++p)
               {
-                const double          omega = properties(p)[volume_offset];
-                const double         *N     = values(c, p, buffer);
-                const unsigned short *node  = nodes(p);
+                const double omega = properties(p)[volume_offset] /
+                                     (per_radian ? position(p)[0] : 1.);
+                const double         *N    = values(c, p, buffer);
+                const unsigned short *node = nodes(p);
                 for (unsigned int k = 0; k < stencil_size(p); ++k)
                   for (unsigned int d = 0; d < dim; ++d)
                     volume[node[k] * dim + d] += omega * N[k];

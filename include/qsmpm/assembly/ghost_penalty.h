@@ -46,13 +46,20 @@ namespace qsmpm
      * The matrix G of the step: the cut cells and faces of the points of
      * @p cache (whose volumes are at @p volume_offset), with the penalty
      * factor @p gamma and the stiffness scale @p stiffness_scale.
+     *
+     * @p axisymmetric: the volumes are per radian (r dA), and so is the
+     * stiffness, r times a plane one's. A node is cut by the area of
+     * material in its support, and the face integrals are taken over
+     * r dGamma / r_m, r_m the grid's mid-radius, at which @p stiffness_scale
+     * (a mean over the grid) is taken to be.
      */
     void
     reinit(const BackgroundGrid<dim> &grid,
            const ShapeCache<dim>     &cache,
            const unsigned int         volume_offset,
            const double               gamma,
-           const double               stiffness_scale);
+           const double               stiffness_scale,
+           const bool                 axisymmetric = false);
 
     /// The number of faces penalized in the last reinit() (all ranks).
     unsigned int

@@ -187,11 +187,11 @@ namespace qsmpm
       std::vector<double>                                volume;
       std::vector<double>                                mean_volume_change;
       /// Axisymmetric: the points' shape-function values N_k(x_p) over
-      /// their radius r_p (linear functions: the cell's vertices), once
-      /// for the hoop strain and its force; the hoop strain increments,
-      /// the trial hoop stresses and the points' volume times hoop stress
-      /// (the hoop force's measure).
-      std::vector<std::array<double, GeometryInfo<dim>::vertices_per_cell>>
+      /// their radius r_p, k over the point's stencil (the cell's vertices,
+      /// or GIMP's up to 3 x 3 nodes), once for the hoop strain and its
+      /// force; the hoop strain increments, the trial hoop stresses and the
+      /// points' volume times hoop stress (the hoop force's measure).
+      std::vector<std::array<double, ShapeCache<dim>::max_stencil_size>>
                           hoop_values;
       std::vector<double> hoop_increment;
       std::vector<double> hoop_stress;

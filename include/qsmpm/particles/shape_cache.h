@@ -309,11 +309,15 @@ namespace qsmpm
      * singular (most of all with F-bar, which leaves one volumetric
      * constraint per cell). Holding them fixed for one step is the
      * inactive-node treatment of the paper applied to nearly empty nodes.
+     * With @p per_radian (axisymmetry, volumes r dA per radian) the
+     * measure is the area sum_p Omega_p / r_p N_i(x_p), so that the same
+     * threshold means the same at every radius.
      */
     IndexSet
     dofs_without_points(const BackgroundGrid<dim> &grid,
                         const unsigned int         volume_offset    = 0,
-                        const double               min_nodal_volume = 0.) const;
+                        const double               min_nodal_volume = 0.,
+                        const bool                 per_radian = false) const;
 
     /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
