@@ -434,6 +434,17 @@ namespace
     return forces;
   }
 
+  /// Sneddon's force per radian on the cone of cone_forces() (half-angle
+  /// alpha = 80 degrees, depth d = 0.14) on an elastic half-space:
+  /// P / (2 pi) = (2 / pi) E / (1 - nu^2) tan(alpha) d^2 / (2 pi).
+  double
+  sneddon_force_per_radian()
+  {
+    const double alpha = 80. * numbers::PI / 180., d = 0.14;
+    return 2. / numbers::PI * E / (1. - nu * nu) * std::tan(alpha) * d * d /
+           (2. * numbers::PI);
+  }
+
   struct LameErrors
   {
     double u, stress;
@@ -770,9 +781,7 @@ main(int argc, char **argv)
 
   deallog << "6b. A rigid cone on an elastic cylinder (Sneddon)" << std::endl;
   {
-    const double alpha = 80. * numbers::PI / 180., d = 0.14;
-    const double sneddon = 2. / numbers::PI * E / (1. - nu * nu) *
-                           std::tan(alpha) * d * d / (2. * numbers::PI);
+    const double sneddon      = sneddon_force_per_radian();
     const auto [force, base]  = cone_forces(1., "linear");
     const auto [half, unused] = cone_forces(0.5, "linear");
     (void)unused;
@@ -852,9 +861,7 @@ main(int argc, char **argv)
   finite_strain_compression("none", "cpGIMP");
   finite_strain_compression("F-bar", "cpGIMP", "1e-4");
   {
-    const double alpha = 80. * numbers::PI / 180., d = 0.14;
-    const double sneddon = 2. / numbers::PI * E / (1. - nu * nu) *
-                           std::tan(alpha) * d * d / (2. * numbers::PI);
+    const double sneddon     = sneddon_force_per_radian();
     const auto [force, base] = cone_forces(1., "cpGIMP");
     const double excess      = force / sneddon - 1.;
     deallog << "  cpGIMP, cone: force per radian / Sneddon's - 1: "
