@@ -470,4 +470,40 @@ main()
                "\"small-strain only\"",
                thrown && !elastic.supports_finite_strain());
   }
+
+  // The models' eigen decompositions (Hencky's logarithm, the principal
+  // stresses of Mohr-Coulomb): a tensor that is not finite, as a line
+  // search's trial far from the solution can give, has NaN eigenvalues,
+  // so that the residual is not finite and the step is cut back; the QL
+  // method threw there and stopped the run (the Mohr-Coulomb footing at
+  // a/h = 16 with the preconditioner updated in every Newton iteration).
+  deallog << "Eigen decomposition" << std::endl;
+  {
+    SymmetricTensor<2, 3> a;
+    a[0][0]          = 3.;
+    a[1][1]          = -1.;
+    a[2][2]          = 2.;
+    a[0][1]          = 0.5;
+    a[1][2]          = -0.25;
+    const auto eigen = TensorFunctions::eigen_decomposition(a);
+    const auto exact = eigenvalues(a);
+    double     error = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      error = std::max(error, std::abs(eigen[k].first - exact[k]));
+    check("  a finite tensor: |lambda - eigenvalues()|", error, 1e-13);
+    a[1][2]          = std::numeric_limits<double>::quiet_NaN();
+    bool nan_values  = true;
+    bool thrown_here = false;
+    try
+      {
+        for (const auto &pair : TensorFunctions::eigen_decomposition(a))
+          nan_values = nan_values && std::isnan(pair.first);
+      }
+    catch (const std::exception &)
+      {
+        thrown_here = true;
+      }
+    check_that("  a tensor with a NaN entry: NaN eigenvalues, no exception",
+               nan_values && !thrown_here);
+  }
 }

@@ -252,6 +252,40 @@ namespace qsmpm
 
   template <int dim>
   void
+  QuasiStaticResidual<dim>::strain_increments(
+    const TrilinosWrappers::MPI::Vector  &du,
+    std::vector<SymmetricTensor<2, dim>> &increments) const
+  {
+    const LoopKind kind = loop_kind();
+    AssertThrow(!kind.finite_strain && !kind.axisymmetric,
+                ExcMessage("strain_increments() is for small strain in "
+                           "plane and 3D problems."));
+    update_packed_state();
+    const double *du_values = du.trilinos_vector()[0];
+    if (!same_layout)
+      {
+        import_ghosts(du, du_ghosted);
+        du_values = du_ghosted.trilinos_vector()[0];
+      }
+    increments.resize(cache.n_points());
+    constexpr unsigned int block_cells = 8;
+    for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
+      {
+        const unsigned int c1    = std::min(c0 + block_cells, cache.n_cells());
+        const unsigned int first = cache.cell(c0).first_point;
+        const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
+        scratch.start_block(first, n_points, state_layout.n_state);
+        block_kinematics(kind, c0, c1, du_values);
+        std::copy(scratch.strain_increment.begin(),
+                  scratch.strain_increment.begin() + n_points,
+                  increments.begin() + first);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   QuasiStaticResidual<dim>::commit(
     const TrilinosWrappers::MPI::Vector &du_increment)
   {

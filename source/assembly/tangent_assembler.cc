@@ -119,7 +119,9 @@ namespace qsmpm
        * @p cache, in their order.
        */
       void
-      reinit(const ShapeCache<dim> &cache, const unsigned int c)
+      reinit(const ShapeCache<dim>                      &cache,
+             const unsigned int                          c,
+             const std::vector<SymmetricTensor<2, dim>> *increments = nullptr)
       {
         const auto        &range = cache.cell(c);
         const unsigned int n     = range.end_point - range.first_point;
@@ -129,10 +131,25 @@ namespace qsmpm
             symmetric.resize(n);
             tangents.resize(n);
             volumes.resize(n);
+            kirchhoff_stresses.resize(finite_strain ? n : 0);
           }
         if (finite_strain)
           for (unsigned int i = 0; i < n; ++i)
             finite_strain_tangent(cache, range.first_point + i, i);
+        else if (increments != nullptr)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int    p    = range.first_point + i;
+              const double         *data = cache.properties(p);
+              const PointState<dim> state =
+                MaterialPointSet<dim>::read_point_state(data,
+                                                        offsets,
+                                                        layout.n_state,
+                                                        cache.position(p));
+              tangents[i] =
+                Tensor<4, dim>(iterate_tangent(state, (*increments)[p]));
+              volumes[i] = data[offsets.volume];
+            }
         else
           {
             const PointStateBatch<dim>               old(layout,
@@ -168,7 +185,46 @@ namespace qsmpm
         return volumes[i];
       }
 
+      /// At finite strain, the Kirchhoff stress tau of the @p i-th point,
+      /// whose geometric term C() holds.
+      const SymmetricTensor<2, dim> &
+      kirchhoff_stress(const unsigned int i) const
+      {
+        return kirchhoff_stresses[i];
+      }
+
+      bool
+      is_finite_strain() const
+      {
+        return finite_strain;
+      }
+
     private:
+      /**
+       * The consistent tangent at the strain increment @p increment from
+       * @p state; where the model cannot give it (the Mohr-Coulomb
+       * footing at a/h = 16 stopped in an eigenvalue solver's exception at
+       * an iterate whose residual it had evaluated), the tangent of the
+       * committed state: the matrix is a preconditioner, and one point's
+       * entries in it change only how fast GMRES converges.
+       */
+      SymmetricTensor<4, dim>
+      iterate_tangent(const PointState<dim>         &state,
+                      const SymmetricTensor<2, dim> &increment) const
+      {
+        try
+          {
+            const SymmetricTensor<4, dim> C =
+              model.consistent_tangent(state, increment);
+            if (std::isfinite(C.norm()))
+              return C;
+          }
+        catch (const std::exception &)
+          {
+          }
+        return model.tangent(state);
+      }
+
       void
       finite_strain_tangent(const ShapeCache<dim> &cache,
                             const unsigned int     p,
@@ -192,7 +248,8 @@ namespace qsmpm
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int l = 0; l < dim; ++l)
               C[a][k][k][l] -= tau[a][l];
-        volumes[i] = data[offsets.initial_volume];
+        kirchhoff_stresses[i] = tau;
+        volumes[i]            = data[offsets.initial_volume];
       }
 
       const ConstitutiveModel<dim>                  &model;
@@ -203,6 +260,171 @@ namespace qsmpm
       std::vector<SymmetricTensor<4, dim>>           symmetric;
       std::vector<Tensor<4, dim>>                    tangents;
       std::vector<double>                            volumes;
+      std::vector<SymmetricTensor<2, dim>>           kirchhoff_stresses;
+    };
+
+
+
+    /**
+     * The F-bar terms of one cell's stiffness (the cell is the patch of
+     * the mean volume change). QuasiStaticResidual replaces the volume
+     * change of each point's strain increment by the cell's mean,
+     *
+     *   d eps_bar_p = d eps_p + (theta_bar - tr d eps_p) / dim I,
+     *   theta_bar = sum_q w_q tr d eps_q / W,
+     *
+     * w_q the points' volumes at the start of the step and W their sum,
+     * so that a virtual displacement of dof (v, a) changes theta_bar by
+     * bbar_va = sum_q w_q dN_v/dx_a(x_q) / W over the cell's group of
+     * nodes, and the point's volume change by g_p,va = dN_v/dx_a(x_p).
+     * With d_p = bbar - g_p the exact stiffness is then
+     *
+     *   small strain (the forces of the virtual F-bar strain, B-bar):
+     *     K = K_B + sum_p Omega_p [(m_p (x) d_p + d_p (x) n_p) / dim
+     *                              + kappa_p d_p (x) d_p / dim^2],
+     *   finite strain (F-bar kinematics, plain virtual gradients):
+     *     K = K_B + sum_p Omega_p m_p (x) d_p / dim,
+     *
+     * K_B = sum_p Omega_p B_p^T C_p B_p the stiffness without F-bar,
+     * m_p,va = dN_v/dx_k Y_ak with Y = C : I the stress of a unit volume
+     * change (at finite strain of the material tangent c : I = C : I +
+     * tau, without the geometric term -tau G^T, which the virtual
+     * gradient carries unchanged), n_p,wb = Y'_bl dN_w/dx_l with Y' = I :
+     * C, and kappa_p = I : C : I. Without these terms K locks where the
+     * Jacobian does not (a nearly incompressible or flowing plastic body:
+     * K_B then holds the bulk stiffness of every point's own volume
+     * change), and GMRES needs many more iterations to make up the
+     * difference. The d_p (x) d_p and bbar terms span the whole group, so
+     * they are summed over the cell's points first (W, the sums below)
+     * and added as outer products once per cell; only the terms in g_p
+     * alone are added point by point, within the point's stencil.
+     */
+    template <int dim>
+    class FbarTerms
+    {
+    public:
+      static constexpr unsigned int max_dofs =
+        ShapeCache<dim>::max_dofs_per_group;
+
+      /// bbar of the cell @p c of @p cache, with the points' volumes at
+      /// @p volume_offset; the sums set to zero.
+      void
+      reinit(const ShapeCache<dim> &cache,
+             const unsigned int     c,
+             const unsigned int     volume_offset,
+             const bool             symmetric_form)
+      {
+        symmetric = symmetric_form;
+        n_dofs    = cache.n_dofs(c);
+        std::fill(bbar.begin(), bbar.begin() + n_dofs, 0.);
+        std::fill(m_sum.begin(), m_sum.begin() + n_dofs, 0.);
+        std::fill(n_sum.begin(), n_sum.begin() + n_dofs, 0.);
+        std::fill(g_sum.begin(), g_sum.begin() + n_dofs, 0.);
+        kappa_sum         = 0.;
+        double      W     = 0.;
+        const auto &range = cache.cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double          w      = cache.properties(p)[volume_offset];
+            const Tensor<1, dim> *grad_N = cache.gradients(c, p, buffer);
+            const unsigned short *nodes  = cache.nodes(p);
+            for (unsigned int v = 0; v < cache.stencil_size(p); ++v)
+              for (unsigned int a = 0; a < dim; ++a)
+                bbar[nodes[v] * dim + a] += w * grad_N[v][a];
+            W += w;
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          bbar[i] /= W;
+      }
+
+      /**
+       * The terms of one point (gradients @p grad_N on its @p stencil of
+       * the group's @p nodes, tangent @p C, Kirchhoff stress @p tau at
+       * finite strain): those in g_p alone into @p K_cell, the others into
+       * the cell's sums.
+       */
+      void
+      add_point(const Tensor<1, dim>          *grad_N,
+                const unsigned int             stencil,
+                const unsigned short          *nodes,
+                const Tensor<4, dim>          &C,
+                const SymmetricTensor<2, dim> *tau,
+                const double                   volume,
+                FullMatrix<double>            &K_cell)
+      {
+        // Y = C : I (plus tau at finite strain), Y' = I : C, kappa.
+        Tensor<2, dim> Y, Y_left;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int j = 0; j < dim; ++j)
+              {
+                Y[a][k] += C[a][k][j][j];
+                Y_left[a][k] += C[j][j][a][k];
+              }
+        if (tau != nullptr)
+          Y += Tensor<2, dim>(*tau);
+        const double kappa = trace(Y);
+        const double f     = volume / dim;
+        const double f2    = volume * kappa / (dim * dim);
+        // The point's m, n and g over its stencil.
+        std::array<double, ShapeCache<dim>::max_stencil_size * dim> m, n, g;
+        const unsigned int size = stencil * dim;
+        for (unsigned int v = 0; v < stencil; ++v)
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              double m_va = 0., n_va = 0.;
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  m_va += grad_N[v][k] * Y[a][k];
+                  n_va += Y_left[a][k] * grad_N[v][k];
+                }
+              m[v * dim + a] = m_va;
+              n[v * dim + a] = n_va;
+              g[v * dim + a] = grad_N[v][a];
+            }
+        const auto row = [&](const unsigned int i) {
+          return nodes[i / dim] * dim + i % dim;
+        };
+        // -f m (x) g, and in the symmetric form -f g (x) n + f2 g (x) g.
+        for (unsigned int i = 0; i < size; ++i)
+          for (unsigned int j = 0; j < size; ++j)
+            K_cell(row(i), row(j)) -=
+              f * m[i] * g[j] +
+              (symmetric ? f * g[i] * n[j] - f2 * g[i] * g[j] : 0.);
+        for (unsigned int i = 0; i < size; ++i)
+          {
+            m_sum[row(i)] += f * m[i];
+            if (symmetric)
+              {
+                n_sum[row(i)] += f * n[i];
+                g_sum[row(i)] += f2 * g[i];
+              }
+          }
+        if (symmetric)
+          kappa_sum += f2;
+      }
+
+      /// The cell's terms in bbar: m_sum (x) bbar, and in the symmetric
+      /// form bbar (x) n_sum + kappa_sum bbar (x) bbar - bbar (x) g_sum -
+      /// g_sum (x) bbar.
+      void
+      add_cell(FullMatrix<double> &K_cell) const
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            K_cell(i, j) +=
+              m_sum[i] * bbar[j] +
+              (symmetric ? bbar[i] * (n_sum[j] + kappa_sum * bbar[j]) -
+                             bbar[i] * g_sum[j] - g_sum[i] * bbar[j] :
+                           0.);
+      }
+
+    private:
+      bool                                     symmetric = true;
+      unsigned int                             n_dofs    = 0;
+      std::array<double, max_dofs>             bbar, m_sum, n_sum, g_sum;
+      double                                   kappa_sum = 0.;
+      typename ShapeCache<dim>::GradientBuffer buffer;
     };
 
 
@@ -405,14 +627,22 @@ namespace qsmpm
 
   template <int dim>
   void
-  TangentAssembler<dim>::assemble(const BackgroundGrid<dim>       &grid,
-                                  const MaterialPointSet<dim>     &points,
-                                  const ShapeCache<dim>           &cache,
-                                  const AffineConstraints<double> &constraints,
-                                  const GhostPenalty<dim> *ghost_penalty,
-                                  const AdditionalTerm    &additional_term,
-                                  const Tangent            kind)
+  TangentAssembler<dim>::assemble(
+    const BackgroundGrid<dim>                  &grid,
+    const MaterialPointSet<dim>                &points,
+    const ShapeCache<dim>                      &cache,
+    const AffineConstraints<double>            &constraints,
+    const GhostPenalty<dim>                    *ghost_penalty,
+    const AdditionalTerm                       &additional_term,
+    const Tangent                               kind,
+    const std::vector<SymmetricTensor<2, dim>> *strain_increments,
+    const bool                                  fbar_terms)
   {
+    AssertThrow(strain_increments == nullptr ||
+                  (!points.get_formulation().finite_strain() &&
+                   !points.get_formulation().axisymmetric),
+                ExcMessage("The stiffness at an iterate is for small strain "
+                           "in plane and 3D problems."));
     CellTangents<dim> cell_tangents(points, kind);
 
     if (pattern_per_step || ghost_penalty != nullptr)
@@ -423,12 +653,22 @@ namespace qsmpm
     typename ShapeCache<dim>::GradientBuffer buffer;
     typename ShapeCache<dim>::ValueBuffer    values;
     const bool axisymmetric = points.get_formulation().axisymmetric;
+    // F-bar (plane and 3D problems): the stiffness of the mean volume
+    // change (FbarTerms), if asked for. Axisymmetric problems keep K_B.
+    const bool fbar =
+      fbar_terms && points.get_formulation().fbar() && !axisymmetric;
+    FbarTerms<dim> mean_volume_terms;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
         const unsigned int n_dofs = cache.n_dofs(c);
         K_cell.reinit(n_dofs, n_dofs);
         const auto &range = cache.cell(c);
-        cell_tangents.reinit(cache, c);
+        cell_tangents.reinit(cache, c, strain_increments);
+        if (fbar)
+          mean_volume_terms.reinit(cache,
+                                   c,
+                                   points.get_offsets().volume,
+                                   !cell_tangents.is_finite_strain());
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N  = cache.gradients(c, p, buffer);
@@ -462,7 +702,20 @@ namespace qsmpm
                                  volume,
                                  cache.position(p)[0],
                                  K_cell);
+            if (fbar)
+              mean_volume_terms.add_point(grad_N,
+                                          stencil,
+                                          nodes,
+                                          C,
+                                          cell_tangents.is_finite_strain() ?
+                                            &cell_tangents.kirchhoff_stress(
+                                              p - range.first_point) :
+                                            nullptr,
+                                          volume,
+                                          K_cell);
           }
+        if (fbar)
+          mean_volume_terms.add_cell(K_cell);
         dofs.assign(cache.global_dofs(c), cache.global_dofs(c) + n_dofs);
         constraints.distribute_local_to_global(K_cell, dofs, K);
       }

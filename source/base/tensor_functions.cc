@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <qsmpm/base/tensor_functions.h>
 
 namespace qsmpm
@@ -23,8 +24,31 @@ namespace qsmpm
     std::array<std::pair<double, Tensor<1, dim>>, dim>
     eigen_decomposition(const SymmetricTensor<2, dim> &b)
     {
-      return eigenvectors(b,
-                          SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
+      // A tensor that is not finite (a trial of Newton's line search far
+      // from the solution) has no eigenvalues: NaN, so that the residual
+      // is not finite and the step is cut back, where QL threw and stopped
+      // the run. Where QL does not converge for a finite tensor, Jacobi's
+      // method, which always does.
+      if (!std::isfinite(b.norm()))
+        {
+          std::array<std::pair<double, Tensor<1, dim>>, dim> undefined;
+          for (auto &pair : undefined)
+            {
+              pair.first = std::numeric_limits<double>::quiet_NaN();
+              for (unsigned int d = 0; d < dim; ++d)
+                pair.second[d] = std::numeric_limits<double>::quiet_NaN();
+            }
+          return undefined;
+        }
+      try
+        {
+          return eigenvectors(
+            b, SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
+        }
+      catch (const std::exception &)
+        {
+          return eigenvectors(b, SymmetricTensorEigenvectorMethod::jacobi);
+        }
     }
 
 

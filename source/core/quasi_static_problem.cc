@@ -425,19 +425,69 @@ namespace qsmpm
              !secant_retry) ?
               TangentAssembler<dim>::Tangent::loading :
               TangentAssembler<dim>::Tangent::secant;
-          tangent.assemble(background_grid,
-                           points(),
-                           cache,
-                           step_constraints.get(),
-                           stabilization(),
-                           additional_stiffness(true),
-                           preconditioner_tangent);
+          assemble_tangent(nullptr);
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         preconditioner.setup(tangent.matrix(),
                              background_grid,
                              tangent.pattern_generation());
       }
+    complete_preconditioner(new_preconditioner);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::assemble_tangent(
+    const std::vector<SymmetricTensor<2, dim>> *strain_increments)
+  {
+    tangent.assemble(background_grid,
+                     points(),
+                     cache,
+                     step_constraints.get(),
+                     stabilization(),
+                     additional_stiffness(true),
+                     preconditioner_tangent,
+                     strain_increments,
+                     /*fbar_terms=*/strain_increments != nullptr);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::build_preconditioner_at(const VectorType &du_iterate)
+  {
+    residual->strain_increments(du_iterate, iterate_strains);
+    assemble_tangent(&iterate_strains);
+    // A factorization starts afresh, with pivoting: KLU's refactorization
+    // keeps the pivot order, and so the fill, of its last full
+    // factorization, which for the nearly singular tangents of perfect
+    // plasticity can be poor (doc/benchmarks.md: a footing twice as slow).
+    try
+      {
+        preconditioner.setup(tangent.matrix(), background_grid);
+      }
+    catch (const std::exception &)
+      {
+        // The consistent tangents of perfect plasticity can leave the
+        // matrix singular at an iterate (points at the apex of a
+        // Mohr-Coulomb surface stiffen nothing): this iteration takes the
+        // tangents of the committed state, as the step's first did.
+        assemble_tangent(nullptr);
+        preconditioner.setup(tangent.matrix(), background_grid);
+      }
+    complete_preconditioner(true);
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::complete_preconditioner(
+    const bool new_preconditioner)
+  {
     // The bodies driven by a force (RigidContact) and the plates
     // (RigidPlates) complete the preconditioner; the plates in every step,
     // since their nodes change with the material.
@@ -549,8 +599,21 @@ namespace qsmpm
     step_constraints.distribute(du);
 
     const auto solve = [&](NewtonReport &solve_report) {
-      TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
-      const StepOperator<dim> op = step_operator();
+      TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
+      StepOperator<dim>  op = step_operator();
+      if (newton_parameters.preconditioner_update == "Newton iteration" &&
+          preconditioner.needs_matrix())
+        {
+          const auto &formulation = points().get_formulation();
+          AssertThrow(!formulation.finite_strain() && !formulation.axisymmetric,
+                      ExcMessage("Nonlinear solver/Preconditioner update = "
+                                 "Newton iteration needs Kinematics = small "
+                                 "strain and a plane or 3D problem (not "
+                                 "Axisymmetric)."));
+          op.set_preconditioner_update([this](const VectorType &iterate) {
+            build_preconditioner_at(iterate);
+          });
+        }
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;

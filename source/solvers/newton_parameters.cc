@@ -139,6 +139,23 @@ namespace qsmpm
         "auto, 10 for elastic models, 1 for all others.",
         Patterns::Integer(0));
       prm.add_parameter(
+        "Preconditioner update",
+        preconditioner_update,
+        "When the preconditioner's matrix is built: once per load step "
+        "from the tangents of the committed state (load step, the paper), "
+        "or in every Newton iteration from the consistent tangent of each "
+        "point at the iterate (Newton iteration: small strain, plane and "
+        "3D problems). A plastic model's committed tangent is elastic, and "
+        "where the iterate yields GMRES has to make up the difference in "
+        "every Newton iteration; the tangent at the iterate is the "
+        "Jacobian (with F-bar too), so that with the direct factorization "
+        "GMRES needs one or two iterations per Newton iteration. It costs "
+        "an assembly and a factorization (or AMG set-up) per Newton "
+        "iteration instead of per step: it pays where residuals are dear "
+        "(the Mohr-Coulomb footing of examples/footing: half the time), "
+        "not for a cheap von Mises return (doc/benchmarks.md).",
+        Patterns::Selection("load step|Newton iteration"));
+      prm.add_parameter(
         "Preconditioner reuse growth",
         preconditioner_reuse_growth,
         "With reuse: the preconditioner is rebuilt before the next step "

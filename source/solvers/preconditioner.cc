@@ -2,6 +2,7 @@
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <qsmpm/solvers/preconditioner.h>
 
 namespace qsmpm
@@ -197,7 +198,11 @@ namespace qsmpm
                         ExcMessage("Preconditioner = direct: the symbolic "
                                    "factorization of the stiffness failed."));
           }
-        AssertThrow(direct->NumericFactorization() == 0,
+        // On every rank together (the factors live on one), so that a
+        // caller may catch it and go on with another matrix.
+        const bool failed = dealii::Utilities::MPI::logical_or(
+          direct->NumericFactorization() != 0, grid.get_communicator());
+        AssertThrow(!failed,
                     ExcMessage("Preconditioner = direct: the stiffness is "
                                "singular (KLU's numeric factorization "
                                "failed)."));

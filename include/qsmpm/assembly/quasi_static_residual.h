@@ -121,6 +121,17 @@ namespace qsmpm
     void
     set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
 
+    /**
+     * The strain increments of the points at the increment @p du, with
+     * F-bar's mean volume change if the formulation has it: what
+     * evaluate() hands the constitutive model at small strain, for the
+     * consistent tangent at an iterate (TangentAssembler). In the order of
+     * the cache's points. Small strain, plane and 3D only.
+     */
+    void
+    strain_increments(const TrilinosWrappers::MPI::Vector  &du,
+                      std::vector<SymmetricTensor<2, dim>> &increments) const;
+
     /// R = f_ext - f_int(du). Does not change any point.
     Evaluation
     evaluate(const TrilinosWrappers::MPI::Vector &du,

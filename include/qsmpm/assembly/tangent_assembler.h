@@ -18,7 +18,10 @@ namespace qsmpm
    *   K_ij = sum_p Omega_p B_i(x_p)^T C_p B_j(x_p),
    *
    * with C_p the tangent the constitutive model supplies at the committed
-   * state of point p. Since R(du) = f_ext - f_int(du), the Jacobian of the
+   * state of point p (or at a Newton iterate, assemble()), and with F-bar
+   * possibly the terms of the cell's mean volume change (B-bar at small
+   * strain).
+   * Since R(du) = f_ext - f_int(du), the Jacobian of the
    * residual is J = -K when C_p is the exact tangent (linear models, without
    * volume updates); otherwise K is an approximation that is good enough to
    * precondition the Jacobian-free GMRES.
@@ -58,18 +61,41 @@ namespace qsmpm
       loading
     };
 
-    /// Assemble K at the points of @p cache from the model's @p kind of
-    /// tangent, plus the matrix of @p ghost_penalty if given (its couplings
-    /// across faces then join the pattern, made anew for the step), plus
-    /// @p additional_term if given.
+    /**
+     * Assemble K at the points of @p cache from the model's @p kind of
+     * tangent, plus the matrix of @p ghost_penalty if given (its couplings
+     * across faces then join the pattern, made anew for the step), plus
+     * @p additional_term if given.
+     *
+     * With @p strain_increments (small strain, plane and 3D; one per point
+     * of @p cache, QuasiStaticResidual::strain_increments() of a Newton
+     * iterate), K is instead the stiffness at that iterate: the model's
+     * ConstitutiveModel::consistent_tangent() at each point's increment,
+     * so that K is the Jacobian of the residual there (elastoplastic where
+     * the iterate yields), which the tangents of the committed state are
+     * not.
+     *
+     * With @p fbar_terms and F-bar (plane and 3D problems), K holds the
+     * terms of the cell's mean volume change, without which it is not the
+     * Jacobian of the F-bar residual (0.14-0.16 off on an elastic block:
+     * test jacobian_product). The matrix at a Newton iterate has them
+     * (QuasiStaticProblem); the one built once per step from the committed
+     * state, whose yielding points are elastic in it anyway, does not:
+     * there they saved 2-7 % of the GMRES iterations of the footings of
+     * examples/footing, and they would move every curve of perfect
+     * plasticity with F-bar within the Newton tolerance (doc/benchmarks.md).
+     */
     void
-    assemble(const BackgroundGrid<dim>       &grid,
-             const MaterialPointSet<dim>     &points,
-             const ShapeCache<dim>           &cache,
-             const AffineConstraints<double> &constraints,
-             const GhostPenalty<dim>         *ghost_penalty   = nullptr,
-             const AdditionalTerm            &additional_term = {},
-             const Tangent                    kind = Tangent::secant);
+    assemble(
+      const BackgroundGrid<dim>                  &grid,
+      const MaterialPointSet<dim>                &points,
+      const ShapeCache<dim>                      &cache,
+      const AffineConstraints<double>            &constraints,
+      const GhostPenalty<dim>                    *ghost_penalty   = nullptr,
+      const AdditionalTerm                       &additional_term = {},
+      const Tangent                               kind = Tangent::secant,
+      const std::vector<SymmetricTensor<2, dim>> *strain_increments = nullptr,
+      const bool                                  fbar_terms        = false);
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;

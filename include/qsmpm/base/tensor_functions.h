@@ -36,7 +36,8 @@ namespace qsmpm
    * unique (the result does not depend on the choice).
    *
    * Eigen decompositions use dealii::eigenvectors() with the (accurate)
-   * QL method with implicit shifts.
+   * QL method with implicit shifts (Jacobi's method where QL does not
+   * converge; NaN for a tensor that is not finite).
    */
   namespace TensorFunctions
   {

@@ -318,6 +318,23 @@ namespace qsmpm
     void
     prepare_step(const double t_old, const double t_new);
 
+    /// The preconditioner's matrix (tangent) from the committed state, or
+    /// with @p strain_increments at a Newton iterate, with F-bar's terms.
+    void
+    assemble_tangent(
+      const std::vector<SymmetricTensor<2, dim>> *strain_increments);
+
+    /// The preconditioner of the stiffness at the Newton iterate
+    /// @p du_iterate (Nonlinear solver/Preconditioner update = Newton
+    /// iteration).
+    void
+    build_preconditioner_at(const VectorType &du_iterate);
+
+    /// The rigid bodies driven by a force and the plates complete the
+    /// preconditioner (@p new_preconditioner: it was just built).
+    void
+    complete_preconditioner(const bool new_preconditioner);
+
     /**
      * The force balance of the converged step to @p t_new (before it is
      * committed): recorded for reactions.csv, and a step that lost more
@@ -533,11 +550,14 @@ namespace qsmpm
     /// Whether the current step failed with a preconditioner from the
     /// points' loading slopes and is tried with the secant (reject_step());
     /// cleared when a step is accepted.
-    bool                    secant_retry = false;
-    PreconditionerReuse     preconditioner_reuse;
-    PathFollowingSetup<dim> path_following;
-    StepConstraints         step_constraints;
-    VectorType              du;
+    bool secant_retry = false;
+    /// The points' strain increments at a Newton iterate
+    /// (build_preconditioner_at()).
+    std::vector<SymmetricTensor<2, dim>> iterate_strains;
+    PreconditionerReuse                  preconditioner_reuse;
+    PathFollowingSetup<dim>              path_following;
+    StepConstraints                      step_constraints;
+    VectorType                           du;
     /// With Initial guess = extrapolation: the increments of the last
     /// converged load step and its load-factor increment (0: none, the
     /// next step starts from the linear predictor).

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <iomanip>
 #include <qsmpm/assembly/local_stiffness.h>
 #include <qsmpm/assembly/quasi_static_residual.h>
@@ -167,6 +168,26 @@ namespace qsmpm
         }
     }
 
+    /**
+     * Have update_preconditioner() call @p update, which builds the
+     * preconditioner anew for the iterate it is given
+     * (QuasiStaticProblem: the stiffness at the iterate).
+     */
+    void
+    set_preconditioner_update(std::function<void(const VectorType &)> update)
+    {
+      preconditioner_update = std::move(update);
+    }
+
+    /// Called by NewtonKrylov before each linear solve with the iterate
+    /// @p du: the update of set_preconditioner_update(), if any.
+    void
+    update_preconditioner(const VectorType &du) const
+    {
+      if (preconditioner_update)
+        preconditioner_update(du);
+    }
+
     /// The preconditioner, completed by the bodies driven by a force
     /// (RigidContact::precondition()) and then by the plates' tie
     /// (RigidPlates::precondition()) where there are such.
@@ -222,6 +243,7 @@ namespace qsmpm
     const QuasiStaticResidual<dim>           &residual_evaluator;
     const StepConstraints                    &constraints;
     const Preconditioner<dim>                &preconditioner;
+    std::function<void(const VectorType &)>   preconditioner_update;
     const std::vector<const LocalStiffness *> stabilizations;
     const SurfaceTractions<dim>              *pressures;
     const RigidContact<dim>                  *contact;

@@ -56,6 +56,23 @@ namespace qsmpm
         std::declval<const VectorType &>(),
         std::declval<VectorType &>()))>;
 
+    /// Whether the operator has update_preconditioner(du) (see
+    /// NewtonKrylov).
+    template <typename Operator, typename VectorType, typename = void>
+    struct UpdatesPreconditioner : std::false_type
+    {
+    };
+
+    template <typename Operator, typename VectorType>
+    struct UpdatesPreconditioner<
+      Operator,
+      VectorType,
+      std::void_t<
+        decltype(std::declval<const Operator &>().update_preconditioner(
+          std::declval<const VectorType &>()))>> : std::true_type
+    {
+    };
+
     /**
      * An operator's preconditioner as deal.II's solvers want it (a vmult()),
      * mapping residual-like Krylov vectors to admissible corrections; shared
@@ -209,6 +226,9 @@ namespace qsmpm
    *     where periodic);
    *   - void precondition(VectorType &dst, const VectorType &src) const;
    *     (an approximation of J^{-1}, or a copy for none);
+   *   - optionally void update_preconditioner(const VectorType &du) const;
+   *     (called before the linear solve of every Newton iteration with
+   *     the iterate, for a preconditioner of the Jacobian there);
    *   - double typical_increment_norm() const;
    *     (the size of increments where du = 0 gives none, for the
    *     finite-difference step of JacobianFreeOperator).
@@ -369,6 +389,10 @@ namespace qsmpm
                         eisenstat_walker(forcing, norm, previous_norm, target) :
                         no_further_than(forcing, target, norm);
           previous_norm = norm;
+
+          if constexpr (internal::UpdatesPreconditioner<Operator,
+                                                        VectorType>::value)
+            op.update_preconditioner(du);
 
           // A.1 step 4: J s = -R with constrained components of s zero.
           rhs = R;

@@ -60,6 +60,11 @@ namespace qsmpm
     /// Rebuild early once GMRES needs this many times more iterations per
     /// Newton iteration than in the first step after the last rebuild.
     double preconditioner_reuse_growth = 2.;
+    /// "load step": the preconditioner is built from the tangents of the
+    /// committed state (the paper); "Newton iteration": in every Newton
+    /// iteration from the consistent tangents at the iterate
+    /// (QuasiStaticProblem, small strain in plane and 3D problems).
+    std::string preconditioner_update = "load step";
     /// GMRES's tolerance in each Newton iteration.
     enum class Forcing
     {
