@@ -3,6 +3,7 @@
 #ifndef qsmpm_tests_prm_text_h
 #define qsmpm_tests_prm_text_h
 
+#include <algorithm>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <map>
@@ -45,6 +46,23 @@ namespace qsmpm_tests
     }
     const int ierr = MPI_Barrier(MPI_COMM_WORLD);
     AssertThrowMPI(ierr);
+  }
+
+  /// max |u_a - u_b| / max |u_a| over the points of two runs' displacement
+  /// maps (point_displacements()).
+  template <int dim>
+  double
+  max_relative_difference(
+    const std::map<dealii::types::particle_index, dealii::Tensor<1, dim>> &a,
+    const std::map<dealii::types::particle_index, dealii::Tensor<1, dim>> &b)
+  {
+    double largest = 0., difference = 0.;
+    for (const auto &[id, u] : a)
+      {
+        largest    = std::max(largest, u.norm());
+        difference = std::max(difference, (u - b.at(id)).norm());
+      }
+    return difference / largest;
   }
 
   /// The displacements of all points (of all ranks of @p communicator,

@@ -98,13 +98,7 @@ namespace
   double
   difference(const Run &a, const Run &b)
   {
-    double largest = 0., diff = 0.;
-    for (const auto &[id, u] : a.displacement)
-      {
-        largest = std::max(largest, u.norm());
-        diff    = std::max(diff, (u - b.displacement.at(id)).norm());
-      }
-    return diff / largest;
+    return max_relative_difference(a.displacement, b.displacement);
   }
 } // namespace
 

@@ -306,12 +306,10 @@ namespace qsmpm
       static constexpr unsigned int max_dofs =
         ShapeCache<dim>::max_dofs_per_group;
 
-      /// bbar of the cell @p c of @p cache, with the points' volumes at
-      /// @p volume_offset; the sums set to zero.
+      /// Start the cell @p c of @p cache: bbar and the sums set to zero.
       void
       reinit(const ShapeCache<dim> &cache,
              const unsigned int     c,
-             const unsigned int     volume_offset,
              const bool             symmetric_form)
       {
         symmetric = symmetric_form;
@@ -320,28 +318,17 @@ namespace qsmpm
         std::fill(m_sum.begin(), m_sum.begin() + n_dofs, 0.);
         std::fill(n_sum.begin(), n_sum.begin() + n_dofs, 0.);
         std::fill(g_sum.begin(), g_sum.begin() + n_dofs, 0.);
-        kappa_sum         = 0.;
-        double      W     = 0.;
-        const auto &range = cache.cell(c);
-        for (unsigned int p = range.first_point; p < range.end_point; ++p)
-          {
-            const double          w      = cache.properties(p)[volume_offset];
-            const Tensor<1, dim> *grad_N = cache.gradients(c, p, buffer);
-            const unsigned short *nodes  = cache.nodes(p);
-            for (unsigned int v = 0; v < cache.stencil_size(p); ++v)
-              for (unsigned int a = 0; a < dim; ++a)
-                bbar[nodes[v] * dim + a] += w * grad_N[v][a];
-            W += w;
-          }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          bbar[i] /= W;
+        kappa_sum    = 0.;
+        total_weight = 0.;
       }
 
       /**
        * The terms of one point (gradients @p grad_N on its @p stencil of
        * the group's @p nodes, tangent @p C, Kirchhoff stress @p tau at
-       * finite strain): those in g_p alone into @p K_cell, the others into
-       * the cell's sums.
+       * finite strain, integrated over @p volume; @p weight its volume at
+       * the start of the step, its weight in the mean): those in g_p alone
+       * into @p K_cell, the others and its part of bbar into the cell's
+       * sums, with the gradients the stiffness reads anyway.
        */
       void
       add_point(const Tensor<1, dim>          *grad_N,
@@ -350,8 +337,13 @@ namespace qsmpm
                 const Tensor<4, dim>          &C,
                 const SymmetricTensor<2, dim> *tau,
                 const double                   volume,
+                const double                   weight,
                 FullMatrix<double>            &K_cell)
       {
+        for (unsigned int v = 0; v < stencil; ++v)
+          for (unsigned int a = 0; a < dim; ++a)
+            bbar[nodes[v] * dim + a] += weight * grad_N[v][a];
+        total_weight += weight;
         // Y = C : I (plus tau at finite strain), Y' = I : C, kappa.
         Tensor<2, dim> Y, Y_left;
         for (unsigned int a = 0; a < dim; ++a)
@@ -408,8 +400,10 @@ namespace qsmpm
       /// form bbar (x) n_sum + kappa_sum bbar (x) bbar - bbar (x) g_sum -
       /// g_sum (x) bbar.
       void
-      add_cell(FullMatrix<double> &K_cell) const
+      add_cell(FullMatrix<double> &K_cell)
       {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          bbar[i] /= total_weight;
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j < n_dofs; ++j)
             K_cell(i, j) +=
@@ -420,11 +414,11 @@ namespace qsmpm
       }
 
     private:
-      bool                                     symmetric = true;
-      unsigned int                             n_dofs    = 0;
-      std::array<double, max_dofs>             bbar, m_sum, n_sum, g_sum;
-      double                                   kappa_sum = 0.;
-      typename ShapeCache<dim>::GradientBuffer buffer;
+      bool                         symmetric = true;
+      unsigned int                 n_dofs    = 0;
+      std::array<double, max_dofs> bbar, m_sum, n_sum, g_sum;
+      double                       kappa_sum    = 0.;
+      double                       total_weight = 0.;
     };
 
 
@@ -665,10 +659,7 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         cell_tangents.reinit(cache, c, strain_increments);
         if (fbar)
-          mean_volume_terms.reinit(cache,
-                                   c,
-                                   points.get_offsets().volume,
-                                   !cell_tangents.is_finite_strain());
+          mean_volume_terms.reinit(cache, c, !cell_tangents.is_finite_strain());
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const Tensor<1, dim> *grad_N  = cache.gradients(c, p, buffer);
@@ -703,16 +694,17 @@ namespace qsmpm
                                  cache.position(p)[0],
                                  K_cell);
             if (fbar)
-              mean_volume_terms.add_point(grad_N,
-                                          stencil,
-                                          nodes,
-                                          C,
-                                          cell_tangents.is_finite_strain() ?
-                                            &cell_tangents.kirchhoff_stress(
-                                              p - range.first_point) :
-                                            nullptr,
-                                          volume,
-                                          K_cell);
+              mean_volume_terms.add_point(
+                grad_N,
+                stencil,
+                nodes,
+                C,
+                cell_tangents.is_finite_strain() ?
+                  &cell_tangents.kirchhoff_stress(p - range.first_point) :
+                  nullptr,
+                volume,
+                cache.properties(p)[points.get_offsets().volume],
+                K_cell);
           }
         if (fbar)
           mean_volume_terms.add_cell(K_cell);
