@@ -252,14 +252,14 @@ namespace qsmpm
 
   template <int dim>
   void
-  QuasiStaticResidual<dim>::strain_increments(
-    const TrilinosWrappers::MPI::Vector  &du,
-    std::vector<SymmetricTensor<2, dim>> &increments) const
+  QuasiStaticResidual<dim>::iterate_kinematics(
+    const TrilinosWrappers::MPI::Vector &du,
+    IterateKinematics<dim>              &kinematics) const
   {
     const LoopKind kind = loop_kind();
-    AssertThrow(!kind.finite_strain && !kind.axisymmetric,
-                ExcMessage("strain_increments() is for small strain in "
-                           "plane and 3D problems."));
+    AssertThrow(!kind.axisymmetric,
+                ExcMessage("iterate_kinematics() is for plane and 3D "
+                           "problems."));
     update_packed_state();
     const double *du_values = du.trilinos_vector()[0];
     if (!same_layout)
@@ -267,7 +267,11 @@ namespace qsmpm
         import_ghosts(du, du_ghosted);
         du_values = du_ghosted.trilinos_vector()[0];
       }
-    increments.resize(cache.n_points());
+    const unsigned int n = cache.n_points();
+    kinematics.strain_increments.resize(kind.finite_strain ? 0 : n);
+    kinematics.deformation_increments.resize(kind.finite_strain ? n : 0);
+    kinematics.mean_volume_changes.resize(kind.finite_strain && kind.fbar ? n :
+                                                                            0);
     constexpr unsigned int block_cells = 8;
     for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
       {
@@ -276,9 +280,19 @@ namespace qsmpm
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         scratch.start_block(first, n_points, state_layout.n_state);
         block_kinematics(kind, c0, c1, du_values);
-        std::copy(scratch.strain_increment.begin(),
-                  scratch.strain_increment.begin() + n_points,
-                  increments.begin() + first);
+        if (!kind.finite_strain)
+          std::copy(scratch.strain_increment.begin(),
+                    scratch.strain_increment.begin() + n_points,
+                    kinematics.strain_increments.begin() + first);
+        else
+          for (unsigned int i = 0; i < n_points; ++i)
+            {
+              kinematics.deformation_increments[first + i] =
+                unit_symmetric_tensor<dim>() + scratch.grad_du[i];
+              if (kind.fbar)
+                kinematics.mean_volume_changes[first + i] =
+                  scratch.mean_volume_change[i];
+            }
       }
   }
 

@@ -98,6 +98,13 @@ namespace qsmpm
      * they are integrated over: the small-strain tangent on the current
      * volume (one batched call of the model per cell), or at finite strain
      * the tangent of the first Piola stress on the initial volume.
+     *
+     * At a Newton iterate (IterateKinematics) each point's consistent
+     * tangent there instead; at finite strain, where the residual's
+     * stress tau Delta F^{-T} and its virtual gradients grad_n N follow
+     * the iterate's Delta F, the tangent is c - tau_al delta_kb for the
+     * current gradients Delta F^{-T} grad_n N (spatial_gradients()), the
+     * form it has at Delta F = I.
      */
     template <int dim>
     class CellTangents
@@ -111,6 +118,8 @@ namespace qsmpm
         , offsets(points.get_offsets())
         , layout(points.batch_layout())
         , finite_strain(points.get_formulation().finite_strain())
+        , fbar(points.get_formulation().fbar())
+        , new_state(layout.n_state)
       {
       }
 
@@ -119,12 +128,13 @@ namespace qsmpm
        * @p cache, in their order.
        */
       void
-      reinit(const ShapeCache<dim>                      &cache,
-             const unsigned int                          c,
-             const std::vector<SymmetricTensor<2, dim>> *increments = nullptr)
+      reinit(const ShapeCache<dim>        &cache,
+             const unsigned int            c,
+             const IterateKinematics<dim> *iterate = nullptr)
       {
         const auto        &range = cache.cell(c);
         const unsigned int n     = range.end_point - range.first_point;
+        at_iterate               = iterate != nullptr;
         // Grown to the largest cell, then reused: no allocation per cell.
         if (tangents.size() < n)
           {
@@ -132,11 +142,13 @@ namespace qsmpm
             tangents.resize(n);
             volumes.resize(n);
             kirchhoff_stresses.resize(finite_strain ? n : 0);
+            inverse_increments.resize(finite_strain ? n : 0);
+            volume_ratios.resize(finite_strain ? n : 0);
           }
         if (finite_strain)
           for (unsigned int i = 0; i < n; ++i)
-            finite_strain_tangent(cache, range.first_point + i, i);
-        else if (increments != nullptr)
+            finite_strain_tangent(cache, range.first_point + i, i, iterate);
+        else if (iterate != nullptr)
           for (unsigned int i = 0; i < n; ++i)
             {
               const unsigned int    p    = range.first_point + i;
@@ -146,8 +158,8 @@ namespace qsmpm
                                                         offsets,
                                                         layout.n_state,
                                                         cache.position(p));
-              tangents[i] =
-                Tensor<4, dim>(iterate_tangent(state, (*increments)[p]));
+              tangents[i] = Tensor<4, dim>(
+                iterate_tangent(state, iterate->strain_increments[p]));
               volumes[i] = data[offsets.volume];
             }
         else
@@ -199,6 +211,36 @@ namespace qsmpm
         return finite_strain;
       }
 
+      /**
+       * The gradients the stiffness of the @p i-th point reads, from the
+       * gradients @p grad_N (on the grid, the configuration at the step's
+       * start) of its @p stencil: at a finite-strain iterate the current
+       * ones, Delta F^{-T} grad_N, in @p buffer; otherwise @p grad_N.
+       */
+      const Tensor<1, dim> *
+      spatial_gradients(const unsigned int    i,
+                        const Tensor<1, dim> *grad_N,
+                        const unsigned int    stencil,
+                        Tensor<1, dim>       *buffer) const
+      {
+        if (!finite_strain || !at_iterate)
+          return grad_N;
+        const Tensor<2, dim> inverse_transpose =
+          transpose(inverse_increments[i]);
+        for (unsigned int v = 0; v < stencil; ++v)
+          buffer[v] = inverse_transpose * grad_N[v];
+        return buffer;
+      }
+
+      /// The weight of the @p i-th point's volume change in F-bar's mean,
+      /// relative to its volume at the step's start: det Delta F at a
+      /// finite-strain iterate, 1 otherwise.
+      double
+      volume_ratio(const unsigned int i) const
+      {
+        return finite_strain ? volume_ratios[i] : 1.;
+      }
+
     private:
       /**
        * The consistent tangent at the strain increment @p increment from
@@ -225,31 +267,84 @@ namespace qsmpm
         return model.tangent(state);
       }
 
+      /**
+       * c - tau_al delta_kb of the point @p p (the @p i-th of its cell) on
+       * its initial volume: at @p iterate's Delta F if given (with F-bar's
+       * scaling to the cell's mean volume change, as in the residual),
+       * otherwise, or where the model cannot give it there, at Delta F = I,
+       * where d(tau Delta F^{-T}) = c : G - tau G^T for G = grad_n d(du)
+       * (see QuasiStaticResidual).
+       */
       void
-      finite_strain_tangent(const ShapeCache<dim> &cache,
-                            const unsigned int     p,
-                            const unsigned int     i)
+      finite_strain_tangent(const ShapeCache<dim>        &cache,
+                            const unsigned int            p,
+                            const unsigned int            i,
+                            const IterateKinematics<dim> *iterate)
       {
         const double         *data  = cache.properties(p);
         const PointState<dim> state = MaterialPointSet<dim>::read_point_state(
           data, offsets, layout.n_state, cache.position(p));
-        // At Delta F = I: d(tau Delta F^{-T}) = c : G - tau G^T for
-        // G = grad_n d(du), on the initial volume (see
-        // QuasiStaticResidual).
         FiniteStrainKinematics<dim> kinematics;
         kinematics.F_old =
           Utils::read_tensor<dim>(data + offsets.deformation_gradient);
-        kinematics.delta_F = unit_symmetric_tensor<dim>();
-        kinematics.F       = kinematics.F_old;
-        Tensor<4, dim> &C  = tangents[i];
-        C                  = model.kirchhoff_tangent(state, kinematics);
-        const SymmetricTensor<2, dim> tau = data[offsets.J] * state.stress;
+        Tensor<4, dim>          &C   = tangents[i];
+        SymmetricTensor<2, dim> &tau = kirchhoff_stresses[i];
+        volumes[i]                   = data[offsets.initial_volume];
+        if (iterate == nullptr ||
+            !iterate_kirchhoff_tangent(state, kinematics, *iterate, p, i))
+          {
+            kinematics.delta_F    = unit_symmetric_tensor<dim>();
+            kinematics.F          = kinematics.F_old;
+            C                     = model.kirchhoff_tangent(state, kinematics);
+            tau                   = data[offsets.J] * state.stress;
+            inverse_increments[i] = unit_symmetric_tensor<dim>();
+            volume_ratios[i]      = 1.;
+          }
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int l = 0; l < dim; ++l)
               C[a][k][k][l] -= tau[a][l];
-        kirchhoff_stresses[i] = tau;
-        volumes[i]            = data[offsets.initial_volume];
+      }
+
+      /**
+       * The tangent c and the stress tau of the @p i-th point (the point
+       * @p p of the cache) at @p iterate into tangents[i] and
+       * kirchhoff_stresses[i], and its Delta F^{-1} and det Delta F;
+       * false where the point is inverted there or the model gives no
+       * finite tangent.
+       */
+      bool
+      iterate_kirchhoff_tangent(const PointState<dim>        &state,
+                                FiniteStrainKinematics<dim>  &kinematics,
+                                const IterateKinematics<dim> &iterate,
+                                const unsigned int            p,
+                                const unsigned int            i)
+      {
+        const Tensor<2, dim> &delta_F = iterate.deformation_increments[p];
+        const double          det     = determinant(delta_F);
+        const double mean = fbar ? iterate.mean_volume_changes[p] : det;
+        if (!(det > 0. && mean > 0.))
+          return false;
+        kinematics.delta_F = std::pow(mean / det, 1. / dim) * delta_F;
+        kinematics.F       = kinematics.delta_F * kinematics.F_old;
+        try
+          {
+            tangents[i] = model.kirchhoff_tangent(state, kinematics);
+            model.update_kirchhoff_stress(state,
+                                          kinematics,
+                                          kirchhoff_stresses[i],
+                                          ArrayView<double>(new_state));
+          }
+        catch (const std::exception &)
+          {
+            return false;
+          }
+        if (!std::isfinite(tangents[i].norm()) ||
+            !std::isfinite(kirchhoff_stresses[i].norm()))
+          return false;
+        inverse_increments[i] = invert(delta_F);
+        volume_ratios[i]      = det;
+        return true;
       }
 
       const ConstitutiveModel<dim>                  &model;
@@ -257,10 +352,15 @@ namespace qsmpm
       const typename MaterialPointSet<dim>::Offsets &offsets;
       const typename PointStateBatch<dim>::Layout    layout;
       const bool                                     finite_strain;
+      const bool                                     fbar;
+      bool                                           at_iterate = false;
+      std::vector<double>                            new_state;
       std::vector<SymmetricTensor<4, dim>>           symmetric;
       std::vector<Tensor<4, dim>>                    tangents;
       std::vector<double>                            volumes;
       std::vector<SymmetricTensor<2, dim>>           kirchhoff_stresses;
+      std::vector<Tensor<2, dim>>                    inverse_increments;
+      std::vector<double>                            volume_ratios;
     };
 
 
@@ -621,22 +721,19 @@ namespace qsmpm
 
   template <int dim>
   void
-  TangentAssembler<dim>::assemble(
-    const BackgroundGrid<dim>                  &grid,
-    const MaterialPointSet<dim>                &points,
-    const ShapeCache<dim>                      &cache,
-    const AffineConstraints<double>            &constraints,
-    const GhostPenalty<dim>                    *ghost_penalty,
-    const AdditionalTerm                       &additional_term,
-    const Tangent                               kind,
-    const std::vector<SymmetricTensor<2, dim>> *strain_increments,
-    const bool                                  fbar_terms)
+  TangentAssembler<dim>::assemble(const BackgroundGrid<dim>       &grid,
+                                  const MaterialPointSet<dim>     &points,
+                                  const ShapeCache<dim>           &cache,
+                                  const AffineConstraints<double> &constraints,
+                                  const GhostPenalty<dim>      *ghost_penalty,
+                                  const AdditionalTerm         &additional_term,
+                                  const Tangent                 kind,
+                                  const IterateKinematics<dim> *iterate,
+                                  const bool                    fbar_terms)
   {
-    AssertThrow(strain_increments == nullptr ||
-                  (!points.get_formulation().finite_strain() &&
-                   !points.get_formulation().axisymmetric),
-                ExcMessage("The stiffness at an iterate is for small strain "
-                           "in plane and 3D problems."));
+    AssertThrow(iterate == nullptr || !points.get_formulation().axisymmetric,
+                ExcMessage("The stiffness at an iterate is for plane and 3D "
+                           "problems."));
     CellTangents<dim> cell_tangents(points, kind);
 
     if (pattern_per_step || ghost_penalty != nullptr)
@@ -646,6 +743,7 @@ namespace qsmpm
     std::vector<types::global_dof_index>     dofs;
     typename ShapeCache<dim>::GradientBuffer buffer;
     typename ShapeCache<dim>::ValueBuffer    values;
+    typename ShapeCache<dim>::GradientBuffer spatial;
     const bool axisymmetric = points.get_formulation().axisymmetric;
     // F-bar (plane and 3D problems): the stiffness of the mean volume
     // change (FbarTerms), if asked for. Axisymmetric problems keep K_B.
@@ -657,16 +755,18 @@ namespace qsmpm
         const unsigned int n_dofs = cache.n_dofs(c);
         K_cell.reinit(n_dofs, n_dofs);
         const auto &range = cache.cell(c);
-        cell_tangents.reinit(cache, c, strain_increments);
+        cell_tangents.reinit(cache, c, iterate);
         if (fbar)
           mean_volume_terms.reinit(cache, c, !cell_tangents.is_finite_strain());
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Tensor<1, dim> *grad_N  = cache.gradients(c, p, buffer);
+            const unsigned int    i       = p - range.first_point;
             const unsigned int    stencil = cache.stencil_size(p);
-            const unsigned short *nodes   = cache.nodes(p);
-            const Tensor<4, dim> &C = cell_tangents.C(p - range.first_point);
-            const double volume = cell_tangents.volume(p - range.first_point);
+            const Tensor<1, dim> *grad_N  = cell_tangents.spatial_gradients(
+              i, cache.gradients(c, p, buffer), stencil, spatial.data());
+            const unsigned short *nodes  = cache.nodes(p);
+            const Tensor<4, dim> &C      = cell_tangents.C(i);
+            const double          volume = cell_tangents.volume(i);
             if constexpr (dim == 3)
               add_point_stiffness_factored(
                 grad_N, stencil, nodes, C, volume, K_cell);
@@ -694,17 +794,18 @@ namespace qsmpm
                                  cache.position(p)[0],
                                  K_cell);
             if (fbar)
-              mean_volume_terms.add_point(
-                grad_N,
-                stencil,
-                nodes,
-                C,
-                cell_tangents.is_finite_strain() ?
-                  &cell_tangents.kirchhoff_stress(p - range.first_point) :
-                  nullptr,
-                volume,
-                cache.properties(p)[points.get_offsets().volume],
-                K_cell);
+              mean_volume_terms.add_point(grad_N,
+                                          stencil,
+                                          nodes,
+                                          C,
+                                          cell_tangents.is_finite_strain() ?
+                                            &cell_tangents.kirchhoff_stress(i) :
+                                            nullptr,
+                                          volume,
+                                          cache.properties(
+                                            p)[points.get_offsets().volume] *
+                                            cell_tangents.volume_ratio(i),
+                                          K_cell);
           }
         if (fbar)
           mean_volume_terms.add_cell(K_cell);

@@ -440,7 +440,7 @@ namespace qsmpm
   template <int dim>
   void
   QuasiStaticProblem<dim>::assemble_tangent(
-    const std::vector<SymmetricTensor<2, dim>> *strain_increments)
+    const IterateKinematics<dim> *iterate)
   {
     tangent.assemble(background_grid,
                      points(),
@@ -449,8 +449,8 @@ namespace qsmpm
                      stabilization(),
                      additional_stiffness(true),
                      preconditioner_tangent,
-                     strain_increments,
-                     /*fbar_terms=*/strain_increments != nullptr);
+                     iterate,
+                     /*fbar_terms=*/iterate != nullptr);
   }
 
 
@@ -459,8 +459,8 @@ namespace qsmpm
   void
   QuasiStaticProblem<dim>::build_preconditioner_at(const VectorType &du_iterate)
   {
-    residual->strain_increments(du_iterate, iterate_strains);
-    assemble_tangent(&iterate_strains);
+    residual->iterate_kinematics(du_iterate, iterate_kinematics);
+    assemble_tangent(&iterate_kinematics);
     // A factorization starts afresh, with pivoting: KLU's refactorization
     // keeps the pivot order, and so the fill, of its last full
     // factorization, which for the nearly singular tangents of perfect
@@ -605,11 +605,10 @@ namespace qsmpm
           preconditioner.needs_matrix())
         {
           const auto &formulation = points().get_formulation();
-          AssertThrow(!formulation.finite_strain() && !formulation.axisymmetric,
+          AssertThrow(!formulation.axisymmetric,
                       ExcMessage("Nonlinear solver/Preconditioner update = "
-                                 "Newton iteration needs Kinematics = small "
-                                 "strain and a plane or 3D problem (not "
-                                 "Axisymmetric)."));
+                                 "Newton iteration needs a plane or 3D "
+                                 "problem (not Axisymmetric)."));
           op.set_preconditioner_update([this](const VectorType &iterate) {
             build_preconditioner_at(iterate);
           });

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <limits>
 #include <memory>
+#include <qsmpm/assembly/iterate_kinematics.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/materials/constitutive_model.h>
 #include <qsmpm/particles/material_point_set.h>
@@ -122,15 +123,16 @@ namespace qsmpm
     set_external_force(const TrilinosWrappers::MPI::Vector &f_ext);
 
     /**
-     * The strain increments of the points at the increment @p du, with
-     * F-bar's mean volume change if the formulation has it: what
-     * evaluate() hands the constitutive model at small strain, for the
-     * consistent tangent at an iterate (TangentAssembler). In the order of
-     * the cache's points. Small strain, plane and 3D only.
+     * The kinematics of the points at the increment @p du, as evaluate()
+     * hands them to the constitutive model: at small strain the strain
+     * increments (F-bar's mean volume change included), at finite strain
+     * the deformation increments Delta F and, with F-bar, their cells'
+     * mean volume changes. For the stiffness at a Newton iterate
+     * (TangentAssembler). Plane and 3D problems only.
      */
     void
-    strain_increments(const TrilinosWrappers::MPI::Vector  &du,
-                      std::vector<SymmetricTensor<2, dim>> &increments) const;
+    iterate_kinematics(const TrilinosWrappers::MPI::Vector &du,
+                       IterateKinematics<dim>              &kinematics) const;
 
     /// R = f_ext - f_int(du). Does not change any point.
     Evaluation

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <qsmpm/assembly/ghost_penalty.h>
+#include <qsmpm/assembly/iterate_kinematics.h>
 #include <qsmpm/grid/background_grid.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
@@ -67,13 +68,19 @@ namespace qsmpm
      * across faces then join the pattern, made anew for the step), plus
      * @p additional_term if given.
      *
-     * With @p strain_increments (small strain, plane and 3D; one per point
-     * of @p cache, QuasiStaticResidual::strain_increments() of a Newton
-     * iterate), K is instead the stiffness at that iterate: the model's
-     * ConstitutiveModel::consistent_tangent() at each point's increment,
-     * so that K is the Jacobian of the residual there (elastoplastic where
-     * the iterate yields), which the tangents of the committed state are
-     * not.
+     * With @p iterate (plane and 3D; QuasiStaticResidual::
+     * iterate_kinematics() of a Newton iterate), K is instead the
+     * stiffness at that iterate: at small strain the model's
+     * ConstitutiveModel::consistent_tangent() at each point's strain
+     * increment; at finite strain its kirchhoff_tangent() and Kirchhoff
+     * stress at the point's Delta F, with the gradients Delta F^{-T}
+     * grad_n N of the residual's tau Delta F^{-T} grad_n N, and F-bar's
+     * mean weighted with each point's det Delta F. So K is the Jacobian of
+     * the residual there (elastoplastic where the iterate yields; with the
+     * geometry and stress of the iterate at finite strain), which the
+     * tangents of the committed state are not. A point whose tangent the
+     * model cannot give there (an exception, a value that is not finite,
+     * an inverted point) gets that of its committed state.
      *
      * With @p fbar_terms and F-bar (plane and 3D problems), K holds the
      * terms of the cell's mean volume change, without which it is not the
@@ -86,16 +93,15 @@ namespace qsmpm
      * plasticity with F-bar within the Newton tolerance (doc/benchmarks.md).
      */
     void
-    assemble(
-      const BackgroundGrid<dim>                  &grid,
-      const MaterialPointSet<dim>                &points,
-      const ShapeCache<dim>                      &cache,
-      const AffineConstraints<double>            &constraints,
-      const GhostPenalty<dim>                    *ghost_penalty   = nullptr,
-      const AdditionalTerm                       &additional_term = {},
-      const Tangent                               kind = Tangent::secant,
-      const std::vector<SymmetricTensor<2, dim>> *strain_increments = nullptr,
-      const bool                                  fbar_terms        = false);
+    assemble(const BackgroundGrid<dim>       &grid,
+             const MaterialPointSet<dim>     &points,
+             const ShapeCache<dim>           &cache,
+             const AffineConstraints<double> &constraints,
+             const GhostPenalty<dim>         *ghost_penalty   = nullptr,
+             const AdditionalTerm            &additional_term = {},
+             const Tangent                    kind            = Tangent::secant,
+             const IterateKinematics<dim>    *iterate         = nullptr,
+             const bool                       fbar_terms      = false);
 
     const TrilinosWrappers::SparseMatrix &
     matrix() const;

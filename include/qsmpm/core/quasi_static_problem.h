@@ -319,10 +319,9 @@ namespace qsmpm
     prepare_step(const double t_old, const double t_new);
 
     /// The preconditioner's matrix (tangent) from the committed state, or
-    /// with @p strain_increments at a Newton iterate, with F-bar's terms.
+    /// with @p iterate at a Newton iterate, with F-bar's terms.
     void
-    assemble_tangent(
-      const std::vector<SymmetricTensor<2, dim>> *strain_increments);
+    assemble_tangent(const IterateKinematics<dim> *iterate);
 
     /// The preconditioner of the stiffness at the Newton iterate
     /// @p du_iterate (Nonlinear solver/Preconditioner update = Newton
@@ -551,13 +550,13 @@ namespace qsmpm
     /// points' loading slopes and is tried with the secant (reject_step());
     /// cleared when a step is accepted.
     bool secant_retry = false;
-    /// The points' strain increments at a Newton iterate
+    /// The points' kinematics at a Newton iterate
     /// (build_preconditioner_at()).
-    std::vector<SymmetricTensor<2, dim>> iterate_strains;
-    PreconditionerReuse                  preconditioner_reuse;
-    PathFollowingSetup<dim>              path_following;
-    StepConstraints                      step_constraints;
-    VectorType                           du;
+    IterateKinematics<dim>  iterate_kinematics;
+    PreconditionerReuse     preconditioner_reuse;
+    PathFollowingSetup<dim> path_following;
+    StepConstraints         step_constraints;
+    VectorType              du;
     /// With Initial guess = extrapolation: the increments of the last
     /// converged load step and its load-factor increment (0: none, the
     /// next step starts from the linear predictor).
