@@ -23,6 +23,16 @@
 // differs from the Jacobian's by 0.14-0.16 relative (measured with the terms
 // left out: every F-bar case fails); at a finite-strain iterate the mean is
 // weighted with each point's det Delta F (unweighted: 1.5e-4 to 2.1e-4).
+//
+// Von Mises plasticity at small strain (yield stress 0.05, E = 50: the
+// iterate du != 0 yields), plane and axisymmetric, with and without F-bar:
+// the matrix of the consistent tangents at the iterate (measured 9e-9 to
+// 1.5e-8; the committed, elastic tangents: 0.38-0.42). Axisymmetric
+// (r, z): the hoop strain's stiffness with the 3D tangent's hoop entries
+// (ConstitutiveModel::consistent_tangent_axisymmetric(); those of an
+// isotropic tangent taken from the in-plane one: 1.4e-2 to 1.5e-2 at the
+// yielding iterate), and F-bar's terms of the mean of the three normal
+// strains (without them: 0.12-0.17).
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -33,6 +43,7 @@
 #include <qsmpm/loading/displacement_constraints.h>
 #include <qsmpm/materials/hencky.h>
 #include <qsmpm/materials/linear_elastic.h>
+#include <qsmpm/materials/von_mises.h>
 #include <qsmpm/solvers/jacobian_free_operator.h>
 
 template <int dim>
@@ -58,9 +69,11 @@ struct Operator
   }
 };
 
+// yield_stress > 0: von Mises plasticity (small strain) instead of linear
+// elasticity; the iterate du != 0 then yields at most points.
 template <int dim>
 void
-test(const qsmpm::Formulation &formulation)
+test(const qsmpm::Formulation &formulation, const double yield_stress = 0.)
 {
   const bool                    finite_strain = formulation.finite_strain();
   qsmpm::BackgroundGrid<dim>    grid(MPI_COMM_WORLD);
@@ -75,6 +88,8 @@ test(const qsmpm::Formulation &formulation)
   std::unique_ptr<qsmpm::ConstitutiveModel<dim>> model;
   if (finite_strain)
     model = std::make_unique<qsmpm::Hencky<dim>>(50., 0.3);
+  else if (yield_stress > 0.)
+    model = std::make_unique<qsmpm::VonMises<dim>>(50., 0.3, yield_stress);
   else
     model = std::make_unique<qsmpm::LinearElastic<dim>>(50., 0.3);
   qsmpm::MaterialPointSet<dim> points(grid, *model, formulation);
@@ -175,6 +190,8 @@ test(const qsmpm::Formulation &formulation)
       constraints.set_zero(Ks);
       Js += Ks; // J s = -K s
       deallog << dim << "D, "
+              << (formulation.axisymmetric ? "axisymmetric, " : "")
+              << (yield_stress > 0. ? "von Mises, " : "")
               << (finite_strain      ? "finite strain (hencky), " :
                   formulation.gimp() ? "small strain, " :
                                        "")
@@ -209,4 +226,19 @@ main(int argc, char *argv[])
       test<2>(formulation);
       test<3>(formulation);
     }
+  // Plasticity at small strain: the consistent tangents at the iterate.
+  // Axisymmetric (r, z): the hoop strain's stiffness with the 3D tangent's
+  // hoop entries (ConstitutiveModel::consistent_tangent_axisymmetric()),
+  // and with F-bar the mean of three normal strains.
+  qsmpm::Formulation axisymmetric;
+  axisymmetric.axisymmetric = true;
+  for (auto formulation : {linear, axisymmetric})
+    for (const bool fbar : {false, true})
+      {
+        if (fbar)
+          formulation.volumetric = qsmpm::VolumetricTreatment::fbar;
+        if (formulation.axisymmetric)
+          test<2>(formulation);
+        test<2>(formulation, /*yield_stress=*/0.05);
+      }
 }

@@ -257,9 +257,9 @@ namespace qsmpm
     IterateKinematics<dim>              &kinematics) const
   {
     const LoopKind kind = loop_kind();
-    AssertThrow(!kind.axisymmetric,
-                ExcMessage("iterate_kinematics() is for plane and 3D "
-                           "problems."));
+    AssertThrow(!(kind.axisymmetric && kind.finite_strain),
+                ExcMessage("iterate_kinematics() is for small strain in "
+                           "axisymmetric problems."));
     update_packed_state();
     const double *du_values = du.trilinos_vector()[0];
     if (!same_layout)
@@ -269,6 +269,7 @@ namespace qsmpm
       }
     const unsigned int n = cache.n_points();
     kinematics.strain_increments.resize(kind.finite_strain ? 0 : n);
+    kinematics.hoop_strain_increments.resize(kind.axisymmetric ? n : 0);
     kinematics.deformation_increments.resize(kind.finite_strain ? n : 0);
     kinematics.mean_volume_changes.resize(kind.finite_strain && kind.fbar ? n :
                                                                             0);
@@ -280,6 +281,10 @@ namespace qsmpm
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         scratch.start_block(first, n_points, state_layout.n_state);
         block_kinematics(kind, c0, c1, du_values);
+        if (kind.axisymmetric)
+          std::copy(scratch.hoop_increment.begin(),
+                    scratch.hoop_increment.begin() + n_points,
+                    kinematics.hoop_strain_increments.begin() + first);
         if (!kind.finite_strain)
           std::copy(scratch.strain_increment.begin(),
                     scratch.strain_increment.begin() + n_points,

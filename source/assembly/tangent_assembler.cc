@@ -112,13 +112,16 @@ namespace qsmpm
     public:
       CellTangents(const MaterialPointSet<dim>                  &points,
                    const typename TangentAssembler<dim>::Tangent kind =
-                     TangentAssembler<dim>::Tangent::secant)
+                     TangentAssembler<dim>::Tangent::secant,
+                   const bool hoop_tangents = false)
         : model(points.get_model())
         , loading(kind == TangentAssembler<dim>::Tangent::loading)
         , offsets(points.get_offsets())
         , layout(points.batch_layout())
         , finite_strain(points.get_formulation().finite_strain())
         , fbar(points.get_formulation().fbar())
+        , with_hoop(hoop_tangents && points.get_formulation().axisymmetric &&
+                    !finite_strain)
         , new_state(layout.n_state)
       {
       }
@@ -144,21 +147,21 @@ namespace qsmpm
             kirchhoff_stresses.resize(finite_strain ? n : 0);
             inverse_increments.resize(finite_strain ? n : 0);
             volume_ratios.resize(finite_strain ? n : 0);
+            hoop_tangents.resize(with_hoop ? n : 0);
           }
-        if (finite_strain)
+        if (with_hoop)
+          for (unsigned int i = 0; i < n; ++i)
+            axisymmetric_tangent(cache, range.first_point + i, i, iterate);
+        else if (finite_strain)
           for (unsigned int i = 0; i < n; ++i)
             finite_strain_tangent(cache, range.first_point + i, i, iterate);
         else if (iterate != nullptr)
           for (unsigned int i = 0; i < n; ++i)
             {
-              const unsigned int    p    = range.first_point + i;
-              const double         *data = cache.properties(p);
-              const PointState<dim> state =
-                MaterialPointSet<dim>::read_point_state(data,
-                                                        offsets,
-                                                        layout.n_state,
-                                                        cache.position(p));
-              tangents[i] = Tensor<4, dim>(
+              const unsigned int    p     = range.first_point + i;
+              const double         *data  = cache.properties(p);
+              const PointState<dim> state = point_state(cache, p);
+              tangents[i]                 = Tensor<4, dim>(
                 iterate_tangent(state, iterate->strain_increments[p]));
               volumes[i] = data[offsets.volume];
             }
@@ -232,6 +235,16 @@ namespace qsmpm
         return buffer;
       }
 
+      /**
+       * With hoop tangents (axisymmetric, small strain): the 3D tangent of
+       * the @p i-th point, index 2 the hoop direction.
+       */
+      const SymmetricTensor<4, 3> &
+      hoop_tangent(const unsigned int i) const
+      {
+        return hoop_tangents[i];
+      }
+
       /// The weight of the @p i-th point's volume change in F-bar's mean,
       /// relative to its volume at the step's start: det Delta F at a
       /// finite-strain iterate, 1 otherwise.
@@ -242,6 +255,16 @@ namespace qsmpm
       }
 
     private:
+      /// The committed state of the point @p p of @p cache.
+      PointState<dim>
+      point_state(const ShapeCache<dim> &cache, const unsigned int p) const
+      {
+        return MaterialPointSet<dim>::read_point_state(cache.properties(p),
+                                                       offsets,
+                                                       layout.n_state,
+                                                       cache.position(p));
+      }
+
       /**
        * The consistent tangent at the strain increment @p increment from
        * @p state; where the model cannot give it (the Mohr-Coulomb
@@ -268,6 +291,51 @@ namespace qsmpm
       }
 
       /**
+       * Axisymmetric, small strain: the 3D tangent of the point @p p (the
+       * @p i-th of its cell) at @p iterate's strain and hoop strain
+       * increments if given, else at the committed state
+       * (ConstitutiveModel::consistent_tangent_axisymmetric()), into
+       * hoop_tangents[i] and its in-plane part into tangents[i]; where the
+       * model cannot give it at the iterate, that of the committed state.
+       */
+      void
+      axisymmetric_tangent(const ShapeCache<dim>        &cache,
+                           const unsigned int            p,
+                           const unsigned int            i,
+                           const IterateKinematics<dim> *iterate)
+      {
+        const double          *data        = cache.properties(p);
+        const PointState<dim>  state       = point_state(cache, p);
+        const double           hoop_stress = data[offsets.hoop_stress];
+        SymmetricTensor<4, 3> &C3          = hoop_tangents[i];
+        bool                   done        = false;
+        if (iterate != nullptr)
+          try
+            {
+              C3 = model.consistent_tangent_axisymmetric(
+                state,
+                hoop_stress,
+                iterate->strain_increments[p],
+                iterate->hoop_strain_increments[p]);
+              done = std::isfinite(C3.norm());
+            }
+          catch (const std::exception &)
+            {
+            }
+        if (!done)
+          C3 = model.consistent_tangent_axisymmetric(state,
+                                                     hoop_stress,
+                                                     SymmetricTensor<2, dim>(),
+                                                     0.);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int b = 0; b < dim; ++b)
+              for (unsigned int l = 0; l < dim; ++l)
+                tangents[i][a][k][b][l] = C3[a][k][b][l];
+        volumes[i] = data[offsets.volume];
+      }
+
+      /**
        * c - tau_al delta_kb of the point @p p (the @p i-th of its cell) on
        * its initial volume: at @p iterate's Delta F if given (with F-bar's
        * scaling to the cell's mean volume change, as in the residual),
@@ -281,9 +349,8 @@ namespace qsmpm
                             const unsigned int            i,
                             const IterateKinematics<dim> *iterate)
       {
-        const double         *data  = cache.properties(p);
-        const PointState<dim> state = MaterialPointSet<dim>::read_point_state(
-          data, offsets, layout.n_state, cache.position(p));
+        const double               *data  = cache.properties(p);
+        const PointState<dim>       state = point_state(cache, p);
         FiniteStrainKinematics<dim> kinematics;
         kinematics.F_old =
           Utils::read_tensor<dim>(data + offsets.deformation_gradient);
@@ -353,6 +420,7 @@ namespace qsmpm
       const typename PointStateBatch<dim>::Layout    layout;
       const bool                                     finite_strain;
       const bool                                     fbar;
+      const bool                                     with_hoop;
       bool                                           at_iterate = false;
       std::vector<double>                            new_state;
       std::vector<SymmetricTensor<4, dim>>           symmetric;
@@ -361,6 +429,7 @@ namespace qsmpm
       std::vector<SymmetricTensor<2, dim>>           kirchhoff_stresses;
       std::vector<Tensor<2, dim>>                    inverse_increments;
       std::vector<double>                            volume_ratios;
+      std::vector<SymmetricTensor<4, 3>>             hoop_tangents;
     };
 
 
@@ -385,7 +454,10 @@ namespace qsmpm
      *   finite strain (F-bar kinematics, plain virtual gradients):
      *     K = K_B + sum_p Omega_p m_p (x) d_p / dim,
      *
-     * K_B = sum_p Omega_p B_p^T C_p B_p the stiffness without F-bar,
+     * K_B = sum_p Omega_p B_p^T C_p B_p the stiffness without F-bar
+     * (axisymmetric, small strain: dim becomes 3, the three normal strains
+     * share the mean, and g, m, n have the hoop parts of B_p,
+     * add_point_axisymmetric()),
      * m_p,va = dN_v/dx_k Y_ak with Y = C : I the stress of a unit volume
      * change (at finite strain of the material tangent c : I = C : I +
      * tau, without the geometric term -tau G^T, which the virtual
@@ -440,10 +512,6 @@ namespace qsmpm
                 const double                   weight,
                 FullMatrix<double>            &K_cell)
       {
-        for (unsigned int v = 0; v < stencil; ++v)
-          for (unsigned int a = 0; a < dim; ++a)
-            bbar[nodes[v] * dim + a] += weight * grad_N[v][a];
-        total_weight += weight;
         // Y = C : I (plus tau at finite strain), Y' = I : C, kappa.
         Tensor<2, dim> Y, Y_left;
         for (unsigned int a = 0; a < dim; ++a)
@@ -455,12 +523,7 @@ namespace qsmpm
               }
         if (tau != nullptr)
           Y += Tensor<2, dim>(*tau);
-        const double kappa = trace(Y);
-        const double f     = volume / dim;
-        const double f2    = volume * kappa / (dim * dim);
         // The point's m, n and g over its stencil.
-        std::array<double, ShapeCache<dim>::max_stencil_size * dim> m, n, g;
-        const unsigned int size = stencil * dim;
         for (unsigned int v = 0; v < stencil; ++v)
           for (unsigned int a = 0; a < dim; ++a)
             {
@@ -474,26 +537,51 @@ namespace qsmpm
               n[v * dim + a] = n_va;
               g[v * dim + a] = grad_N[v][a];
             }
-        const auto row = [&](const unsigned int i) {
-          return nodes[i / dim] * dim + i % dim;
-        };
-        // -f m (x) g, and in the symmetric form -f g (x) n + f2 g (x) g.
-        for (unsigned int i = 0; i < size; ++i)
-          for (unsigned int j = 0; j < size; ++j)
-            K_cell(row(i), row(j)) -=
-              f * m[i] * g[j] +
-              (symmetric ? f * g[i] * n[j] - f2 * g[i] * g[j] : 0.);
-        for (unsigned int i = 0; i < size; ++i)
-          {
-            m_sum[row(i)] += f * m[i];
-            if (symmetric)
+        add_terms(stencil, nodes, dim, trace(Y), volume, weight, K_cell);
+      }
+
+      /**
+       * add_point() of an axisymmetric problem at small strain, where the
+       * volume change has three parts, the hoop strain d u_r / r among
+       * them, and F-bar shifts all three: dim becomes 3, the virtual
+       * strains of dof (v, a) have the hoop part delta_a0 N_v / r (values
+       * @p N, radius @p r), and Y = C : I, Y' = I : C of the 3D tangent
+       * @p C (index 2 the hoop direction).
+       */
+      void
+      add_point_axisymmetric(const double                *N,
+                             const Tensor<1, dim>        *grad_N,
+                             const unsigned int           stencil,
+                             const unsigned short        *nodes,
+                             const SymmetricTensor<4, 3> &C,
+                             const double                 r,
+                             const double                 volume,
+                             const double                 weight,
+                             FullMatrix<double>          &K_cell)
+      {
+        Tensor<2, 3> Y, Y_left;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int j = 0; j < 3; ++j)
               {
-                n_sum[row(i)] += f * n[i];
-                g_sum[row(i)] += f2 * g[i];
+                Y[a][k] += C[a][k][j][j];
+                Y_left[a][k] += C[j][j][a][k];
               }
-          }
-        if (symmetric)
-          kappa_sum += f2;
+        for (unsigned int v = 0; v < stencil; ++v)
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              const double hoop = a == 0 ? N[v] / r : 0.;
+              double       m_va = hoop * Y[2][2], n_va = hoop * Y_left[2][2];
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  m_va += grad_N[v][k] * Y[a][k];
+                  n_va += Y_left[a][k] * grad_N[v][k];
+                }
+              m[v * dim + a] = m_va;
+              n[v * dim + a] = n_va;
+              g[v * dim + a] = grad_N[v][a] + hoop;
+            }
+        add_terms(stencil, nodes, 3, trace(Y), volume, weight, K_cell);
       }
 
       /// The cell's terms in bbar: m_sum (x) bbar, and in the symmetric
@@ -514,6 +602,51 @@ namespace qsmpm
       }
 
     private:
+      /**
+       * The terms of one point from its m, n and g (in the members of the
+       * same names; @p n_directions the number of normal strains that share
+       * the mean, @p kappa = I : C : I): those in g alone into @p K_cell,
+       * the others and its part of bbar (with weight @p weight) into the
+       * cell's sums.
+       */
+      void
+      add_terms(const unsigned int    stencil,
+                const unsigned short *nodes,
+                const unsigned int    n_directions,
+                const double          kappa,
+                const double          volume,
+                const double          weight,
+                FullMatrix<double>   &K_cell)
+      {
+        const unsigned int size = stencil * dim;
+        const auto         row  = [&](const unsigned int i) {
+          return nodes[i / dim] * dim + i % dim;
+        };
+        for (unsigned int i = 0; i < size; ++i)
+          bbar[row(i)] += weight * g[i];
+        total_weight += weight;
+        const double f  = volume / n_directions;
+        const double f2 = volume * kappa / (n_directions * n_directions);
+        // -f m (x) g, and in the symmetric form -f g (x) n + f2 g (x) g.
+        for (unsigned int i = 0; i < size; ++i)
+          for (unsigned int j = 0; j < size; ++j)
+            K_cell(row(i), row(j)) -=
+              f * m[i] * g[j] +
+              (symmetric ? f * g[i] * n[j] - f2 * g[i] * g[j] : 0.);
+        for (unsigned int i = 0; i < size; ++i)
+          {
+            m_sum[row(i)] += f * m[i];
+            if (symmetric)
+              {
+                n_sum[row(i)] += f * n[i];
+                g_sum[row(i)] += f2 * g[i];
+              }
+          }
+        if (symmetric)
+          kappa_sum += f2;
+      }
+
+      std::array<double, ShapeCache<dim>::max_stencil_size * dim> m, n, g;
       bool                         symmetric = true;
       unsigned int                 n_dofs    = 0;
       std::array<double, max_dofs> bbar, m_sum, n_sum, g_sum;
@@ -523,15 +656,6 @@ namespace qsmpm
 
 
 
-    /**
-     * K_(v,a),(w,b) += Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l of one point,
-     * as G^v_abl = Omega sum_k dN_v/dx_k C_akbl once per node v, then
-     * sum_l G^v_abl dN_w/dx_l: dim^4 + stencil dim^3 multiply-adds per v
-     * instead of stencil dim^4: in 3D 2,376 per point instead of 5,184
-     * (timings in doc/example_polycrystal.md). 2D keeps the direct sum of
-     * TangentAssembler::assemble() (192 against 256 per point), and with it
-     * the last digits of the paper's compact-tension runs.
-     */
     /**
      * Axisymmetric (r, z): the terms of the hoop strain d eps_thetatheta =
      * du_r / r of one point at radius @p r,
@@ -574,6 +698,57 @@ namespace qsmpm
 
 
 
+    /**
+     * add_hoop_stiffness() with the hoop entries of a 3D tangent @p C
+     * (index 2 the hoop direction; the consistent tangent of a plastic
+     * point at an iterate):
+     *
+     *   K_(v,a),(w,b) += Omega [C_2222 N_v N_w / r^2 delta_a0 delta_b0
+     *                    + N_v / r delta_a0 C_22bl dN_w/dx_l
+     *                    + dN_v/dx_k C_ak22 N_w / r delta_b0].
+     */
+    template <int dim>
+    void
+    add_hoop_stiffness(const double                *N,
+                       const Tensor<1, dim>        *grad_N,
+                       const unsigned int           stencil,
+                       const unsigned short        *nodes,
+                       const SymmetricTensor<4, 3> &C,
+                       const double                 volume,
+                       const double                 r,
+                       FullMatrix<double>          &K_cell)
+    {
+      for (unsigned int v = 0; v < stencil; ++v)
+        for (unsigned int w = 0; w < stencil; ++w)
+          {
+            const unsigned int row = nodes[v] * dim, column = nodes[w] * dim;
+            K_cell(row, column) +=
+              volume * C[2][2][2][2] * N[v] * N[w] / (r * r);
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                double hoop_row = 0., hoop_column = 0.;
+                for (unsigned int l = 0; l < dim; ++l)
+                  {
+                    hoop_row += C[2][2][b][l] * grad_N[w][l];
+                    hoop_column += grad_N[v][l] * C[b][l][2][2];
+                  }
+                K_cell(row, column + b) += volume * N[v] / r * hoop_row;
+                K_cell(row + b, column) += volume * hoop_column * N[w] / r;
+              }
+          }
+    }
+
+
+
+    /**
+     * K_(v,a),(w,b) += Omega sum_kl dN_v/dx_k C_akbl dN_w/dx_l of one point,
+     * as G^v_abl = Omega sum_k dN_v/dx_k C_akbl once per node v, then
+     * sum_l G^v_abl dN_w/dx_l: dim^4 + stencil dim^3 multiply-adds per v
+     * instead of stencil dim^4: in 3D 2,376 per point instead of 5,184
+     * (timings in doc/example_polycrystal.md). 2D keeps the direct sum of
+     * TangentAssembler::assemble() (192 against 256 per point), and with it
+     * the last digits of the paper's compact-tension runs.
+     */
     template <int dim>
     void
     add_point_stiffness_factored(const Tensor<1, dim> *grad_N,
@@ -731,10 +906,12 @@ namespace qsmpm
                                   const IterateKinematics<dim> *iterate,
                                   const bool                    fbar_terms)
   {
-    AssertThrow(iterate == nullptr || !points.get_formulation().axisymmetric,
-                ExcMessage("The stiffness at an iterate is for plane and 3D "
-                           "problems."));
-    CellTangents<dim> cell_tangents(points, kind);
+    AssertThrow(iterate == nullptr ||
+                  !(points.get_formulation().axisymmetric &&
+                    points.get_formulation().finite_strain()),
+                ExcMessage("The stiffness at an iterate is for small strain "
+                           "in axisymmetric problems."));
+    CellTangents<dim> cell_tangents(points, kind, fbar_terms);
 
     if (pattern_per_step || ghost_penalty != nullptr)
       make_step_pattern(grid, cache, ghost_penalty);
@@ -745,10 +922,13 @@ namespace qsmpm
     typename ShapeCache<dim>::ValueBuffer    values;
     typename ShapeCache<dim>::GradientBuffer spatial;
     const bool axisymmetric = points.get_formulation().axisymmetric;
-    // F-bar (plane and 3D problems): the stiffness of the mean volume
-    // change (FbarTerms), if asked for. Axisymmetric problems keep K_B.
-    const bool fbar =
-      fbar_terms && points.get_formulation().fbar() && !axisymmetric;
+    // F-bar: the stiffness of the mean volume change (FbarTerms), if asked
+    // for; in axisymmetric problems (small strain) with the 3D tangents'
+    // hoop entries, which the matrix then takes in full.
+    const bool full_hoop =
+      axisymmetric && fbar_terms && !points.get_formulation().finite_strain();
+    const bool fbar = fbar_terms && points.get_formulation().fbar() &&
+                      (!axisymmetric || full_hoop);
     FbarTerms<dim> mean_volume_terms;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
@@ -784,8 +964,19 @@ namespace qsmpm
                         K_cell(nodes[v] * dim + a, nodes[w] * dim + b) +=
                           volume * sum;
                       }
-            if (axisymmetric)
-              add_hoop_stiffness(cache.values(c, p, values),
+            const double *N =
+              axisymmetric ? cache.values(c, p, values) : nullptr;
+            if (full_hoop)
+              add_hoop_stiffness(N,
+                                 grad_N,
+                                 stencil,
+                                 nodes,
+                                 cell_tangents.hoop_tangent(i),
+                                 volume,
+                                 cache.position(p)[0],
+                                 K_cell);
+            else if (axisymmetric)
+              add_hoop_stiffness(N,
                                  grad_N,
                                  stencil,
                                  nodes,
@@ -793,7 +984,18 @@ namespace qsmpm
                                  volume,
                                  cache.position(p)[0],
                                  K_cell);
-            if (fbar)
+            if (fbar && full_hoop)
+              mean_volume_terms.add_point_axisymmetric(
+                N,
+                grad_N,
+                stencil,
+                nodes,
+                cell_tangents.hoop_tangent(i),
+                cache.position(p)[0],
+                volume,
+                cache.properties(p)[points.get_offsets().volume],
+                K_cell);
+            else if (fbar)
               mean_volume_terms.add_point(grad_N,
                                           stencil,
                                           nodes,

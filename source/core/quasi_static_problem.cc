@@ -605,10 +605,11 @@ namespace qsmpm
           preconditioner.needs_matrix())
         {
           const auto &formulation = points().get_formulation();
-          AssertThrow(!formulation.axisymmetric,
+          AssertThrow(!(formulation.axisymmetric &&
+                        formulation.finite_strain()),
                       ExcMessage("Nonlinear solver/Preconditioner update = "
-                                 "Newton iteration needs a plane or 3D "
-                                 "problem (not Axisymmetric)."));
+                                 "Newton iteration needs Kinematics = small "
+                                 "strain in an axisymmetric problem."));
           op.set_preconditioner_update([this](const VectorType &iterate) {
             build_preconditioner_at(iterate);
           });

@@ -265,6 +265,32 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<4, 3>
+  ConstitutiveModel<dim>::consistent_tangent_axisymmetric(
+    const PointState<dim> &old,
+    const double,
+    const SymmetricTensor<2, dim> &,
+    const double) const
+  {
+    const SymmetricTensor<4, dim> C = tangent(old);
+    SymmetricTensor<4, 3>         C3;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = k; l < dim; ++l)
+            C3[i][j][k][l] = C[i][j][k][l];
+    if (dim == 2)
+      {
+        C3[2][2][2][2] = C[0][0][0][0];
+        for (unsigned int k = 0; k < 2; ++k)
+          C3[2][2][k][k] = C3[k][k][2][2] = C[0][0][1][1];
+      }
+    return C3;
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::supports_axisymmetric_finite_strain() const
   {

@@ -455,6 +455,30 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<4, 3>
+  IsotropicPlasticity<dim>::consistent_tangent_axisymmetric(
+    const PointState<dim> &old,
+    const double,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment) const
+  {
+    AssertThrow(dim == 2,
+                ExcMessage("Material points/Axisymmetric needs dim = 2."));
+    SymmetricTensor<2, 3> increment = embed(strain_increment);
+    increment[2][2]                 = hoop_strain_increment;
+    if (increment.norm() == 0.)
+      return elastic_tangent(elastic_strain(old.state));
+    Return r;
+    return_map(elastic_strain(old.state) + increment,
+               equivalent_plastic_strain(old.state),
+               true,
+               r);
+    return r.tangent;
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   IsotropicPlasticity<dim>::tangent(const PointState<dim> &old) const
   {

@@ -356,6 +356,25 @@ namespace qsmpm
 
 
   template <int dim>
+  SymmetricTensor<4, 3>
+  MaterialMap<dim>::consistent_tangent_axisymmetric(
+    const PointState<dim>         &old,
+    const double                   old_hoop_stress,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment) const
+  {
+    const Member &m = member(old.material_id);
+    return with_own_state(m, old, [&](const PointState<dim> &own) {
+      return m.model->consistent_tangent_axisymmetric(own,
+                                                      old_hoop_stress,
+                                                      strain_increment,
+                                                      hoop_strain_increment);
+    });
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<4, dim>
   MaterialMap<dim>::tangent(const PointState<dim> &old) const
   {

@@ -144,11 +144,11 @@ namespace qsmpm
         "When the preconditioner's matrix is built: once per load step "
         "from the tangents of the committed state (load step, the paper), "
         "or in every Newton iteration from the consistent tangent of each "
-        "point at the iterate (Newton iteration: plane and 3D problems, "
-        "small and finite strain; at finite strain with the iterate's "
-        "stress and geometry). A plastic model's committed tangent is "
-        "elastic, and "
-        "where the iterate yields GMRES has to make up the difference in "
+        "point at the iterate (Newton iteration: small and finite strain; "
+        "axisymmetric problems at small strain only; at finite strain with "
+        "the iterate's stress and geometry). A plastic model's committed "
+        "tangent is elastic, and where the iterate yields GMRES has to "
+        "make up the difference in "
         "every Newton iteration; the tangent at the iterate is the "
         "Jacobian (with F-bar too), so that with the direct factorization "
         "GMRES needs one or two iterations per Newton iteration. It costs "
@@ -157,8 +157,7 @@ namespace qsmpm
         "(the Mohr-Coulomb footing of examples/footing: half the time) "
         "or where AMG needs many GMRES iterations (its rigid footing at "
         "finite strain on 1 rank: two thirds of the time), not for a cheap "
-        "von Mises "
-        "return on a small grid (doc/benchmarks.md).",
+        "von Mises return on a small grid (doc/benchmarks.md).",
         Patterns::Selection("load step|Newton iteration"));
       prm.add_parameter(
         "Preconditioner reuse growth",

@@ -21,6 +21,9 @@ namespace qsmpm
   {
     /// Small strain: the strain increments, F-bar's shift included.
     std::vector<SymmetricTensor<2, dim>> strain_increments;
+    /// Small strain, axisymmetric: the hoop strain increments d u_r / r,
+    /// F-bar's shift included.
+    std::vector<double> hoop_strain_increments;
     /// Finite strain: Delta F = I + grad_n du, before F-bar's scaling.
     std::vector<Tensor<2, dim>> deformation_increments;
     /// Finite strain with F-bar: the mean volume change of the point's

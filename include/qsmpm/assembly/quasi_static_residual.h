@@ -127,8 +127,9 @@ namespace qsmpm
      * hands them to the constitutive model: at small strain the strain
      * increments (F-bar's mean volume change included), at finite strain
      * the deformation increments Delta F and, with F-bar, their cells'
-     * mean volume changes. For the stiffness at a Newton iterate
-     * (TangentAssembler). Plane and 3D problems only.
+     * mean volume changes; in axisymmetric problems (small strain only)
+     * the hoop strain increments as well. For the stiffness at a Newton
+     * iterate (TangentAssembler).
      */
     void
     iterate_kinematics(const TrilinosWrappers::MPI::Vector &du,

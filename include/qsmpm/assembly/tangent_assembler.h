@@ -68,29 +68,33 @@ namespace qsmpm
      * across faces then join the pattern, made anew for the step), plus
      * @p additional_term if given.
      *
-     * With @p iterate (plane and 3D; QuasiStaticResidual::
-     * iterate_kinematics() of a Newton iterate), K is instead the
-     * stiffness at that iterate: at small strain the model's
-     * ConstitutiveModel::consistent_tangent() at each point's strain
-     * increment; at finite strain its kirchhoff_tangent() and Kirchhoff
-     * stress at the point's Delta F, with the gradients Delta F^{-T}
-     * grad_n N of the residual's tau Delta F^{-T} grad_n N, and F-bar's
-     * mean weighted with each point's det Delta F. So K is the Jacobian of
-     * the residual there (elastoplastic where the iterate yields; with the
-     * geometry and stress of the iterate at finite strain), which the
-     * tangents of the committed state are not. A point whose tangent the
-     * model cannot give there (an exception, a value that is not finite,
-     * an inverted point) gets that of its committed state.
+     * With @p iterate (QuasiStaticResidual::iterate_kinematics() of a
+     * Newton iterate), K is instead the stiffness at that iterate: at small
+     * strain the model's ConstitutiveModel::consistent_tangent() at each
+     * point's strain increment (axisymmetric:
+     * consistent_tangent_axisymmetric(), whose hoop entries the hoop
+     * strain's stiffness takes); at finite strain (plane and 3D) its
+     * kirchhoff_tangent() and Kirchhoff stress at the point's Delta F, with
+     * the gradients Delta F^{-T} grad_n N of the residual's tau Delta
+     * F^{-T} grad_n N, and F-bar's mean weighted with each point's det
+     * Delta F. So K is the Jacobian of the residual there (elastoplastic
+     * where the iterate yields; with the geometry and stress of the
+     * iterate at finite strain), which the tangents of the committed state
+     * are not. A point whose tangent the model cannot give there (an
+     * exception, a value that is not finite, an inverted point) gets that
+     * of its committed state.
      *
-     * With @p fbar_terms and F-bar (plane and 3D problems), K holds the
-     * terms of the cell's mean volume change, without which it is not the
-     * Jacobian of the F-bar residual (0.14-0.16 off on an elastic block:
-     * test jacobian_product). The matrix at a Newton iterate has them
-     * (QuasiStaticProblem); the one built once per step from the committed
-     * state, whose yielding points are elastic in it anyway, does not:
-     * there they saved 2-7 % of the GMRES iterations of the footings of
-     * examples/footing, and they would move every curve of perfect
-     * plasticity with F-bar within the Newton tolerance (doc/benchmarks.md).
+     * With @p fbar_terms and F-bar, K holds the terms of the cell's mean
+     * volume change (in axisymmetric problems at small strain the mean of
+     * the three normal strains, the hoop strain among them), without which
+     * it is not the Jacobian of the F-bar residual (0.12-0.17 off on an
+     * elastic or plastic block: test jacobian_product). The matrix at a
+     * Newton iterate has them (QuasiStaticProblem); the one built once per
+     * step from the committed state, whose yielding points are elastic in
+     * it anyway, does not: there they saved 2-7 % of the GMRES iterations
+     * of the footings of examples/footing, and they would move every curve
+     * of perfect plasticity with F-bar within the Newton tolerance
+     * (doc/benchmarks.md).
      */
     void
     assemble(const BackgroundGrid<dim>       &grid,

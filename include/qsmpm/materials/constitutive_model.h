@@ -319,6 +319,22 @@ namespace qsmpm
                                ArrayView<double>        new_state) const;
 
     /**
+     * Axisymmetric (r, z) kinematics at small strain: the consistent
+     * tangent d(sigma)/d(epsilon) of update_stress_axisymmetric() at the
+     * trial state reached with @p strain_increment and
+     * @p hoop_strain_increment from @p old, as a 3D tensor whose index 2 is
+     * the hoop direction. The default is tangent(old) with the hoop
+     * entries of an isotropic tangent, C_2222 = C_0000 and C_22kk = C_kk22
+     * = C_0011 (exact for isotropic elasticity).
+     */
+    virtual SymmetricTensor<4, 3>
+    consistent_tangent_axisymmetric(
+      const PointState<dim>         &old,
+      const double                   old_hoop_stress,
+      const SymmetricTensor<2, dim> &strain_increment,
+      const double                   hoop_strain_increment) const;
+
+    /**
      * Whether the model implements update_kirchhoff_stress_axisymmetric()
      * (axisymmetric kinematics at finite strain). False by default.
      */

@@ -174,6 +174,14 @@ namespace qsmpm
                                double                  &hoop_stress,
                                ArrayView<double> new_state) const override;
 
+    /// The tangent of the return map of update_stress_axisymmetric().
+    SymmetricTensor<4, 3>
+    consistent_tangent_axisymmetric(
+      const PointState<dim>         &old,
+      const double                   old_hoop_stress,
+      const SymmetricTensor<2, dim> &strain_increment,
+      const double                   hoop_strain_increment) const override;
+
     /// True in 2D.
     bool
     supports_axisymmetric_finite_strain() const override;

@@ -125,6 +125,13 @@ namespace qsmpm
     bool
     supports_axisymmetry() const override;
 
+    SymmetricTensor<4, 3>
+    consistent_tangent_axisymmetric(
+      const PointState<dim>         &old,
+      const double                   old_hoop_stress,
+      const SymmetricTensor<2, dim> &strain_increment,
+      const double                   hoop_strain_increment) const override;
+
     /// True if every model supports axisymmetry at finite strain.
     bool
     supports_axisymmetric_finite_strain() const override;
