@@ -90,6 +90,87 @@ namespace qsmpm_tests
     return u;
   }
 
+  /// A strip 1 x 1 of 32 x 32 cells on rollers, a traction 1e3 t on the
+  /// left half of its top, 5 load steps, Newton tolerance 1e-9, of the
+  /// @p model (E = 1e6, nu = 0.3; von Mises with yield stress 600, which
+  /// yields under the loaded half's edge), with the entries
+  /// @p material_points and @p solver (lines of "set ...") in those
+  /// subsections, and no output but in @p directory.
+  inline std::string
+  yielding_strip_prm(const std::string &model,
+                     const std::string &material_points,
+                     const std::string &solver,
+                     const std::string &directory)
+  {
+    std::ostringstream prm;
+    prm << "set Dimension = 2\n"
+        << "subsection Geometry\n  set Subdivisions = 32,32\nend\n"
+        << "subsection Material points\n"
+        << material_points << "end\n"
+        << "subsection Material\n  set Model = " << model << "\n"
+        << "  subsection " << model << "\n"
+        << "    set Young's modulus = 1e6\n"
+        << "    set Poisson's ratio = 0.3\n";
+    if (model == "von Mises")
+      prm << "    set Yield stress = 600\n";
+    prm << "  end\nend\n"
+        << "subsection Boundary conditions\n"
+        << "  set Dirichlet boundaries = 0:x, 1:x, 2:y\n"
+        << "  set Traction boundaries = 3\n"
+        << "  subsection Traction\n"
+        << "    set Function expression = 0; -1e3*t*(x<0.5 ? 1 : 0)\n"
+        << "  end\nend\n"
+        << "subsection Load stepping\n  set Number of steps = 5\nend\n"
+        << "subsection Nonlinear solver\n  set Tolerance = 1e-9\n"
+        << solver << "end\n"
+        << "subsection Output\n  set Interval = 0\n"
+        << "  set Directory = " << directory << "\nend\n";
+    return prm.str();
+  }
+
+  /// What a run from .prm text gives: the points' displacements by
+  /// particle id and the Newton and GMRES iterations of all its steps.
+  template <int dim>
+  struct RecordedRun
+  {
+    std::map<dealii::types::particle_index, dealii::Tensor<1, dim>>
+                 displacement;
+    unsigned int newton = 0, gmres = 0;
+
+    double
+    gmres_per_newton() const
+    {
+      return static_cast<double>(gmres) / newton;
+    }
+  };
+
+  /// Set a problem up from @p text, run it and record what it gives.
+  template <int dim>
+  RecordedRun<dim>
+  run_and_record(const std::string &text)
+  {
+    qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+    initialize_from_text(problem, text);
+    RecordedRun<dim> result;
+    problem.set_step_callback(
+      [&](const typename qsmpm::QuasiStaticProblem<dim>::StepReport &report) {
+        result.newton += report.newton.newton_iterations;
+        result.gmres += report.newton.linear_iterations;
+        return true;
+      });
+    problem.run();
+    result.displacement = point_displacements(problem);
+    return result;
+  }
+
+  /// max |u_a - u_b| / max |u_a| over the points of two recorded runs.
+  template <int dim>
+  double
+  max_relative_difference(const RecordedRun<dim> &a, const RecordedRun<dim> &b)
+  {
+    return max_relative_difference(a.displacement, b.displacement);
+  }
+
   /// The shipped example file examples/@p name (e.g.
   /// "consolidation/terzaghi.prm") with the replacements @p edits (each: a
   /// text of the file, which must be there, and what replaces its first

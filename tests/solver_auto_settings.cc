@@ -38,67 +38,30 @@ namespace
             const bool         paper_settings,
             const std::string &preconditioner)
   {
-    std::ostringstream prm;
-    prm << "set Dimension = 2\n"
-        << "subsection Geometry\n  set Subdivisions = 32,32\nend\n"
-        << "subsection Material\n  set Model = " << model << "\n"
-        << "  subsection " << model << "\n"
-        << "    set Young's modulus = 1e6\n"
-        << "    set Poisson's ratio = 0.3\n";
-    if (model == "von Mises")
-      prm << "    set Yield stress = 600\n";
-    prm << "  end\nend\n"
-        << "subsection Boundary conditions\n"
-        << "  set Dirichlet boundaries = 0:x, 1:x, 2:y\n"
-        << "  set Traction boundaries = 3\n"
-        << "  subsection Traction\n"
-        << "    set Function expression = 0; -1e3*t*(x<0.5 ? 1 : 0)\n"
-        << "  end\nend\n"
-        << "subsection Load stepping\n  set Number of steps = 5\nend\n"
-        << "subsection Nonlinear solver\n  set Tolerance = 1e-9\n";
+    std::string solver;
     if (!preconditioner.empty())
-      prm << "  set Preconditioner = " << preconditioner << "\n";
+      solver += "  set Preconditioner = " + preconditioner + "\n";
     if (paper_settings)
-      prm << "  set Preconditioner reuse steps = 1\n"
-          << "  set Forcing term = constant\n"
-          << "  set Initial guess = linear predictor\n";
-    prm << "end\n"
-        << "subsection Output\n  set Interval = 0\n"
-        << "  set Directory = auto-out\nend\n";
-    return prm.str();
+      solver += "  set Preconditioner reuse steps = 1\n"
+                "  set Forcing term = constant\n"
+                "  set Initial guess = linear predictor\n";
+    return yielding_strip_prm(model, "", solver, "auto-out");
   }
 
-  struct Run
-  {
-    /// Displacements of the points by particle id.
-    std::map<types::particle_index, Tensor<1, 2>> displacement;
-    unsigned int                                  gmres = 0;
-  };
+  using Run = RecordedRun<2>;
 
   Run
   run(const std::string &model,
       const bool         paper_settings,
       const std::string &preconditioner = "")
   {
-    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    initialize_from_text(problem,
-                         strip_prm(model, paper_settings, preconditioner));
-    Run result;
-    problem.set_step_callback(
-      [&](const QuasiStaticProblem<2>::StepReport &report) {
-        result.gmres += report.newton.linear_iterations;
-        return true;
-      });
-    problem.run();
-    result.displacement = point_displacements(problem);
-    return result;
+    return run_and_record<2>(strip_prm(model, paper_settings, preconditioner));
   }
 
-  /// max |u_a - u_b| / max |u_a| over the points.
   double
   difference(const Run &a, const Run &b)
   {
-    return max_relative_difference(a.displacement, b.displacement);
+    return max_relative_difference(a, b);
   }
 } // namespace
 
