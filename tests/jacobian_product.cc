@@ -33,6 +33,16 @@
 // isotropic tangent taken from the in-plane one: 1.4e-2 to 1.5e-2 at the
 // yielding iterate), and F-bar's terms of the mean of the three normal
 // strains (without them: 0.12-0.17).
+//
+// Von Mises at finite strain (cpGIMP, after the committed deformation
+// above, which stays elastic under the yield stress 6; an iterate du != 0
+// 60 times larger, which yields), plane and axisymmetric, with and without
+// F-bar: 3.2e-8 to 3.5e-8 (the committed state's matrix: 0.66-0.74).
+// Axisymmetric, the stiffness of the hoop terms at the iterate: the 3D
+// tangent kirchhoff_tangent_axisymmetric() (with the hoop entries of an
+// isotropic tangent instead: 1.4e-2 to 1.5e-2), the hoop stretch in the
+// hoop gradient N / (r Delta F_tt) (without it: 1.1e-2 to 1.7e-2) and the
+// hoop stress's geometric term -tau_tt (without it: 8.4e-3 to 1.1e-2).
 #include "tests.h"
 
 #include <deal.II/base/function.h>
@@ -69,11 +79,15 @@ struct Operator
   }
 };
 
-// yield_stress > 0: von Mises plasticity (small strain) instead of linear
-// elasticity; the iterate du != 0 then yields at most points.
+// yield_stress > 0: von Mises plasticity instead of linear elasticity (at
+// finite strain instead of Hencky), and at finite strain an iterate
+// @p iterate_size times larger (1e-3); the iterate du != 0 then yields at
+// most points.
 template <int dim>
 void
-test(const qsmpm::Formulation &formulation, const double yield_stress = 0.)
+test(const qsmpm::Formulation &formulation,
+     const double              yield_stress = 0.,
+     const double              iterate_size = 1e-3)
 {
   const bool                    finite_strain = formulation.finite_strain();
   qsmpm::BackgroundGrid<dim>    grid(MPI_COMM_WORLD);
@@ -86,10 +100,10 @@ test(const qsmpm::Formulation &formulation, const double yield_stress = 0.)
     }
   grid.make_box(Point<dim>(), upper, n);
   std::unique_ptr<qsmpm::ConstitutiveModel<dim>> model;
-  if (finite_strain)
-    model = std::make_unique<qsmpm::Hencky<dim>>(50., 0.3);
-  else if (yield_stress > 0.)
+  if (yield_stress > 0.)
     model = std::make_unique<qsmpm::VonMises<dim>>(50., 0.3, yield_stress);
+  else if (finite_strain)
+    model = std::make_unique<qsmpm::Hencky<dim>>(50., 0.3);
   else
     model = std::make_unique<qsmpm::LinearElastic<dim>>(50., 0.3);
   qsmpm::MaterialPointSet<dim> points(grid, *model, formulation);
@@ -151,7 +165,7 @@ test(const qsmpm::Formulation &formulation, const double yield_stress = 0.)
   for (const auto i : grid.locally_owned_dofs())
     {
       s(i)          = std::sin(1. + 3.7 * i);
-      du_iterate(i) = 1e-3 * std::cos(0.3 + 1.3 * i);
+      du_iterate(i) = iterate_size * std::cos(0.3 + 1.3 * i);
     }
   s.compress(VectorOperation::insert);
   du_iterate.compress(VectorOperation::insert);
@@ -192,7 +206,8 @@ test(const qsmpm::Formulation &formulation, const double yield_stress = 0.)
       deallog << dim << "D, "
               << (formulation.axisymmetric ? "axisymmetric, " : "")
               << (yield_stress > 0. ? "von Mises, " : "")
-              << (finite_strain      ? "finite strain (hencky), " :
+              << (finite_strain && yield_stress > 0. ? "finite strain, " :
+                  finite_strain      ? "finite strain (hencky), " :
                   formulation.gimp() ? "small strain, " :
                                        "")
               << (formulation.gimp() ? "cpGIMP, " : "")
@@ -240,5 +255,20 @@ main(int argc, char *argv[])
         if (formulation.axisymmetric)
           test<2>(formulation);
         test<2>(formulation, /*yield_stress=*/0.05);
+      }
+  // Von Mises at finite strain (Hencky inside the surface, cpGIMP), plane
+  // and axisymmetric, with and without F-bar: the committed deformation
+  // stays elastic (yield stress 6), the iterate du != 0, 60 times larger
+  // than above, yields. Axisymmetric: the 3D tangent at the iterate
+  // (kirchhoff_tangent_axisymmetric()), the hoop stretch in the hoop
+  // gradient and the hoop stress's geometric term.
+  for (const bool axisymmetric_problem : {false, true})
+    for (const bool fbar : {false, true})
+      {
+        qsmpm::Formulation formulation = finite;
+        formulation.axisymmetric       = axisymmetric_problem;
+        if (fbar)
+          formulation.volumetric = qsmpm::VolumetricTreatment::fbar;
+        test<2>(formulation, /*yield_stress=*/6., /*iterate_size=*/6e-2);
       }
 }

@@ -32,8 +32,11 @@
 //    strain: the hoop strain's stiffness with the 3D consistent tangent,
 //    F-bar's mean of three normal strains): the same answer to 1e-6
 //    (measured 2.7e-11), at most 2 GMRES per Newton iteration (1.59, 17
-//    Newton iterations) against more than 3 once per step (5.33, 18); at
-//    finite strain it stops with a message naming the entry.
+//    Newton iterations) against more than 3 once per step (5.33, 18).
+// 5. Axisymmetric at finite strain (the 3D Kirchhoff tangent at the
+//    iterate, the hoop stretch and the hoop stress's geometric term): the
+//    same answer (measured 1.4e-13), 1.77 GMRES per Newton iteration (13
+//    Newton iterations) against 5.33 once per step (18).
 #include "prm_text.h"
 #include "tests.h"
 
@@ -98,23 +101,6 @@ namespace
     check_that("direct, once per step: more than 3 GMRES per Newton iteration",
                step.gmres_per_newton() > 3.);
   }
-
-  /// Whether the problem of @p text stops with a message naming @p entry.
-  bool
-  stops_naming(const std::string &text, const std::string &entry)
-  {
-    try
-      {
-        QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-        initialize_from_text(problem, text);
-        problem.run();
-      }
-    catch (const std::exception &e)
-      {
-        return std::string(e.what()).find(entry) != std::string::npos;
-      }
-    return false;
-  }
 } // namespace
 
 int
@@ -154,12 +140,9 @@ main(int argc, char **argv)
   check_update(
     run("von Mises", "direct", "load step", "small strain", true),
     run("von Mises", "direct", "Newton iteration", "small strain", true));
-  check_that(
-    "axisymmetric at finite strain stops with a message naming the entry",
-    stops_naming(strip_prm("von Mises",
-                           "direct",
-                           "Newton iteration",
-                           "finite strain",
-                           /*axisymmetric=*/true),
-                 "Preconditioner update"));
+
+  deallog << "5. Axisymmetric, finite strain" << std::endl;
+  check_update(
+    run("von Mises", "direct", "load step", "finite strain", true),
+    run("von Mises", "direct", "Newton iteration", "finite strain", true));
 }

@@ -257,9 +257,6 @@ namespace qsmpm
     IterateKinematics<dim>              &kinematics) const
   {
     const LoopKind kind = loop_kind();
-    AssertThrow(!(kind.axisymmetric && kind.finite_strain),
-                ExcMessage("iterate_kinematics() is for small strain in "
-                           "axisymmetric problems."));
     update_packed_state();
     const double *du_values = du.trilinos_vector()[0];
     if (!same_layout)

@@ -105,6 +105,13 @@ namespace qsmpm
      * the iterate's Delta F, the tangent is c - tau_al delta_kb for the
      * current gradients Delta F^{-T} grad_n N (spatial_gradients()), the
      * form it has at Delta F = I.
+     *
+     * With hoop tangents (the stiffness at an iterate of an axisymmetric
+     * problem), also each point's 3D tangent, index 2 the hoop direction:
+     * at small strain consistent_tangent_axisymmetric(); at finite strain
+     * kirchhoff_tangent_axisymmetric() minus its geometric terms, the
+     * residual's hoop force Omega_0 tau_tt N / (r Delta F_tt) being
+     * Omega_0 tau : l with l_22 = N / (r Delta F_tt) (hoop_radius()).
      */
     template <int dim>
     class CellTangents
@@ -120,8 +127,7 @@ namespace qsmpm
         , layout(points.batch_layout())
         , finite_strain(points.get_formulation().finite_strain())
         , fbar(points.get_formulation().fbar())
-        , with_hoop(hoop_tangents && points.get_formulation().axisymmetric &&
-                    !finite_strain)
+        , with_hoop(hoop_tangents && points.get_formulation().axisymmetric)
         , new_state(layout.n_state)
       {
       }
@@ -148,8 +154,10 @@ namespace qsmpm
             inverse_increments.resize(finite_strain ? n : 0);
             volume_ratios.resize(finite_strain ? n : 0);
             hoop_tangents.resize(with_hoop ? n : 0);
+            hoop_kirchhoff_stresses.resize(with_hoop && finite_strain ? n : 0);
+            hoop_stretches.resize(with_hoop && finite_strain ? n : 0);
           }
-        if (with_hoop)
+        if (with_hoop && !finite_strain)
           for (unsigned int i = 0; i < n; ++i)
             axisymmetric_tangent(cache, range.first_point + i, i, iterate);
         else if (finite_strain)
@@ -236,13 +244,36 @@ namespace qsmpm
       }
 
       /**
-       * With hoop tangents (axisymmetric, small strain): the 3D tangent of
-       * the @p i-th point, index 2 the hoop direction.
+       * With hoop tangents: the 3D tangent of the @p i-th point, index 2
+       * the hoop direction (at finite strain with the geometric terms).
        */
-      const SymmetricTensor<4, 3> &
+      const Tensor<4, 3> &
       hoop_tangent(const unsigned int i) const
       {
         return hoop_tangents[i];
+      }
+
+      /**
+       * With hoop tangents at finite strain: the 3D Kirchhoff stress of the
+       * @p i-th point (tau_22 the hoop one), which F-bar's terms need.
+       */
+      Tensor<2, 3>
+      kirchhoff_stress_3d(const unsigned int i) const
+      {
+        Tensor<2, 3> tau;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            tau[a][b] = kirchhoff_stresses[i][a][b];
+        tau[2][2] = hoop_kirchhoff_stresses[i];
+        return tau;
+      }
+
+      /// The radius the hoop terms of the @p i-th point, at @p r at the
+      /// step's start, divide by: r Delta F_tt at a finite-strain iterate.
+      double
+      hoop_radius(const unsigned int i, const double r) const
+      {
+        return finite_strain && with_hoop ? r * hoop_stretches[i] : r;
       }
 
       /// The weight of the @p i-th point's volume change in F-bar's mean,
@@ -304,11 +335,11 @@ namespace qsmpm
                            const unsigned int            i,
                            const IterateKinematics<dim> *iterate)
       {
-        const double          *data        = cache.properties(p);
-        const PointState<dim>  state       = point_state(cache, p);
-        const double           hoop_stress = data[offsets.hoop_stress];
-        SymmetricTensor<4, 3> &C3          = hoop_tangents[i];
-        bool                   done        = false;
+        const double         *data        = cache.properties(p);
+        const PointState<dim> state       = point_state(cache, p);
+        const double          hoop_stress = data[offsets.hoop_stress];
+        Tensor<4, 3>         &C3          = hoop_tangents[i];
+        bool                  done        = false;
         if (iterate != nullptr)
           try
             {
@@ -360,25 +391,54 @@ namespace qsmpm
         if (iterate == nullptr ||
             !iterate_kirchhoff_tangent(state, kinematics, *iterate, p, i))
           {
-            kinematics.delta_F    = unit_symmetric_tensor<dim>();
-            kinematics.F          = kinematics.F_old;
-            C                     = model.kirchhoff_tangent(state, kinematics);
-            tau                   = data[offsets.J] * state.stress;
+            kinematics.delta_F = unit_symmetric_tensor<dim>();
+            kinematics.F       = kinematics.F_old;
+            tau                = data[offsets.J] * state.stress;
+            if (with_hoop)
+              {
+                hoop_tangents[i] =
+                  model.kirchhoff_tangent_axisymmetric(state, kinematics);
+                hoop_kirchhoff_stresses[i] =
+                  data[offsets.J] * data[offsets.hoop_stress];
+                hoop_stretches[i] = 1.;
+              }
+            else
+              C = model.kirchhoff_tangent(state, kinematics);
             inverse_increments[i] = unit_symmetric_tensor<dim>();
             volume_ratios[i]      = 1.;
           }
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int l = 0; l < dim; ++l)
-              C[a][k][k][l] -= tau[a][l];
+        if (with_hoop)
+          {
+            // -tau : (l_v l_w) in 3D: the in-plane terms below, and the
+            // hoop one; the rest of the 3D form meets only the zero
+            // entries l_a2, l_2a (a in-plane) of the virtual gradients.
+            Tensor<4, 3> &C3 = hoop_tangents[i];
+            C3[2][2][2][2] -= hoop_kirchhoff_stresses[i];
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int k = 0; k < dim; ++k)
+                for (unsigned int l = 0; l < dim; ++l)
+                  C3[a][k][k][l] -= tau[a][l];
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int k = 0; k < dim; ++k)
+                for (unsigned int b = 0; b < dim; ++b)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    C[a][k][b][l] = C3[a][k][b][l];
+          }
+        else
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = 0; l < dim; ++l)
+                C[a][k][k][l] -= tau[a][l];
       }
 
       /**
        * The tangent c and the stress tau of the @p i-th point (the point
        * @p p of the cache) at @p iterate into tangents[i] and
-       * kirchhoff_stresses[i], and its Delta F^{-1} and det Delta F;
-       * false where the point is inverted there or the model gives no
-       * finite tangent.
+       * kirchhoff_stresses[i] (with hoop tangents the 3D c and the hoop
+       * stress into hoop_tangents[i] and hoop_kirchhoff_stresses[i]), and
+       * its Delta F^{-1}, det Delta F (times the hoop stretch) and hoop
+       * stretch; false where the point is inverted there or the model
+       * gives no finite tangent.
        */
       bool
       iterate_kirchhoff_tangent(const PointState<dim>        &state,
@@ -387,30 +447,59 @@ namespace qsmpm
                                 const unsigned int            p,
                                 const unsigned int            i)
       {
+        // As QuasiStaticResidual: F-bar scales the in-plane and the hoop
+        // stretch alike to the cell's mean volume change.
         const Tensor<2, dim> &delta_F = iterate.deformation_increments[p];
-        const double          det     = determinant(delta_F);
+        const double          hoop_stretch =
+          with_hoop ? 1. + iterate.hoop_strain_increments[p] : 1.;
+        const double det  = determinant(delta_F) * hoop_stretch;
         const double mean = fbar ? iterate.mean_volume_changes[p] : det;
-        if (!(det > 0. && mean > 0.))
+        if (!(det > 0. && hoop_stretch > 0. && mean > 0.))
           return false;
-        kinematics.delta_F = std::pow(mean / det, 1. / dim) * delta_F;
-        kinematics.F       = kinematics.delta_F * kinematics.F_old;
+        const double scale = std::pow(mean / det, 1. / (with_hoop ? 3 : dim));
+        kinematics.delta_F = scale * delta_F;
+        kinematics.delta_hoop_stretch = with_hoop ? scale * hoop_stretch : 1.;
+        kinematics.F                  = kinematics.delta_F * kinematics.F_old;
+        double tau_hoop               = 0.;
         try
           {
-            tangents[i] = model.kirchhoff_tangent(state, kinematics);
-            model.update_kirchhoff_stress(state,
-                                          kinematics,
-                                          kirchhoff_stresses[i],
-                                          ArrayView<double>(new_state));
+            const ArrayView<double> state_out(new_state);
+            if (with_hoop)
+              {
+                hoop_tangents[i] =
+                  model.kirchhoff_tangent_axisymmetric(state, kinematics);
+                model.update_kirchhoff_stress_axisymmetric(
+                  state,
+                  kinematics,
+                  kirchhoff_stresses[i],
+                  tau_hoop,
+                  state_out);
+              }
+            else
+              {
+                tangents[i] = model.kirchhoff_tangent(state, kinematics);
+                model.update_kirchhoff_stress(state,
+                                              kinematics,
+                                              kirchhoff_stresses[i],
+                                              state_out);
+              }
           }
         catch (const std::exception &)
           {
             return false;
           }
-        if (!std::isfinite(tangents[i].norm()) ||
-            !std::isfinite(kirchhoff_stresses[i].norm()))
+        if (!std::isfinite(with_hoop ? hoop_tangents[i].norm() :
+                                       tangents[i].norm()) ||
+            !std::isfinite(kirchhoff_stresses[i].norm()) ||
+            !std::isfinite(tau_hoop))
           return false;
         inverse_increments[i] = invert(delta_F);
         volume_ratios[i]      = det;
+        if (with_hoop)
+          {
+            hoop_kirchhoff_stresses[i] = tau_hoop;
+            hoop_stretches[i]          = hoop_stretch;
+          }
         return true;
       }
 
@@ -429,7 +518,9 @@ namespace qsmpm
       std::vector<SymmetricTensor<2, dim>>           kirchhoff_stresses;
       std::vector<Tensor<2, dim>>                    inverse_increments;
       std::vector<double>                            volume_ratios;
-      std::vector<SymmetricTensor<4, 3>>             hoop_tangents;
+      std::vector<Tensor<4, 3>>                      hoop_tangents;
+      std::vector<double>                            hoop_kirchhoff_stresses;
+      std::vector<double>                            hoop_stretches;
     };
 
 
@@ -541,23 +632,25 @@ namespace qsmpm
       }
 
       /**
-       * add_point() of an axisymmetric problem at small strain, where the
-       * volume change has three parts, the hoop strain d u_r / r among
-       * them, and F-bar shifts all three: dim becomes 3, the virtual
-       * strains of dof (v, a) have the hoop part delta_a0 N_v / r (values
-       * @p N, radius @p r), and Y = C : I, Y' = I : C of the 3D tangent
-       * @p C (index 2 the hoop direction).
+       * add_point() of an axisymmetric problem, where the volume change has
+       * three parts, the hoop strain d u_r / r among them, and F-bar shifts
+       * all three: dim becomes 3, the virtual strains of dof (v, a) have
+       * the hoop part delta_a0 N_v / r (values @p N, radius @p r: at a
+       * finite-strain iterate r Delta F_tt, CellTangents::hoop_radius()),
+       * and Y = C : I, Y' = I : C of the 3D tangent @p C (index 2 the hoop
+       * direction; at finite strain Y plus the 3D Kirchhoff stress @p tau).
        */
       void
-      add_point_axisymmetric(const double                *N,
-                             const Tensor<1, dim>        *grad_N,
-                             const unsigned int           stencil,
-                             const unsigned short        *nodes,
-                             const SymmetricTensor<4, 3> &C,
-                             const double                 r,
-                             const double                 volume,
-                             const double                 weight,
-                             FullMatrix<double>          &K_cell)
+      add_point_axisymmetric(const double         *N,
+                             const Tensor<1, dim> *grad_N,
+                             const unsigned int    stencil,
+                             const unsigned short *nodes,
+                             const Tensor<4, 3>   &C,
+                             const Tensor<2, 3>   *tau,
+                             const double          r,
+                             const double          volume,
+                             const double          weight,
+                             FullMatrix<double>   &K_cell)
       {
         Tensor<2, 3> Y, Y_left;
         for (unsigned int a = 0; a < 3; ++a)
@@ -567,6 +660,8 @@ namespace qsmpm
                 Y[a][k] += C[a][k][j][j];
                 Y_left[a][k] += C[j][j][a][k];
               }
+        if (tau != nullptr)
+          Y += *tau;
         for (unsigned int v = 0; v < stencil; ++v)
           for (unsigned int a = 0; a < dim; ++a)
             {
@@ -701,7 +796,8 @@ namespace qsmpm
     /**
      * add_hoop_stiffness() with the hoop entries of a 3D tangent @p C
      * (index 2 the hoop direction; the consistent tangent of a plastic
-     * point at an iterate):
+     * point at an iterate; at finite strain with the geometric term in
+     * C_2222, the gradients Delta F^{-T} grad_n N and r Delta F_tt):
      *
      *   K_(v,a),(w,b) += Omega [C_2222 N_v N_w / r^2 delta_a0 delta_b0
      *                    + N_v / r delta_a0 C_22bl dN_w/dx_l
@@ -709,14 +805,14 @@ namespace qsmpm
      */
     template <int dim>
     void
-    add_hoop_stiffness(const double                *N,
-                       const Tensor<1, dim>        *grad_N,
-                       const unsigned int           stencil,
-                       const unsigned short        *nodes,
-                       const SymmetricTensor<4, 3> &C,
-                       const double                 volume,
-                       const double                 r,
-                       FullMatrix<double>          &K_cell)
+    add_full_hoop_stiffness(const double         *N,
+                            const Tensor<1, dim> *grad_N,
+                            const unsigned int    stencil,
+                            const unsigned short *nodes,
+                            const Tensor<4, 3>   &C,
+                            const double          volume,
+                            const double          r,
+                            FullMatrix<double>   &K_cell)
     {
       for (unsigned int v = 0; v < stencil; ++v)
         for (unsigned int w = 0; w < stencil; ++w)
@@ -906,11 +1002,6 @@ namespace qsmpm
                                   const IterateKinematics<dim> *iterate,
                                   const bool                    fbar_terms)
   {
-    AssertThrow(iterate == nullptr ||
-                  !(points.get_formulation().axisymmetric &&
-                    points.get_formulation().finite_strain()),
-                ExcMessage("The stiffness at an iterate is for small strain "
-                           "in axisymmetric problems."));
     CellTangents<dim> cell_tangents(points, kind, fbar_terms);
 
     if (pattern_per_step || ghost_penalty != nullptr)
@@ -923,12 +1014,10 @@ namespace qsmpm
     typename ShapeCache<dim>::GradientBuffer spatial;
     const bool axisymmetric = points.get_formulation().axisymmetric;
     // F-bar: the stiffness of the mean volume change (FbarTerms), if asked
-    // for; in axisymmetric problems (small strain) with the 3D tangents'
-    // hoop entries, which the matrix then takes in full.
-    const bool full_hoop =
-      axisymmetric && fbar_terms && !points.get_formulation().finite_strain();
-    const bool fbar = fbar_terms && points.get_formulation().fbar() &&
-                      (!axisymmetric || full_hoop);
+    // for; in axisymmetric problems with the 3D tangents' hoop entries,
+    // which the matrix then takes in full.
+    const bool     full_hoop = axisymmetric && fbar_terms;
+    const bool     fbar      = fbar_terms && points.get_formulation().fbar();
     FbarTerms<dim> mean_volume_terms;
     for (unsigned int c = 0; c < cache.n_cells(); ++c)
       {
@@ -966,35 +1055,45 @@ namespace qsmpm
                       }
             const double *N =
               axisymmetric ? cache.values(c, p, values) : nullptr;
+            const double r =
+              axisymmetric ?
+                cell_tangents.hoop_radius(i, cache.position(p)[0]) :
+                0.;
             if (full_hoop)
-              add_hoop_stiffness(N,
-                                 grad_N,
-                                 stencil,
-                                 nodes,
-                                 cell_tangents.hoop_tangent(i),
-                                 volume,
-                                 cache.position(p)[0],
-                                 K_cell);
+              add_full_hoop_stiffness(N,
+                                      grad_N,
+                                      stencil,
+                                      nodes,
+                                      cell_tangents.hoop_tangent(i),
+                                      volume,
+                                      r,
+                                      K_cell);
             else if (axisymmetric)
-              add_hoop_stiffness(N,
-                                 grad_N,
-                                 stencil,
-                                 nodes,
-                                 C,
-                                 volume,
-                                 cache.position(p)[0],
-                                 K_cell);
+              add_hoop_stiffness(
+                N, grad_N, stencil, nodes, C, volume, r, K_cell);
+            // The point's weight in the mean: its volume at the step's
+            // start, at a finite-strain iterate times det Delta F.
+            const double weight =
+              cache.properties(p)[points.get_offsets().volume] *
+              cell_tangents.volume_ratio(i);
             if (fbar && full_hoop)
-              mean_volume_terms.add_point_axisymmetric(
-                N,
-                grad_N,
-                stencil,
-                nodes,
-                cell_tangents.hoop_tangent(i),
-                cache.position(p)[0],
-                volume,
-                cache.properties(p)[points.get_offsets().volume],
-                K_cell);
+              {
+                const Tensor<2, 3> tau =
+                  cell_tangents.is_finite_strain() ?
+                    cell_tangents.kirchhoff_stress_3d(i) :
+                    Tensor<2, 3>();
+                mean_volume_terms.add_point_axisymmetric(
+                  N,
+                  grad_N,
+                  stencil,
+                  nodes,
+                  cell_tangents.hoop_tangent(i),
+                  cell_tangents.is_finite_strain() ? &tau : nullptr,
+                  r,
+                  volume,
+                  weight,
+                  K_cell);
+              }
             else if (fbar)
               mean_volume_terms.add_point(grad_N,
                                           stencil,
@@ -1004,9 +1103,7 @@ namespace qsmpm
                                             &cell_tangents.kirchhoff_stress(i) :
                                             nullptr,
                                           volume,
-                                          cache.properties(
-                                            p)[points.get_offsets().volume] *
-                                            cell_tangents.volume_ratio(i),
+                                          weight,
                                           K_cell);
           }
         if (fbar)

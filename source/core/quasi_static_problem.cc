@@ -603,17 +603,9 @@ namespace qsmpm
       StepOperator<dim>  op = step_operator();
       if (newton_parameters.preconditioner_update == "Newton iteration" &&
           preconditioner.needs_matrix())
-        {
-          const auto &formulation = points().get_formulation();
-          AssertThrow(!(formulation.axisymmetric &&
-                        formulation.finite_strain()),
-                      ExcMessage("Nonlinear solver/Preconditioner update = "
-                                 "Newton iteration needs Kinematics = small "
-                                 "strain in an axisymmetric problem."));
-          op.set_preconditioner_update([this](const VectorType &iterate) {
-            build_preconditioner_at(iterate);
-          });
-        }
+        op.set_preconditioner_update([this](const VectorType &iterate) {
+          build_preconditioner_at(iterate);
+        });
       const NewtonKrylov<StepOperator<dim>, VectorType> newton(
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;

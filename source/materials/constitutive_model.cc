@@ -320,6 +320,34 @@ namespace qsmpm
 
 
   template <int dim>
+  Tensor<4, 3>
+  ConstitutiveModel<dim>::kirchhoff_tangent_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
+    const Tensor<4, dim> c = kirchhoff_tangent(old, kinematics);
+    Tensor<4, 3>         c3;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            c3[i][j][k][l] = c[i][j][k][l];
+    // Axisymmetry is two-dimensional: a 3D model's tangent is its own.
+    if (dim == 2)
+      {
+        c3[2][2][2][2] = c[0][0][0][0];
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            c3[2][2][k][k] = c[0][0][1][1];
+            c3[k][k][2][2] = c[1][1][0][0];
+          }
+      }
+    return c3;
+  }
+
+
+
+  template <int dim>
   void
   ConstitutiveModel<dim>::update_kirchhoff_stress(
     const PointState<dim> &,

@@ -585,6 +585,17 @@ namespace qsmpm
     const PointState<dim>             &old,
     const FiniteStrainKinematics<dim> &kinematics) const
   {
+    return extract(kirchhoff_tangent_axisymmetric(old, kinematics));
+  }
+
+
+
+  template <int dim>
+  Tensor<4, 3>
+  IsotropicPlasticity<dim>::kirchhoff_tangent_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
     const Tensor<2, 3> f =
       embed(kinematics.delta_F, kinematics.delta_hoop_stretch);
     const SymmetricTensor<2, 3> b_trial =
@@ -613,7 +624,7 @@ namespace qsmpm
           for (unsigned int l = 0; l < 3; ++l)
             for (unsigned int q = 0; q < 3; ++q)
               c[i][j][k][l] += M[i][j][k][q] * b_trial[q][l];
-    return extract(c);
+    return c;
   }
 
 

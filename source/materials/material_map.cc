@@ -427,6 +427,20 @@ namespace qsmpm
 
 
   template <int dim>
+  Tensor<4, 3>
+  MaterialMap<dim>::kirchhoff_tangent_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
+    const Member &m = member(old.material_id);
+    return with_own_state(m, old, [&](const PointState<dim> &own) {
+      return m.model->kirchhoff_tangent_axisymmetric(own, kinematics);
+    });
+  }
+
+
+
+  template <int dim>
   double
   MaterialMap<dim>::dissipation(const PointState<dim>  &old,
                                 ArrayView<const double> new_state) const

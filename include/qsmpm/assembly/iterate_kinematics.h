@@ -21,13 +21,15 @@ namespace qsmpm
   {
     /// Small strain: the strain increments, F-bar's shift included.
     std::vector<SymmetricTensor<2, dim>> strain_increments;
-    /// Small strain, axisymmetric: the hoop strain increments d u_r / r,
-    /// F-bar's shift included.
+    /// Axisymmetric: the hoop strain increments d u_r / r, at small strain
+    /// with F-bar's shift; at finite strain the hoop stretch Delta F_tt
+    /// minus one, before F-bar's scaling.
     std::vector<double> hoop_strain_increments;
     /// Finite strain: Delta F = I + grad_n du, before F-bar's scaling.
     std::vector<Tensor<2, dim>> deformation_increments;
     /// Finite strain with F-bar: the mean volume change of the point's
-    /// cell, det Delta F averaged with the volumes at the step's start.
+    /// cell, det Delta F (times Delta F_tt if axisymmetric) averaged with
+    /// the volumes at the step's start.
     std::vector<double> mean_volume_changes;
   };
 } // namespace qsmpm

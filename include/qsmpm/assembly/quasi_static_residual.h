@@ -127,8 +127,8 @@ namespace qsmpm
      * hands them to the constitutive model: at small strain the strain
      * increments (F-bar's mean volume change included), at finite strain
      * the deformation increments Delta F and, with F-bar, their cells'
-     * mean volume changes; in axisymmetric problems (small strain only)
-     * the hoop strain increments as well. For the stiffness at a Newton
+     * mean volume changes; in axisymmetric problems the hoop strain
+     * increments as well. For the stiffness at a Newton
      * iterate (TangentAssembler).
      */
     void

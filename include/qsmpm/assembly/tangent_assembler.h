@@ -73,20 +73,22 @@ namespace qsmpm
      * strain the model's ConstitutiveModel::consistent_tangent() at each
      * point's strain increment (axisymmetric:
      * consistent_tangent_axisymmetric(), whose hoop entries the hoop
-     * strain's stiffness takes); at finite strain (plane and 3D) its
-     * kirchhoff_tangent() and Kirchhoff stress at the point's Delta F, with
-     * the gradients Delta F^{-T} grad_n N of the residual's tau Delta
-     * F^{-T} grad_n N, and F-bar's mean weighted with each point's det
-     * Delta F. So K is the Jacobian of the residual there (elastoplastic
-     * where the iterate yields; with the geometry and stress of the
-     * iterate at finite strain), which the tangents of the committed state
-     * are not. A point whose tangent the model cannot give there (an
-     * exception, a value that is not finite, an inverted point) gets that
-     * of its committed state.
+     * strain's stiffness takes); at finite strain its kirchhoff_tangent()
+     * and Kirchhoff stress at the point's Delta F, with the gradients
+     * Delta F^{-T} grad_n N of the residual's tau Delta F^{-T} grad_n N,
+     * and F-bar's mean weighted with each point's det Delta F
+     * (axisymmetric: kirchhoff_tangent_axisymmetric(), the hoop stretch
+     * Delta F_tt in the hoop gradient N / (r Delta F_tt) and in det Delta
+     * F, and the hoop stress's geometric term). So K is the Jacobian of the
+     * residual there (elastoplastic where the iterate yields; with the geometry
+     * and stress of the iterate at finite strain), which the tangents of the
+     * committed state are not. A point whose tangent the model cannot give
+     * there (an exception, a value that is not finite, an inverted point) gets
+     * that of its committed state.
      *
      * With @p fbar_terms and F-bar, K holds the terms of the cell's mean
-     * volume change (in axisymmetric problems at small strain the mean of
-     * the three normal strains, the hoop strain among them), without which
+     * volume change (in axisymmetric problems the mean of the three
+     * normal strains, the hoop strain among them), without which
      * it is not the Jacobian of the F-bar residual (0.12-0.17 off on an
      * elastic or plastic block: test jacobian_product). The matrix at a
      * Newton iterate has them (QuasiStaticProblem); the one built once per

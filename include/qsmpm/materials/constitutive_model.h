@@ -357,6 +357,22 @@ namespace qsmpm
       ArrayView<double>                  new_state) const;
 
     /**
+     * Axisymmetric kinematics at finite strain: the consistent tangent of
+     * update_kirchhoff_stress_axisymmetric() for the same arguments, the 3D
+     * c with d tau_ij = c_ijkl d l_kl (as kirchhoff_tangent(), index 2 the
+     * hoop direction, d l_22 = d(Delta F_tt) / Delta F_tt). Its hoop entries
+     * are what the stiffness at a Newton iterate needs (`Preconditioner
+     * update = Newton iteration`). The default embeds kirchhoff_tangent()
+     * with the hoop entries of an isotropic tangent (c_2222 = c_0000,
+     * c_22kk = c_0011, c_kk22 = c_1100): exact for none but isotropic
+     * elasticity at Delta F = I, a preconditioner's estimate otherwise.
+     */
+    virtual Tensor<4, 3>
+    kirchhoff_tangent_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const;
+
+    /**
      * Whether the stress is a function of the strain (or deformation)
      * alone, without history: the solver's `auto` settings
      * (NewtonParameters::resolve()) then extrapolate the last step's

@@ -223,6 +223,13 @@ namespace qsmpm
       const PointState<dim>             &old,
       const FiniteStrainKinematics<dim> &kinematics) const override;
 
+    /// The 3D tangent of update_kirchhoff_stress_axisymmetric(), whose
+    /// in-plane part kirchhoff_tangent() returns.
+    Tensor<4, 3>
+    kirchhoff_tangent_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const override;
+
     /**
      * The 3D return mapping at small strain: from the trial elastic strain
      * and the committed hardening variable to the stress, the new elastic

@@ -164,6 +164,11 @@ namespace qsmpm
       const PointState<dim>             &old,
       const FiniteStrainKinematics<dim> &kinematics) const override;
 
+    Tensor<4, 3>
+    kirchhoff_tangent_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const override;
+
     /// Whether every model of the map is elastic.
     bool
     is_elastic() const override;
