@@ -321,6 +321,17 @@ namespace qsmpm
         return model.tangent(state);
       }
 
+      /// The in-plane part of hoop_tangents[i] into tangents[i].
+      void
+      copy_in_plane_part(const unsigned int i)
+      {
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int b = 0; b < dim; ++b)
+              for (unsigned int l = 0; l < dim; ++l)
+                tangents[i][a][k][b][l] = hoop_tangents[i][a][k][b][l];
+      }
+
       /**
        * Axisymmetric, small strain: the 3D tangent of the point @p p (the
        * @p i-th of its cell) at @p iterate's strain and hoop strain
@@ -358,11 +369,7 @@ namespace qsmpm
                                                      hoop_stress,
                                                      SymmetricTensor<2, dim>(),
                                                      0.);
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int b = 0; b < dim; ++b)
-              for (unsigned int l = 0; l < dim; ++l)
-                tangents[i][a][k][b][l] = C3[a][k][b][l];
+        copy_in_plane_part(i);
         volumes[i] = data[offsets.volume];
       }
 
@@ -418,11 +425,7 @@ namespace qsmpm
               for (unsigned int k = 0; k < dim; ++k)
                 for (unsigned int l = 0; l < dim; ++l)
                   C3[a][k][k][l] -= tau[a][l];
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int k = 0; k < dim; ++k)
-                for (unsigned int b = 0; b < dim; ++b)
-                  for (unsigned int l = 0; l < dim; ++l)
-                    C[a][k][b][l] = C3[a][k][b][l];
+            copy_in_plane_part(i);
           }
         else
           for (unsigned int a = 0; a < dim; ++a)

@@ -9,6 +9,25 @@ namespace qsmpm
 {
   namespace
   {
+    /**
+     * The hoop entries of the 3D tangent @p C3 (index 2 the hoop
+     * direction) from the in-plane tangent @p C of a 2D model, as those of
+     * an isotropic tangent: C3_2222 = C_0000, C3_22kk = C3_kk22 = C_0011.
+     */
+    template <typename Tangent2D, typename Tangent3D>
+    void
+    add_isotropic_hoop_entries(const Tangent2D &C, Tangent3D &C3)
+    {
+      C3[2][2][2][2] = C[0][0][0][0];
+      for (unsigned int k = 0; k < 2; ++k)
+        C3[2][2][k][k] = C3[k][k][2][2] = C[0][0][1][1];
+    }
+  } // namespace
+
+
+
+  namespace
+  {
     /// The number of doubles of @p fields together.
     unsigned int
     count_components(const std::vector<StateField> &fields)
@@ -280,11 +299,7 @@ namespace qsmpm
           for (unsigned int l = k; l < dim; ++l)
             C3[i][j][k][l] = C[i][j][k][l];
     if (dim == 2)
-      {
-        C3[2][2][2][2] = C[0][0][0][0];
-        for (unsigned int k = 0; k < 2; ++k)
-          C3[2][2][k][k] = C3[k][k][2][2] = C[0][0][1][1];
-      }
+      add_isotropic_hoop_entries(C, C3);
     return C3;
   }
 
@@ -334,14 +349,7 @@ namespace qsmpm
             c3[i][j][k][l] = c[i][j][k][l];
     // Axisymmetry is two-dimensional: a 3D model's tangent is its own.
     if (dim == 2)
-      {
-        c3[2][2][2][2] = c[0][0][0][0];
-        for (unsigned int k = 0; k < dim; ++k)
-          {
-            c3[2][2][k][k] = c[0][0][1][1];
-            c3[k][k][2][2] = c[1][1][0][0];
-          }
-      }
+      add_isotropic_hoop_entries(c, c3);
     return c3;
   }
 

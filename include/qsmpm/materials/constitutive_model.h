@@ -364,7 +364,7 @@ namespace qsmpm
      * are what the stiffness at a Newton iterate needs (`Preconditioner
      * update = Newton iteration`). The default embeds kirchhoff_tangent()
      * with the hoop entries of an isotropic tangent (c_2222 = c_0000,
-     * c_22kk = c_0011, c_kk22 = c_1100): exact for none but isotropic
+     * c_22kk = c_kk22 = c_0011): exact for none but isotropic
      * elasticity at Delta F = I, a preconditioner's estimate otherwise.
      */
     virtual Tensor<4, 3>
