@@ -91,6 +91,46 @@ namespace qsmpm
       }
     };
 
+    /**
+     * What went wrong first in a GMRES solve whose correction is not a
+     * finite number (see solve_correction()). The wrappers below watch
+     * the products and the preconditioner; a result that is not finite
+     * counts only where its input was finite, so that what GMRES makes
+     * of its own division by zero is not taken for the cause.
+     */
+    struct BreakdownWatch
+    {
+      std::string first_cause;
+      bool        zero_product = false;
+      void
+      note(const std::string &cause)
+      {
+        if (first_cause.empty())
+          first_cause = cause;
+      }
+    };
+
+    /// An operator's vmult() watched by a BreakdownWatch: a result that is
+    /// not finite is noted as @p cause.
+    template <typename Wrapped>
+    struct Watched
+    {
+      const Wrapped  &wrapped;
+      BreakdownWatch &watch;
+      const char     *cause;
+      template <typename VectorType>
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        wrapped.vmult(dst, src);
+        const double norm = dst.l2_norm();
+        if (!std::isfinite(norm) && std::isfinite(src.l2_norm()))
+          watch.note(cause);
+        else if (norm == 0. && src.l2_norm() > 0.)
+          watch.zero_product = true;
+      }
+    };
+
     /// ||R|| over the unconstrained components (the rows with an equation).
     template <typename Operator, typename VectorType>
     double
@@ -149,6 +189,15 @@ namespace qsmpm
                                               force_noise(force_level)});
     }
 
+    /// Records @p why in @p report unless an earlier failure is recorded:
+    /// the first cause found is the one the user needs.
+    inline void
+    record_failure(NewtonReport &report, const std::string &why)
+    {
+      if (report.failure.empty())
+        report.failure = why;
+    }
+
     /// What one GMRES solve did.
     struct LinearSolve
     {
@@ -167,7 +216,10 @@ namespace qsmpm
      * all the same (an inexact correction is still a descent direction in
      * most cases; Newton's test decides) and counted in
      * report.inexact_linear_solves; the iterations are added to
-     * report.linear_iterations.
+     * report.linear_iterations. A correction that is not a finite number
+     * (GMRES broke down) records the cause in report.failure: a perturbed
+     * residual or a preconditioned vector that is not a finite number, or
+     * else a Jacobian that is singular on the Krylov space.
      */
     template <typename Operator, typename VectorType>
     LinearSolve
@@ -190,10 +242,24 @@ namespace qsmpm
                             /*log_result=*/false);
       typename SolverGMRES<VectorType>::AdditionalData data(
         parameters.gmres_restart + 2, /*right_preconditioning=*/true);
-      SolverGMRES<VectorType> gmres(control, data);
+      SolverGMRES<VectorType>                  gmres(control, data);
+      BreakdownWatch                           watch;
+      const AdmissiblePreconditioner<Operator> preconditioner{op};
       try
         {
-          gmres.solve(J, s, rhs, AdmissiblePreconditioner<Operator>{op});
+          gmres.solve(
+            Watched<JacobianFreeOperator<Operator, VectorType>>{
+              J,
+              watch,
+              "the residual of a perturbed iterate (a Jacobian-free "
+              "product) is not a finite number"},
+            s,
+            rhs,
+            Watched<AdmissiblePreconditioner<Operator>>{
+              preconditioner,
+              watch,
+              "the preconditioner returned a vector that is not a finite "
+              "number (its matrix is singular)"});
         }
       catch (const SolverControl::NoConvergence &)
         {
@@ -201,6 +267,23 @@ namespace qsmpm
         }
       op.make_admissible(s);
       report.linear_iterations += control.last_step();
+      // GMRES divides by zero where its Hessenberg matrix is singular, i.e.
+      // where the preconditioned Jacobian is singular on the Krylov space:
+      // the cause where the products and the preconditioner gave finite
+      // numbers.
+      if (!std::isfinite(s.l2_norm()))
+        record_failure(
+          report,
+          "GMRES broke down: " +
+            (!watch.first_cause.empty() ?
+               watch.first_cause :
+               std::string("the Jacobian is singular") +
+                 (watch.zero_product ?
+                    " (the residual does not change along a correction)" :
+                    "") +
+                 ": nodes whose points no longer resist a motion (at the "
+                 "apex of a perfectly plastic surface, failed); Material "
+                 "points/Ghost penalty ties them to their neighbours"));
       return {control.last_step(), control.last_value() / rhs_norm};
     }
   } // namespace internal
@@ -364,7 +447,8 @@ namespace qsmpm
           report.final_residual = norm;
           if (!std::isfinite(norm))
             {
-              report.failure = "the residual is not a finite number";
+              internal::record_failure(report,
+                                       "the residual is not a finite number");
               return report;
             }
           if (norm <= target)
@@ -402,11 +486,7 @@ namespace qsmpm
           const internal::LinearSolve linear = internal::solve_correction(
             op, J, parameters, forcing, rhs, s, report);
           if (!std::isfinite(s.l2_norm()))
-            {
-              report.failure = "GMRES returned a correction that is not a "
-                               "finite number";
-              return report;
-            }
+            return report; // solve_correction() recorded why
           stalls = stalled(linear) ? stalls + 1 : 0;
           if (stalls == 2)
             {

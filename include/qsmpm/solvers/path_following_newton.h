@@ -245,7 +245,8 @@ namespace qsmpm
     {
       if (!std::isfinite(it.norm) || !std::isfinite(it.phi))
         {
-          report.failure = "the residual is not a finite number";
+          internal::record_failure(report,
+                                   "the residual is not a finite number");
           return true;
         }
       const bool equilibrium = n > 0 && it.norm <= it.target;
