@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
@@ -206,7 +207,12 @@ namespace qsmpm
                 candidate.body     = b;
                 candidate.first    = dof_values.size();
                 candidate.relative = relative;
-                candidate.area     = data[offsets.volume] / (2. * r);
+                candidate.area     = contact_area(F,
+                                              half,
+                                              n,
+                                              r,
+                                              data[offsets.volume],
+                                              axisymmetric ? x[0] : 1.);
                 // Points that touch the body count too: a body resting on
                 // another is held only by the contact.
                 candidate.penetrates = tied || gap <= 1e-8 * h;
@@ -563,6 +569,35 @@ namespace qsmpm
       });
     forces.compress(VectorOperation::add);
     R += forces;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::contact_area(const Tensor<2, dim> &F,
+                                  const Tensor<1, dim> &half,
+                                  const Tensor<1, dim> &n,
+                                  const double          r,
+                                  const double          volume,
+                                  const double          radius)
+  {
+    // The projection of the parallelogram (parallelepiped) with the edges
+    // 2 e_d: the sum of |n x e_d| (of |n . (e_i x e_j)|) over its edges
+    // (face pairs).
+    std::array<Tensor<1, dim>, dim> e;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int i = 0; i < dim; ++i)
+        e[d][i] = F[i][d] * half[d];
+    double projection;
+    if constexpr (dim == 2)
+      projection = 2. * (std::abs(n[0] * e[0][1] - n[1] * e[0][0]) +
+                         std::abs(n[0] * e[1][1] - n[1] * e[1][0]));
+    else
+      projection = 4. * (std::abs(n * cross_product_3d(e[0], e[1])) +
+                         std::abs(n * cross_product_3d(e[1], e[2])) +
+                         std::abs(n * cross_product_3d(e[0], e[2])));
+    return std::min(volume / (2. * r), 2. * projection * radius);
   }
 
 
