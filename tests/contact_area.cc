@@ -150,23 +150,17 @@ main()
     check<2>("2D box, face on", I, half, n, extent(I, half, n), 1., 1., 1.);
     Tensor<2, 2> shear = I;
     shear[0][1]        = 0.3;
-    check<2>("2D box, 30 % shear, face on",
-             shear,
-             half,
-             n,
-             extent(shear, half, n),
-             1.,
-             1.,
-             1. / (2. * extent(shear, half, n)));
     const Tensor<1, 2> diagonal({std::sqrt(0.5), std::sqrt(0.5)});
-    check<2>("2D box, 30 % shear, 45 degrees",
-             shear,
-             half,
-             diagonal,
-             extent(shear, half, diagonal),
-             1.,
-             1.,
-             1. / (2. * extent(shear, half, diagonal)));
+    for (const auto &[name, normal] :
+         {std::make_pair("face on", n), std::make_pair("45 degrees", diagonal)})
+      check<2>(std::string("2D box, 30 % shear, ") + name,
+               shear,
+               half,
+               normal,
+               extent(shear, half, normal),
+               1.,
+               1.,
+               1. / (2. * extent(shear, half, normal)));
   }
   // The cone's point at 3.7 R (axisymmetric: volume per radian, radius
   // 0.747128).
