@@ -610,6 +610,12 @@ namespace qsmpm
         newton_parameters, &progress);
       typename StepOperator<dim>::Evaluation evaluation;
       solve_report = newton.solve(op, du, R, evaluation);
+      if (solve_report.singular_jacobian &&
+          !(prm_values.material_points.ghost_penalty > 0.))
+        solve_report.failure +=
+          ": nodes whose points no longer resist a motion (at the apex of a "
+          "perfectly plastic surface, failed); Material points/Ghost penalty "
+          "ties them to their neighbours";
       op.reject_inverted_points(evaluation, solve_report);
       preconditioner_reuse.count_use(solve_report, solver_parameters());
     };

@@ -36,6 +36,9 @@ namespace qsmpm
     std::vector<double> residual_history;
     /// Why the solve failed (empty if it converged).
     std::string failure;
+    /// The failure is GMRES's breakdown on a singular Jacobian (a caller
+    /// that knows the discretization may say what makes it singular).
+    bool singular_jacobian = false;
     /// The force level of the stopping test (internal::stopping_target())
     /// at the first iterate: ||R|| there.
     double force_level = 0.;
@@ -271,19 +274,18 @@ namespace qsmpm
       // where the preconditioned Jacobian is singular on the Krylov space:
       // the cause where the products and the preconditioner gave finite
       // numbers.
-      if (!std::isfinite(s.l2_norm()))
-        record_failure(
-          report,
-          "GMRES broke down: " +
-            (!watch.first_cause.empty() ?
-               watch.first_cause :
+      if (!std::isfinite(s.l2_norm()) && report.failure.empty())
+        {
+          report.singular_jacobian = watch.first_cause.empty();
+          report.failure =
+            "GMRES broke down: " +
+            (report.singular_jacobian ?
                std::string("the Jacobian is singular") +
                  (watch.zero_product ?
                     " (the residual does not change along a correction)" :
-                    "") +
-                 ": nodes whose points no longer resist a motion (at the "
-                 "apex of a perfectly plastic surface, failed); Material "
-                 "points/Ghost penalty ties them to their neighbours"));
+                    "") :
+               watch.first_cause);
+        }
       return {control.last_step(), control.last_value() / rhs_norm};
     }
   } // namespace internal
