@@ -19,6 +19,17 @@
 // - A = diag(2, 1) with a residual that is not a finite number wherever
 //   u_0 != 0 (a constitutive update that fails off the committed state):
 //   "the residual of a perturbed iterate".
+//
+// And where Newton stops, which decides how much of a load a step leaves
+// unbalanced. A = diag(1, 1.2), f = (1, 1), no preconditioner and one
+// GMRES iteration per Newton iteration: each iteration lowers |R| by the
+// same factor, 0.0905 (the residual alternates between the directions
+// (1, 1) and (6, -5)), so the residual at which the solve stops is set by
+// the stopping test alone. Without a ceiling: at most 1e-6 |R_0| and more
+// than 1e-9 |f| (gamma = 1e-6 of the first residual |R_0| = |f|). With
+// NewtonParameters::residual_ceiling = 1e-9 |f| (what QuasiStaticProblem
+// sets where a rigid body's penalty forces make |R_0| far larger than the
+// forces in the body): at most the ceiling.
 #include "tests.h"
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -98,6 +109,37 @@ solve(const std::string &name, const TwoDofOperator &op, const bool predictor)
     deallog << "failed: " << report.failure << std::endl;
 }
 
+void
+stop(const double ceiling)
+{
+  const TwoDofOperator    op{1., 1.2, 1., 1.};
+  qsmpm::NewtonParameters parameters;
+  parameters.initial_guess =
+    qsmpm::NewtonParameters::InitialGuess::boundary_values;
+  parameters.max_linear_iterations = 1;
+  parameters.max_iterations        = 40;
+  parameters.residual_ceiling      = ceiling;
+  const qsmpm::NewtonKrylov<TwoDofOperator, VectorType> newton(parameters);
+
+  VectorType                u(complete_index_set(2), MPI_COMM_WORLD), R;
+  const qsmpm::NewtonReport report = newton.solve(op, u, R);
+  const double              f      = std::sqrt(2.);
+  deallog << "A = diag(1, 1.2), "
+          << (ceiling > 0. ? "ceiling 1e-9 |f|: " : "no ceiling: ")
+          << (report.converged ? "converged" : "FAILED");
+  if (ceiling > 0.)
+    deallog << ", |R| <= ceiling: "
+            << (report.final_residual <= ceiling ? "yes" : "NO");
+  else
+    deallog << ", |R| <= 1e-6 |R_0|: "
+            << (report.final_residual <= 1e-6 * report.initial_residual ?
+                  "yes" :
+                  "NO")
+            << ", |R| > 1e-9 |f|: "
+            << (report.final_residual > 1e-9 * f ? "yes" : "NO");
+  deallog << std::endl;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -115,4 +157,6 @@ main(int argc, char **argv)
       nan.nan_off_u0_zero = true;
       solve("perturbed residual not finite", nan, predictor);
     }
+  stop(0.);
+  stop(1e-9 * std::sqrt(2.)); // 1e-9 |f|
 }

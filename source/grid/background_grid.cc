@@ -311,6 +311,19 @@ namespace qsmpm
 
 
   template <int dim>
+  typename DoFHandler<dim>::active_cell_iterator
+  BackgroundGrid<dim>::dof_cell(
+    const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    return typename DoFHandler<dim>::active_cell_iterator(&triangulation,
+                                                          cell->level(),
+                                                          cell->index(),
+                                                          &dof_handler);
+  }
+
+
+
+  template <int dim>
   std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
   BackgroundGrid<dim>::find_cell_around(
     const Point<dim>                                        &x,

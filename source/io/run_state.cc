@@ -22,6 +22,7 @@ namespace qsmpm
       for (unsigned int d = 0; d < dim; ++d)
         state << ' ' << reaction[d];
     state << "\nload_scale " << load_scale;
+    state << "\nforce_scale " << force_scale;
     state << "\nplates " << plate_displacements.size();
     for (const double u : plate_displacements)
       state << ' ' << u;
@@ -74,6 +75,16 @@ namespace qsmpm
         in >> reaction[d];
     expect("load_scale");
     in >> load_scale;
+    // A checkpoint of an earlier version has no force scale: Newton's
+    // ceiling (QuasiStaticProblem::solver_parameters()) then starts again
+    // from the first step resumed.
+    const auto before_force_scale = in.tellg();
+    in >> keyword;
+    force_scale = 0.;
+    if (keyword == "force_scale")
+      in >> force_scale;
+    else
+      in.seekg(before_force_scale);
     expect("plates");
     in >> n;
     plate_displacements.assign(n, 0.);

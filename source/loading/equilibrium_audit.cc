@@ -21,7 +21,12 @@ namespace qsmpm
         "the largest of the applied load and the reactions, may be at most "
         "this. Lost load goes to nodes held for lack of material or "
         "stiffness, or to nodes without material that a traction acts on, "
-        "and each cause is named.",
+        "and each cause is named. It also bounds what Newton's stopping "
+        "test may leave unbalanced: at most this times the largest force "
+        "the body carried in the steps before (applied load, reaction or "
+        "a rigid body's contact force), however large the step's first "
+        "residual (a rigid body's penalty forces on the points it moves "
+        "into).",
         Patterns::Double(0.));
       prm.add_parameter(
         "Stop on lost load",

@@ -221,23 +221,41 @@ namespace qsmpm
                 // point's own cell (extrapolated if the corner lies beyond
                 // it), whose nodes are the point's stencil. With GIMP the
                 // corner may lie in a cell that touches the point's cell,
-                // whose nodes are in the point's group (and so in the
-                // stiffness's pattern); RigidContact explains why. Beyond
-                // the grid the point's cell is extrapolated.
-                auto found = std::make_pair(cache->cell(c).cell, Point<dim>());
+                // whose nodes are then in the group of the point's cell
+                // (and so in the stiffness's pattern); RigidContact
+                // explains why. Otherwise the point's cell is
+                // extrapolated: beyond the grid, and where the corner lies
+                // outside the point's GIMP domain (an axis-parallel box,
+                // at most a cell wide, while the box whose surface touches
+                // the body is sheared with the point: a point stretched
+                // along a cone's face had its contact point in a cell none
+                // of whose points reaches its far nodes, and the contact
+                // stiffness fell outside the pattern).
+                const auto own   = cache->cell(c).cell;
+                auto       found = std::make_pair(own, Point<dim>());
                 if (gimp)
-                  found = grid.find_cell_around(corner, found.first);
-                if (!gimp || found.first.state() != IteratorState::valid)
-                  found = {cache->cell(c).cell,
+                  found = grid.find_cell_around(corner, own);
+                const auto group_holds = [&](const auto &cell) {
+                  grid.dof_cell(cell)->get_dof_indices(cell_dofs);
+                  const types::global_dof_index *group =
+                    cache->global_dofs(c);
+                  const types::global_dof_index *group_end =
+                    group + cache->n_dofs(c);
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    if (fe.system_to_component_index(i).first / dim ==
+                          cache->cell(c).body &&
+                        std::find(group, group_end, cell_dofs[i]) ==
+                          group_end)
+                      return false;
+                  return true;
+                };
+                if (!gimp || found.first.state() != IteratorState::valid ||
+                    !group_holds(found.first))
+                  found = {own,
                            grid.get_mapping().transform_real_to_unit_cell(
-                             cache->cell(c).cell, corner)};
+                             own, corner)};
                 const auto &[cell, xi] = found;
-                const typename DoFHandler<dim>::active_cell_iterator dof_cell(
-                  &grid.get_triangulation(),
-                  cell->level(),
-                  cell->index(),
-                  &grid.get_dof_handler());
-                dof_cell->get_dof_indices(cell_dofs);
+                grid.dof_cell(cell)->get_dof_indices(cell_dofs);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   {
                     const unsigned int component =

@@ -338,12 +338,7 @@ namespace qsmpm
                   error = message.str();
                   break;
                 }
-              const typename DoFHandler<dim>::active_cell_iterator dof_cell(
-                &grid.get_triangulation(),
-                found.first->level(),
-                found.first->index(),
-                &grid.get_dof_handler());
-              dof_cell->get_dof_indices(dofs);
+              grid.dof_cell(found.first)->get_dof_indices(dofs);
               const Point<dim> xi =
                 GeometryInfo<dim>::project_to_unit_cell(found.second);
               loads.push_back({c, p, k, (unsigned int)load_dofs.size(), x_f});

@@ -599,11 +599,7 @@ namespace qsmpm
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         {
-          const typename DoFHandler<dim>::active_cell_iterator
-            displacement_cell(&grid.get_triangulation(),
-                              cell->level(),
-                              cell->index(),
-                              &grid.get_dof_handler());
+          const auto displacement_cell = grid.dof_cell(cell);
           for (const unsigned int v : cell->vertex_indices())
             pressure_at[displacement_dofs.index_within_set(
               displacement_cell->vertex_dof_index(v, 0))] =

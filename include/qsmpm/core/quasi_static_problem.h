@@ -338,10 +338,12 @@ namespace qsmpm
      * The force balance of the converged step to @p t_new (before it is
      * committed): recorded for reactions.csv, and a step that lost more
      * load than Equilibrium check/Lost load tolerance stops the run (or
-     * warns once).
+     * warns once). The forces of a step that Newton (@p report) resolved
+     * to that tolerance raise RunState::force_scale, and with it the
+     * ceiling of Newton's later stopping tests (solver_parameters()).
      */
     void
-    audit_equilibrium(const double t_new, const double step_force_scale);
+    audit_equilibrium(const double t_new, const NewtonReport &report);
 
     /**
      * The fixed-stress iteration of a step with a pore fluid, after the

@@ -204,6 +204,11 @@ namespace qsmpm
       const Point<dim>                                        &x,
       const typename Triangulation<dim>::active_cell_iterator &hint) const;
 
+    /// The DoFHandler's iterator to the triangulation's @p cell.
+    typename DoFHandler<dim>::active_cell_iterator
+    dof_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
     /// Lower and upper corners of the box.
     const Point<dim> &
     lower_corner() const;

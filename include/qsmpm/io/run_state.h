@@ -38,6 +38,10 @@ namespace qsmpm
     /// The largest scale of the loads of the steps so far (see
     /// EquilibriumAudit::evaluate()).
     double load_scale = 0.;
+    /// The largest force the body has carried in the steps so far: the
+    /// applied load, a support's reaction or a rigid body's contact force
+    /// (unlike load_scale, without the steps' first residuals).
+    double force_scale = 0.;
     /// The displacement of each rigid plate along its normal so far
     /// (BoundaryDescriptor::add_rigid_plate(), in that order).
     std::vector<double> plate_displacements;

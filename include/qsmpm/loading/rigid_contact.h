@@ -41,7 +41,8 @@ namespace qsmpm
    * functions the point's own cell (extrapolated if x_c lies beyond it),
    * whose nodes are the point's stencil; with GIMP the cell among the
    * point's cell and those that touch it that contains x_c (the point's
-   * cell if none does, at the grid's edge), whose nodes are in the point's
+   * cell if none does: at the grid's edge, or for a point stretched along
+   * the body's surface), whose nodes are in the point's
    * group and so in the stiffness's pattern. A GIMP point near the surface
    * whose centre has crossed into the next cell still has its contact
    * point in the cell it came from, and that cell's field is the one

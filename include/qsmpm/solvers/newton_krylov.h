@@ -163,6 +163,16 @@ namespace qsmpm
       return 1e-6 * force_level;
     }
 
+    /// @p target, at most NewtonParameters::residual_ceiling where that is
+    /// set.
+    inline double
+    below_ceiling(const NewtonParameters &parameters, const double target)
+    {
+      return parameters.residual_ceiling > 0. ?
+               std::min(target, parameters.residual_ceiling) :
+               target;
+    }
+
     /**
      * The target of Newton's stopping test for a step whose first guess
      * du_0 has the residual norm @p reference on the free degrees of
@@ -178,6 +188,10 @@ namespace qsmpm
      * residual norm of the solve's first iterate and the target is
      * gamma max(floor, reference): the caller's floor is then the guard
      * against round-off (the fixed-stress iterations of a pore fluid).
+     *
+     * Either target is at most NewtonParameters::residual_ceiling, where
+     * the caller knows the forces in the body better than the first
+     * residual does.
      */
     inline double
     stopping_target(const NewtonParameters &parameters,
@@ -185,11 +199,14 @@ namespace qsmpm
                     const double            force_level)
     {
       if (!parameters.relative_to_load)
-        return parameters.tolerance *
-               std::max(parameters.residual_floor, reference);
-      return parameters.tolerance * std::max({parameters.residual_floor,
-                                              reference,
-                                              force_noise(force_level)});
+        return below_ceiling(parameters,
+                             parameters.tolerance *
+                               std::max(parameters.residual_floor, reference));
+      return below_ceiling(parameters,
+                           parameters.tolerance *
+                             std::max({parameters.residual_floor,
+                                       reference,
+                                       force_noise(force_level)}));
     }
 
     /// Records @p why in @p report unless an earlier failure is recorded:
@@ -518,7 +535,9 @@ namespace qsmpm
                   // but the kinks of contact and plasticity (or the
                   // finite differences) at that scale: the solve stops,
                   // at the trial if it lowered the residual.
-                  stagnated = norm <= internal::force_noise(force_level) &&
+                  stagnated = norm <= internal::below_ceiling(
+                                         parameters,
+                                         internal::force_noise(force_level)) &&
                               !(decrease && trial_norm <= 0.5 * norm);
                   if (stagnated && !decrease)
                     {
