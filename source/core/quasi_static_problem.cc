@@ -555,9 +555,9 @@ namespace qsmpm
   {
     NewtonParameters parameters = prm_values.nonlinear_solver.resolve(
       model->is_elastic(), points().get_formulation().finite_strain());
-    // Newton's test is relative to the step's first residual, which a
-    // rigid body that moves in the step (and overlaps points that have not
-    // moved yet) makes penalty forces larger than any force in the body:
+    // Newton's test is relative to the step's first residual, which the
+    // penalty forces of a rigid body that moves in the step (into points
+    // that have not moved yet) can make larger than any force in the body:
     // no step ends with more left unbalanced than the equilibrium check
     // accepts of the largest force carried so far.
     parameters.residual_ceiling =
@@ -1060,18 +1060,18 @@ namespace qsmpm
       scale = std::max(scale, load.force.norm());
     if (contact_loads() != nullptr)
       rigid_contact.check_loads(body_loads, scale);
-    last_audit              = audit.evaluate(background_grid,
+    last_audit           = audit.evaluate(background_grid,
                                 displacement_constraints,
                                 held_dofs,
                                 R,
                                 applied_depends_on_du ? applied : f_ext,
                                 scale);
-    run_state.reactions     = last_audit.reactions;
-    run_state.load_scale    = last_audit.scale;
+    run_state.reactions  = last_audit.reactions;
+    run_state.load_scale = last_audit.scale;
     // The forces count where Newton resolved them: a body moved without
     // load (a block carried across a gap) has supports' forces of the size
     // of what Newton left, and a ceiling relative to them could not be met.
-    double forces           = last_audit.applied.norm();
+    double forces = last_audit.applied.norm();
     for (const auto &reaction : last_audit.reactions)
       forces = std::max(forces, reaction.norm());
     for (const auto &load : body_loads)

@@ -237,15 +237,13 @@ namespace qsmpm
                   found = grid.find_cell_around(corner, own);
                 const auto group_holds = [&](const auto &cell) {
                   grid.dof_cell(cell)->get_dof_indices(cell_dofs);
-                  const types::global_dof_index *group =
-                    cache->global_dofs(c);
+                  const types::global_dof_index *group = cache->global_dofs(c);
                   const types::global_dof_index *group_end =
                     group + cache->n_dofs(c);
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     if (fe.system_to_component_index(i).first / dim ==
                           cache->cell(c).body &&
-                        std::find(group, group_end, cell_dofs[i]) ==
-                          group_end)
+                        std::find(group, group_end, cell_dofs[i]) == group_end)
                       return false;
                   return true;
                 };

@@ -40,10 +40,13 @@ namespace qsmpm
    * with the Q1 functions of the cell that holds x_c: with linear shape
    * functions the point's own cell (extrapolated if x_c lies beyond it),
    * whose nodes are the point's stencil; with GIMP the cell among the
-   * point's cell and those that touch it that contains x_c (the point's
-   * cell if none does: at the grid's edge, or for a point stretched along
-   * the body's surface), whose nodes are in the point's
-   * group and so in the stiffness's pattern. A GIMP point near the surface
+   * point's cell and those that touch it that contains x_c, if the points
+   * of the point's cell reach all of its nodes (which are then in the
+   * point's group and so in the stiffness's pattern); otherwise the
+   * point's cell, extrapolated: at the grid's edge, and for a point whose
+   * box is sheared far beyond its GIMP domain (an axis-parallel box at
+   * most a cell wide), as beside a cone's face (test
+   * contact_sheared_point). A GIMP point near the surface
    * whose centre has crossed into the next cell still has its contact
    * point in the cell it came from, and that cell's field is the one
    * that moves its surface: extrapolated from the new cell instead, the

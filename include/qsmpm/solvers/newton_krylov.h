@@ -535,10 +535,10 @@ namespace qsmpm
                   // but the kinks of contact and plasticity (or the
                   // finite differences) at that scale: the solve stops,
                   // at the trial if it lowered the residual.
-                  stagnated = norm <= internal::below_ceiling(
-                                         parameters,
-                                         internal::force_noise(force_level)) &&
-                              !(decrease && trial_norm <= 0.5 * norm);
+                  stagnated =
+                    norm <= internal::below_ceiling(
+                              parameters, internal::force_noise(force_level)) &&
+                    !(decrease && trial_norm <= 0.5 * norm);
                   if (stagnated && !decrease)
                     {
                       // R holds the trial's residual: the one of du again.

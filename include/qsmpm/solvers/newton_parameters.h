@@ -32,16 +32,16 @@ namespace qsmpm
     /// relative to the load, or to a fixed floor, lets the solve return at
     /// once when they are small, and the pressure then changes by the same
     /// amount in every iteration).
-    bool         relative_to_load = true;
+    bool relative_to_load = true;
     /// An upper bound on the stopping target and on the residual at which
     /// a stagnating iteration is accepted, in the units of the forces; 0
     /// (the default): none. QuasiStaticProblem sets it to
-    /// <Equilibrium check/Tolerance> times the largest force the body has
-    /// carried in the converged steps, so that a first residual made large
-    /// by something other than the load (the overlap of a penalty contact
+    /// <Equilibrium check/Lost load tolerance> times the largest force the
+    /// body has carried in the converged steps, so that a first residual made
+    /// large by something other than the load (the overlap of a penalty contact
     /// in the first guess, where a rigid body moves in a step and the
     /// points do not) cannot end a step far from equilibrium.
-    double residual_ceiling = 0.;
+    double       residual_ceiling = 0.;
     unsigned int max_iterations   = 20;
     /// GMRES stops at ||J s + R|| <= linear_tolerance ||R||.
     double       linear_tolerance      = 1e-3;
