@@ -625,6 +625,18 @@ namespace qsmpm
           "perfectly plastic surface, failed); Material points/Ghost penalty "
           "ties them to their neighbours";
       op.reject_inverted_points(evaluation, solve_report);
+      // A converged step may still have let points through a rigid body,
+      // or into it from beyond the contact's candidates: a smaller step
+      // resolves the contact.
+      if (solve_report.converged && !rigid_contact.empty())
+        {
+          const std::string unresolved = rigid_contact.unresolved_contact(du);
+          if (!unresolved.empty())
+            {
+              solve_report.converged = false;
+              solve_report.failure   = unresolved;
+            }
+        }
       preconditioner_reuse.count_use(solve_report, solver_parameters());
     };
     coupling_iterations = 0;

@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <iomanip>
 #include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/rigid_contact.h>
@@ -60,7 +61,7 @@ namespace qsmpm
     dof_values.clear();
     if (bodies.empty())
       return;
-    const auto &offsets = points.get_offsets();
+    offsets = points.get_offsets();
     AssertThrow(offsets.contact != numbers::invalid_unsigned_int,
                 ExcMessage("Rigid bodies: the material points carry no "
                            "contact traction; add the rigid bodies before "
@@ -68,12 +69,12 @@ namespace qsmpm
     contact_offset       = offsets.contact;
     const double h       = grid.min_cell_size();
     const double margin  = 2. * h;
-    const bool   finite  = points.get_formulation().finite_strain();
-    const bool   gimp    = points.get_formulation().gimp();
+    finite               = points.get_formulation().finite_strain();
+    gimp                 = points.get_formulation().gimp();
     const double h_power = std::pow(h, dim - 1);
     // Axisymmetric: the grid's stiffness is per radian, r times that of a
     // plane problem; the penalty is the plane one at the grid's mid-radius.
-    const bool   axisymmetric = points.get_formulation().axisymmetric;
+    axisymmetric = points.get_formulation().axisymmetric;
     const double radius =
       axisymmetric ? 0.5 * (grid.lower_corner()[0] + grid.upper_corner()[0]) :
                      1.;
@@ -127,38 +128,9 @@ namespace qsmpm
           {
             const double    *data = cache->properties(p);
             const Point<dim> x    = cache->position(p);
-            // The point's box: half-lengths and its deformation so far.
-            // Axisymmetric: the initial volume is per radian, R dA, with R
-            // the point's initial radius.
-            const double initial_size =
-              axisymmetric ? data[offsets.initial_volume] /
-                               (x[0] - data[offsets.displacement]) :
-                             data[offsets.initial_volume];
-            Tensor<1, dim> half;
-            for (unsigned int d = 0; d < dim; ++d)
-              half[d] = gimp ? data[offsets.initial_half_length + d] :
-                               0.5 * std::pow(initial_size, 1. / dim);
-            // With F-bar, the point's own volume change replaces the
-            // cell's that F-bar stores: the contact point moves in a step
-            // with the grid's motion at it, and the box of the next step
-            // must start where that left it. With the cell's volume change
-            // the contact force jumped between two steps at the same
-            // position by the penalty times the difference (a footing's
-            // force by up to 10 %, and Newton stalled under a load held
-            // constant).
-            const double excess =
-              offsets.fbar_volume_excess != numbers::invalid_unsigned_int ?
-                data[offsets.fbar_volume_excess] :
-                0.;
-            // Axisymmetric: the excess is shared by the three directions.
-            const double         n_directions = axisymmetric ? 3. : dim;
-            const Tensor<2, dim> F =
-              finite ?
-                std::exp(excess / n_directions) *
-                  Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
-                Tensor<2, dim>(
-                  (1. + excess / n_directions) * unit_symmetric_tensor<dim>() +
-                  Utils::read_symmetric<dim>(data + offsets.strain));
+            Tensor<1, dim>   half;
+            Tensor<2, dim>   F;
+            point_box(p, half, F);
             for (unsigned int b = 0; b < bodies.size(); ++b)
               {
                 Tensor<1, dim> n;
@@ -207,6 +179,7 @@ namespace qsmpm
                 candidate.body     = b;
                 candidate.first    = dof_values.size();
                 candidate.relative = relative;
+                candidate.reach    = half.norm() * F.norm();
                 candidate.area     = contact_area(F,
                                               half,
                                               n,
@@ -290,13 +263,226 @@ namespace qsmpm
         }
     any = dealii::Utilities::MPI::logical_or(!candidates.empty(),
                                              grid.get_communicator());
+    // unresolved_contact() reads the increment at every point.
+    du_ghosted.reinit(ghosted_layout);
     if (any)
       {
-        du_ghosted.reinit(ghosted_layout);
         forces.reinit(ghosted_layout.locally_owned_elements(),
                       ghosted_layout.get_mpi_communicator());
         values.resize(dofs_per_cell);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::point_box(const unsigned int p,
+                               Tensor<1, dim>    &half,
+                               Tensor<2, dim>    &F) const
+  {
+    const double    *data = cache->properties(p);
+    const Point<dim> x    = cache->position(p);
+    // The point's box: half-lengths and its deformation so far.
+    // Axisymmetric: the initial volume is per radian, R dA, with R the
+    // point's initial radius.
+    const double initial_size =
+      axisymmetric ?
+        data[offsets.initial_volume] / (x[0] - data[offsets.displacement]) :
+        data[offsets.initial_volume];
+    for (unsigned int d = 0; d < dim; ++d)
+      half[d] = gimp ? data[offsets.initial_half_length + d] :
+                       0.5 * std::pow(initial_size, 1. / dim);
+    // With F-bar, the point's own volume change replaces the cell's that
+    // F-bar stores: the contact point moves in a step with the grid's
+    // motion at it, and the box of the next step must start where that
+    // left it. With the cell's volume change the contact force jumped
+    // between two steps at the same position by the penalty times the
+    // difference (a footing's force by up to 10 %, and Newton stalled under
+    // a load held constant).
+    const double excess =
+      offsets.fbar_volume_excess != numbers::invalid_unsigned_int ?
+        data[offsets.fbar_volume_excess] :
+        0.;
+    // Axisymmetric: the excess is shared by the three directions.
+    const double n_directions = axisymmetric ? 3. : dim;
+    if (finite)
+      F = std::exp(excess / n_directions) *
+          Utils::read_tensor<dim>(data + offsets.deformation_gradient);
+    else
+      F = Tensor<2, dim>((1. + excess / n_directions) *
+                           unit_symmetric_tensor<dim>() +
+                         Utils::read_symmetric<dim>(data + offsets.strain));
+  }
+
+
+
+  namespace
+  {
+    // The smallest signed distance of a convex body to the points of the
+    // segment from @p from to @p to (both relative to the body's reference
+    // point): the distance is a convex function along the segment, so a
+    // golden-section search finds its minimum.
+    template <int dim>
+    double
+    closest_approach(const RigidBody<dim> &body,
+                     const Tensor<1, dim> &from,
+                     const Tensor<1, dim> &to)
+    {
+      Tensor<1, dim> n;
+      const auto     distance = [&](const double s) {
+        return body.signed_distance_from_point(from + s * (to - from), n);
+      };
+      const double ratio = 0.5 * (std::sqrt(5.) - 1.);
+      double       a = 0., b = 1.;
+      double       c = b - ratio * (b - a), d = a + ratio * (b - a);
+      double       fc = distance(c), fd = distance(d);
+      for (unsigned int i = 0; i < 60 && b - a > 1e-12; ++i)
+        if (fc < fd)
+          {
+            b  = d;
+            d  = c;
+            fd = fc;
+            c  = b - ratio * (b - a);
+            fc = distance(c);
+          }
+        else
+          {
+            a  = c;
+            c  = d;
+            fc = fd;
+            d  = a + ratio * (b - a);
+            fd = distance(d);
+          }
+      return std::min({fc, fd, distance(0.), distance(1.)});
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::string
+  RigidContact<dim>::unresolved_contact(const VectorType &du) const
+  {
+    const auto &bodies = boundary.rigid_bodies();
+    if (bodies.empty() || cache == nullptr)
+      return "";
+    const MPI_Comm communicator = du.get_mpi_communicator();
+    du_ghosted                  = du;
+    const double *du_local      = du_ghosted.trilinos_vector()[0];
+    solve_shifts(du_local);
+    // Per body: candidates that went through it, the deepest penetration
+    // over the point's size, points that reached it unseen.
+    std::vector<double> crossed(bodies.size(), 0.);
+    std::vector<double> depth_ratio(bodies.size(), 0.);
+    std::vector<double> unseen(bodies.size(), 0.);
+    std::vector<double> deepest(bodies.size(), 0.);
+    const auto          body_shift = [&](const unsigned int b) {
+      return Tensor<1, dim>(shift[b] * load_unit[b]);
+    };
+    for (const Candidate &c : candidates)
+      {
+        const RigidBody<dim> &body = bodies[c.body];
+        if (body.friction == RigidBody<dim>::Friction::tied)
+          continue;
+        Tensor<1, dim> u;
+        for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
+          u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
+        const Tensor<1, dim> end = c.relative + u - body_shift(c.body);
+        Tensor<1, dim>       n_start, n_end;
+        body.signed_distance_from_point(c.relative, n_start);
+        const double gap = body.signed_distance_from_point(end, n_end);
+        // Deeper than half the box's radius: a point beside a vertex (a
+        // cone's tip on its axis) that penetrates a little may find its
+        // nearest face change sides.
+        if (n_start * n_end < 0. &&
+            closest_approach(body, c.relative, end) < -0.5 * c.reach)
+          crossed[c.body] += 1.;
+        if (gap < 0. && -gap > c.reach)
+          if (-gap / c.reach > depth_ratio[c.body])
+            {
+              depth_ratio[c.body] = -gap / c.reach;
+              deepest[c.body]     = -gap;
+            }
+      }
+    // The points that were no candidates of a body: their centres' paths
+    // must stay further from it than their boxes reach. Candidates come in
+    // the order of the points, and of the bodies for each point.
+    auto next = candidates.begin();
+    for (unsigned int c = 0; c < cache->n_cells(); ++c)
+      {
+        const auto &range = cache->cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const Point<dim>     x = cache->position(p);
+            const Tensor<1, dim> u = cache->interpolate(c, p, du_local);
+            Tensor<1, dim>       half;
+            Tensor<2, dim>       F;
+            point_box(p, half, F);
+            const double size = half.norm() * F.norm();
+            for (unsigned int b = 0; b < bodies.size(); ++b)
+              {
+                if (next != candidates.end() && next->point == p &&
+                    next->body == b)
+                  {
+                    ++next;
+                    continue;
+                  }
+                Tensor<1, dim>       n;
+                const Tensor<1, dim> start =
+                  (x - bodies[b].point) - body_displacement[b];
+                const Tensor<1, dim> motion = u - body_shift(b);
+                // Only points that started clear of the body: a tied body
+                // also leaves out points beside it that do not touch it.
+                const double clearance =
+                  bodies[b].signed_distance_from_point(start, n) - size;
+                if (clearance <= 0. || clearance > motion.norm())
+                  continue;
+                if (closest_approach(bodies[b], start, start + motion) < size)
+                  unseen[b] += 1.;
+              }
+          }
+      }
+    const auto reduce = [&](std::vector<double> &values, const MPI_Op op) {
+      const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+                                     values.data(),
+                                     static_cast<int>(values.size()),
+                                     MPI_DOUBLE,
+                                     op,
+                                     communicator);
+      AssertThrowMPI(ierr);
+    };
+    reduce(crossed, MPI_SUM);
+    reduce(unseen, MPI_SUM);
+    reduce(depth_ratio, MPI_MAX);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const double deepest_b =
+          depth_ratio[b] > 0. ?
+            dealii::Utilities::MPI::max(deepest[b], communicator) :
+            0.;
+        std::ostringstream message;
+        message << std::setprecision(3);
+        if (crossed[b] > 0.)
+          message << "the step moved " << crossed[b]
+                  << " material point(s) through rigid body <" << bodies[b].name
+                  << "> (the contact of a step sees the side a point starts "
+                     "on)";
+        else if (unseen[b] > 0.)
+          message << unseen[b] << " material point(s) reached rigid body <"
+                  << bodies[b].name
+                  << "> from further than the contact's search distance "
+                     "(two cells) in one step";
+        else if (depth_ratio[b] > 0.)
+          message << "a material point lies " << deepest_b
+                  << " inside rigid body <" << bodies[b].name
+                  << ">, more than its size (a step too large for the "
+                     "contact, or a <Penalty factor> too small for the "
+                     "pressure)";
+        if (!message.str().empty())
+          return message.str();
+      }
+    return "";
   }
 
 

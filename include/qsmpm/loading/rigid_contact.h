@@ -11,6 +11,7 @@
 #include <qsmpm/loading/preconditioner_correction.h>
 #include <qsmpm/particles/material_point_set.h>
 #include <qsmpm/particles/shape_cache.h>
+#include <string>
 #include <vector>
 
 namespace qsmpm
@@ -198,6 +199,28 @@ namespace qsmpm
     std::vector<BodyLoad>
     body_loads(const VectorType &du) const;
 
+    /**
+     * Why the converged increment @p du leaves a contact the step did not
+     * resolve, or an empty string. A penalty step sees only its candidates
+     * (the points within two cells of a body at its start) and, for each,
+     * the side of the body its contact point starts on. Three things it
+     * cannot see are reported, for the first body (in the order of the
+     * bodies) where they happen, so that the step is cut back like one
+     * that did not converge:
+     * - a candidate's contact point went through the body: its path
+     *   entered the body deeper than half the point's box radius |F l| and
+     *   the normal at its end points against the one at its start (a thin
+     *   body crossed, or a point pushed out on the far side);
+     * - a point in contact lies deeper in the body than its box's radius
+     *   |F l| (all of its box inside: an unresolved contact, or a penalty
+     *   factor too small for the pressure);
+     * - a point that was not a candidate and started clear of the body
+     *   reached it (its centre's path came within its box's radius of
+     *   it). Collective.
+     */
+    std::string
+    unresolved_contact(const VectorType &du) const;
+
     /// Throw with a message naming the first body driven by a force whose
     /// load the material does not balance, @p loads being body_loads() of
     /// the step's solution (to 1e-6 of the load or of @p force_scale).
@@ -285,10 +308,20 @@ namespace qsmpm
       Tensor<1, dim> relative;
       /// The point's contact area A.
       double area;
+      /// The radius |F l| of the point's box at the step's start.
+      double reach;
       /// Whether the corner touches or is inside the body at du = 0 (every
       /// candidate of a tied body).
       bool penetrates;
     };
+
+    /// The box of point @p p of the cache at the step's start: its
+    /// half-lengths @p half and its deformation @p F (the class
+    /// description).
+    void
+    point_box(const unsigned int p,
+              Tensor<1, dim>    &half,
+              Tensor<2, dim>    &F) const;
 
     /**
      * The contact traction on candidate @p c at the increment whose local
@@ -325,7 +358,12 @@ namespace qsmpm
     /// The step's data.
     const ShapeCache<dim> *cache          = nullptr;
     unsigned int           contact_offset = 0;
-    std::vector<double>    penalty;
+    /// The points' fields and kinematics point_box() reads.
+    typename MaterialPointSet<dim>::Offsets offsets;
+    bool                                    gimp         = false;
+    bool                                    finite       = false;
+    bool                                    axisymmetric = false;
+    std::vector<double>                     penalty;
     /// Each body's displacement at the step's end, and in the step.
     std::vector<Tensor<1, dim>> body_displacement;
     std::vector<Tensor<1, dim>> body_increment;
