@@ -385,10 +385,7 @@ namespace qsmpm
         const RigidBody<dim> &body = bodies[c.body];
         if (body.friction == RigidBody<dim>::Friction::tied)
           continue;
-        Tensor<1, dim> u;
-        for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
-          u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-        const Tensor<1, dim> end = c.relative + u - body_shift(c.body);
+        const Tensor<1, dim> end = c.relative + contact_motion(c, du_local);
         Tensor<1, dim>       n_start, n_end;
         body.signed_distance_from_point(c.relative, n_start);
         const double gap = body.signed_distance_from_point(end, n_end);
@@ -501,20 +498,28 @@ namespace qsmpm
 
   template <int dim>
   Tensor<1, dim>
+  RigidContact<dim>::contact_motion(const Candidate &c,
+                                    const double    *du_local) const
+  {
+    Tensor<1, dim> u;
+    for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
+      u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
+    return u - shift[c.body] * load_unit[c.body];
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
   RigidContact<dim>::traction(const Candidate &c,
                               const double    *du_local,
                               Tensor<1, dim>  &n,
                               double          &gap,
                               bool            &active) const
   {
-    const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
-    // The contact point's displacement in the step: sum_i N_i(x_c) du_i,
-    // relative to the body's motion by a force in the step.
-    const Tensor<1, dim> body_shift = shift[c.body] * load_unit[c.body];
-    Tensor<1, dim>       u;
-    for (unsigned int i = c.first; i < c.first + dofs_per_cell; ++i)
-      u[dof_component[i]] += dof_values[i] * du_local[dof_local[i]];
-    gap = body.signed_distance_from_point(c.relative + u - body_shift, n);
+    const RigidBody<dim> &body   = boundary.rigid_bodies()[c.body];
+    const Tensor<1, dim>  motion = contact_motion(c, du_local);
+    gap             = body.signed_distance_from_point(c.relative + motion, n);
     const bool tied = body.friction == RigidBody<dim>::Friction::tied;
     active          = tied || gap < 0.;
     if (!active)
@@ -531,14 +536,13 @@ namespace qsmpm
     // Tied: the last step's traction plus the penalty of the contact
     // point's motion relative to the body, in every direction.
     if (tied)
-      return t_old -
-             penalty[c.body] * (u - body_increment[c.body] - body_shift);
+      return t_old - penalty[c.body] * (motion - body_increment[c.body]);
     Tensor<1, dim> t = pressure * n;
     // Return map of the tangential traction: the last step's, plus the
     // penalty of the slip of the contact point relative to the body.
     Tensor<1, dim> tau = t_old;
-    tau -= tangential_scale * penalty[c.body] *
-           (u - body_increment[c.body] - body_shift);
+    tau -=
+      tangential_scale * penalty[c.body] * (motion - body_increment[c.body]);
     tau -= (tau * n) * n;
     if (body.friction == RigidBody<dim>::Friction::coulomb)
       {

@@ -315,6 +315,14 @@ namespace qsmpm
       bool penetrates;
     };
 
+    /// The displacement of candidate @p c's contact point in the step at
+    /// the increment whose local entries @p du_local holds (ghosted
+    /// layout), sum_i N_i(x_c) du_i, less the body's motion by a force in
+    /// the step: Candidate::relative plus it is the contact point at the
+    /// step's end relative to the body.
+    Tensor<1, dim>
+    contact_motion(const Candidate &c, const double *du_local) const;
+
     /// The box of point @p p of the cache at the step's start: its
     /// half-lengths @p half and its deformation @p F (the class
     /// description).
