@@ -7,6 +7,14 @@
 // a traction on the right and a body force. Tolerance 1e-8 relative: the
 // JFNK solve is converged to 1e-12, so only round-off and the
 // finite-difference Jacobian limit the agreement.
+//
+// Then the same loads in four steps (all proportional to t): with <Move
+// points = false> every step is that FEM's step, so the points' accumulated
+// displacements are the FEM field at the points to the same 1e-8; the
+// material-point method (points moving, the default) departs from it by
+// the change of its quadrature and geometry (of the order of the strain,
+// 1e-3), which the second check asks to exceed 1e-6: it shows that the
+// first would fail if the points moved.
 #include "fem_reference.h"
 #include "tests.h"
 
@@ -56,6 +64,26 @@ body_force()
   b[1] = -1.;
   return b;
 }
+
+// A load that grows with t: value * t.
+template <int dim>
+class Ramp : public Function<dim>
+{
+public:
+  explicit Ramp(const Tensor<1, dim> &value)
+    : Function<dim>(dim)
+    , value_at_one(value)
+  {
+  }
+  double
+  value(const Point<dim> &, const unsigned int c) const override
+  {
+    return value_at_one[c] * this->get_time();
+  }
+
+private:
+  const Tensor<1, dim> value_at_one;
+};
 
 // The reference: textbook Q1 linear elasticity, assembled with FEValues.
 template <int dim>
@@ -118,11 +146,12 @@ fem_solution(const DoFHandler<dim>         &dof_handler,
   return solution;
 }
 
+// The box, its points at the Gauss points and its loads; @p ramped: the
+// traction and body force grow with t (for several steps), else constant.
 template <int dim>
 void
-test()
+set_up(qsmpm::QuasiStaticProblem<dim> &problem, const bool ramped)
 {
-  qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
   problem.pcout().set_condition(false);
   Point<dim>                    upper;
   std::array<unsigned int, dim> n;
@@ -132,9 +161,7 @@ test()
       n[d]     = d == 0 ? 9 : 3;
     }
   problem.grid().make_box(Point<dim>(), upper, n);
-  auto model = std::make_unique<qsmpm::LinearElastic<dim>>(100., 0.25);
-  const SymmetricTensor<4, dim> C = model->stiffness();
-  problem.set_model(std::move(model));
+  problem.set_model(std::make_unique<qsmpm::LinearElastic<dim>>(100., 0.25));
   problem.points().fill([](const Point<dim> &) { return true; },
                         2,
                         qsmpm::MaterialPointSet<dim>::Placement::gauss);
@@ -154,8 +181,16 @@ test()
     std::vector<double> values(value.begin_raw(), value.begin_raw() + dim);
     return std::make_shared<Functions::ConstantFunction<dim>>(values);
   };
-  bcs.add_traction(1, constant(traction<dim>()));
-  bcs.set_body_force(constant(body_force<dim>()));
+  if (ramped)
+    {
+      bcs.add_traction(1, std::make_shared<Ramp<dim>>(traction<dim>()));
+      bcs.set_body_force(std::make_shared<Ramp<dim>>(body_force<dim>()));
+    }
+  else
+    {
+      bcs.add_traction(1, constant(traction<dim>()));
+      bcs.set_body_force(constant(body_force<dim>()));
+    }
 
   auto &prm                             = problem.parameters();
   prm.material_points.update_volumes    = false;
@@ -164,8 +199,18 @@ test()
   prm.nonlinear_solver.linear_tolerance = 1e-10;
   prm.output.directory                  = "results";
   prm.output.interval                   = 0;
+}
+
+template <int dim>
+void
+test()
+{
+  qsmpm::QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
+  set_up(problem, false);
   problem.run();
 
+  const SymmetricTensor<4, dim> C =
+    qsmpm::LinearElastic<dim>(100., 0.25).stiffness();
   const Vector<double> u_fem =
     fem_solution(problem.grid().get_dof_handler(), C);
   Vector<double> u_mpm(u_fem.size());
@@ -194,6 +239,44 @@ test()
   // residual norm near the tolerance.
   check_that("  Newton iterations: 1 to 3 (linear problem)",
              newton >= 1 && newton <= 3);
+
+  // Four steps; the points' displacements against the FEM field at their
+  // initial places (where they stay with Move points = false).
+  const auto departure = [&](const bool move) {
+    qsmpm::QuasiStaticProblem<dim> steps(MPI_COMM_WORLD);
+    set_up(steps, true);
+    steps.parameters().load_stepping.n_steps       = 4;
+    steps.parameters().material_points.move_points = move;
+    steps.run();
+    // The reference on this problem's own dofs.
+    const auto          &dofs    = steps.grid().get_dof_handler();
+    const Vector<double> u_steps = fem_solution(dofs, C);
+    const auto          &offsets = steps.points().get_offsets();
+    double               error = 0., norm = 0.;
+    for (const auto &particle : steps.points().get_particle_handler())
+      {
+        // Where the point was created: x_p - u_p if it moved.
+        const double *u_p =
+          particle.get_properties().data() + offsets.displacement;
+        Point<dim> x = particle.get_location();
+        if (move)
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] -= u_p[d];
+        Vector<double> u(dim);
+        VectorTools::point_value(dofs, u_steps, x, u);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            error += (u_p[d] - u[d]) * (u_p[d] - u[d]);
+            norm += u[d] * u[d];
+          }
+      }
+    return std::sqrt(error / norm);
+  };
+  check("  4 steps, Move points = false: |u_p - u_FEM(x_p)| / |u_FEM|",
+        departure(false),
+        1e-8);
+  check_that("  4 steps, points moving (MPM): the same above 1e-6",
+             departure(true) > 1e-6);
 }
 
 int

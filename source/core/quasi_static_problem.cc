@@ -217,6 +217,11 @@ namespace qsmpm
                 ExcMessage("Material points: <Axisymmetric = true> is not "
                            "available with a pore fluid or contact between "
                            "bodies."));
+    AssertThrow(prm_values.material_points.move_points ||
+                  (bcs.rigid_bodies().empty() && !body_contact.enabled()),
+                ExcMessage("Material points: <Move points = false> is not "
+                           "available with rigid bodies or contact between "
+                           "bodies, which follow the points' positions."));
     material_points =
       std::make_unique<MaterialPointSet<dim>>(background_grid,
                                               *model,
@@ -1013,7 +1018,10 @@ namespace qsmpm
         for (unsigned int k = 0; k < motion.size(); ++k)
           run_state.plate_displacements[k] += motion[k];
       }
-    const double moved = points().advect(cache, du_ghosted);
+    const double moved =
+      points().advect(cache,
+                      du_ghosted,
+                      prm_values.material_points.move_points);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the

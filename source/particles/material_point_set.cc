@@ -133,10 +133,24 @@ namespace qsmpm
       prm.add_parameter("Update volumes",
                         update_volumes,
                         "Update point volumes with J (paper eqs. 2.23-2.24). "
-                        "false keeps the initial volumes: a geometrically "
-                        "linear model, identical to linear finite elements "
-                        "when the points sit at Gauss points.",
+                        "false keeps the initial volumes: with the points at "
+                        "Gauss points the first step is that of linear "
+                        "finite elements (and every step, with <Move points "
+                        "= false>).",
                         Patterns::Bool());
+      prm.add_parameter(
+        "Move points",
+        move_points,
+        "true: the points move with the grid's increment at the end of each "
+        "step (paper eqs. 2.26-2.27), the material-point method. false: "
+        "they stay where they were created and accumulate their "
+        "displacement only; with <Update volumes = false> this is the "
+        "small-displacement theory with the points as a fixed quadrature "
+        "(the finite element method when they sit at Gauss points), whose "
+        "quadrature does not change as the body deforms. Needs <Kinematics "
+        "= small strain>; not with rigid bodies or contact between bodies, "
+        "which follow the points' positions.",
+        Patterns::Bool());
       Utils::add_selection<Kinematics>(
         prm,
         "Kinematics",
@@ -265,6 +279,10 @@ namespace qsmpm
     AssertThrow(update_volumes || !formulation.finite_strain(),
                 ExcMessage("Material points: <Update volumes = false> "
                            "(a geometrically linear model) contradicts "
+                           "<Kinematics = finite strain>."));
+    AssertThrow(move_points || !formulation.finite_strain(),
+                ExcMessage("Material points: <Move points = false> (the "
+                           "small-displacement theory) contradicts "
                            "<Kinematics = finite strain>."));
     AssertThrow(!formulation.axisymmetric || dim == 2,
                 ExcMessage("Material points: <Axisymmetric = true> needs a "
@@ -700,7 +718,8 @@ namespace qsmpm
   template <int dim>
   double
   MaterialPointSet<dim>::advect(const ShapeCache<dim>               &cache,
-                                const TrilinosWrappers::MPI::Vector &du)
+                                const TrilinosWrappers::MPI::Vector &du,
+                                const bool                           move)
   {
     double        largest = 0.;
     const double *values  = du.trilinos_vector()[0];
@@ -714,8 +733,11 @@ namespace qsmpm
             double *data = particle.get_properties().data();
             Assert(data == cache.properties(p), ExcInternalError());
             const Tensor<1, dim> u = cache.interpolate(c, p, values);
-            largest                = std::max(largest, u.norm());
-            particle.set_location(particle.get_location() + u);
+            if (move)
+              {
+                largest = std::max(largest, u.norm());
+                particle.set_location(particle.get_location() + u);
+              }
             for (unsigned int d = 0; d < dim; ++d)
               data[offsets.displacement + d] += u[d];
             ++p;
