@@ -1018,15 +1018,14 @@ namespace qsmpm
         for (unsigned int k = 0; k < motion.size(); ++k)
           run_state.plate_displacements[k] += motion[k];
       }
-    const double moved =
-      points().advect(cache,
-                      du_ghosted,
-                      prm_values.material_points.move_points);
+    const bool   move  = prm_values.material_points.move_points;
+    const double moved = points().advect(cache, du_ghosted, move);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the
-    // next step (fresh pages cost a page fault each).
-    if (!points().locate_in_cells())
+    // next step (fresh pages cost a page fault each). Points that do not
+    // move stay in their cells at their reference locations.
+    if (move && !points().locate_in_cells())
       {
         // Sorting moves the points' data in memory. Releasing the cache
         // first keeps it from adding to the copy of all particle data that
