@@ -134,6 +134,11 @@ main(int argc, char *argv[])
             "subsection Material\n"
             "  set Model = hencky\n"
             "end\n");
+  try_input("points that do not move with updated volumes",
+            "Update volumes",
+            "subsection Material points\n"
+            "  set Move points = false\n"
+            "end\n");
   try_input("GIMP with a macroscopic displacement gradient",
             "Shape functions",
             "subsection Geometry\n"

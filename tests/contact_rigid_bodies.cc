@@ -29,6 +29,14 @@
 //    sliding step, 2e-3 of floor motion, the block sticks: the ratio is
 //    below mu, and it never exceeds mu. With rough contact the ratio
 //    exceeds mu (5 sliding steps).
+// 4. Case 1 with linear shape functions and points that do not move
+//    (Move points = false, Update volumes = false): the small-displacement
+//    theory with the points as a fixed quadrature, in which the uniform stress
+//    is exact; the plate meets the points where their displacement puts them
+//    (X_p + u_p). 1 % on every point's stress and the plate's force, as
+//    in case 1. Control: the same with moving points, whose cell under the
+//    plate is off by about u / h (doc/contact.md), must be off by more than
+//    1 %.
 //
 // Output from rank 0; the results do not depend on the number of ranks.
 #include "prm_text.h"
@@ -58,7 +66,8 @@ namespace
             const std::string &model,
             const double       compaction,
             const unsigned int steps,
-            const double       gamma)
+            const double       gamma,
+            const bool         move_points = true)
   {
     std::ostringstream prm;
     prm << "set Dimension = 2\n"
@@ -69,7 +78,10 @@ namespace
         << "  set Region lower corner = 0,0\n"
         << "  set Region upper corner = 1,1\n"
         << "  set Kinematics = " << kinematics << "\n"
-        << "  set Shape functions = " << shape_functions << "\nend\n"
+        << "  set Shape functions = " << shape_functions << "\n"
+        << "  set Move points = " << (move_points ? "true" : "false")
+        << "\n  set Update volumes = " << (move_points ? "true" : "false")
+        << "\nend\n"
         << "subsection Material\n  set Model = " << model << "\n"
         << "  subsection " << model << "\n"
         << "    set Young's modulus = " << E << "\n"
@@ -225,11 +237,21 @@ main(int argc, char **argv)
 
   deallog << "1. Rigid plate compacting an elastic column, small strain"
           << std::endl;
-  const double      d = 0.01;
-  const PlateResult small =
-    run_plate(plate_prm("small strain", "cpGIMP", "linear elastic", d, 4, 100.),
-              -M * d,
-              -lambda_lame * d);
+  const double d = 0.01;
+  // The column compacted by d in 4 steps at small strain.
+  const auto compacted = [&](const std::string &shape_functions,
+                             const bool         move_points) {
+    return run_plate(plate_prm("small strain",
+                               shape_functions,
+                               "linear elastic",
+                               d,
+                               4,
+                               100.,
+                               move_points),
+                     -M * d,
+                     -lambda_lame * d);
+  };
+  const PlateResult small = compacted("cpGIMP", true);
   if (root)
     std::cout << "plate: stress error " << small.stress_error
               << "; plate force error " << small.plate_error
@@ -291,4 +313,20 @@ main(int argc, char **argv)
   const FloorResult rough = run_floor("rough", 5);
   check("  rough: F_x / F_y > mu after 5 sliding steps",
         rough.completed && !rough.ratio.empty() && rough.ratio.back() > 0.3);
+
+  deallog << "4. Case 1 with linear shape functions, points that do not move"
+          << std::endl;
+  const PlateResult fixed  = compacted("linear", false);
+  const PlateResult moving = compacted("linear", true);
+  if (root)
+    std::cout << "plate, linear: stress error " << fixed.stress_error
+              << " with points that do not move, " << moving.stress_error
+              << " with moving points" << std::endl;
+  check("  completed", fixed.completed && moving.completed);
+  check("  stress of every point within 1 % of the exact",
+        fixed.stress_error < 1e-2);
+  check("  plate force within 1 % of the exact", fixed.plate_error < 1e-2);
+  check("  plate force = base reaction to 1e-6", fixed.balance < 1e-6);
+  check("  control, moving points: stress error above 1 %",
+        moving.stress_error > 1e-2);
 }

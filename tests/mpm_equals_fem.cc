@@ -14,7 +14,8 @@
 // material-point method (points moving, the default) departs from it by
 // the change of its quadrature and geometry (of the order of the strain,
 // 1e-3), which the second check asks to exceed 1e-6: it shows that the
-// first would fail if the points moved.
+// first would fail if the points moved. Last, a formulation changed after
+// set_model() (which made the points) must stop run() with a message.
 #include "fem_reference.h"
 #include "tests.h"
 
@@ -131,8 +132,12 @@ fem_solution(const DoFHandler<dim>         &dof_handler,
 // traction and body force grow with t (for several steps), else constant.
 template <int dim>
 void
-set_up(qsmpm::QuasiStaticProblem<dim> &problem, const bool ramped)
+set_up(qsmpm::QuasiStaticProblem<dim> &problem,
+       const bool                      ramped,
+       const bool                      move_points = true)
 {
+  // Before set_model(), which makes the points with it.
+  problem.parameters().material_points.formulation.move_points = move_points;
   problem.pcout().set_condition(false);
   Point<dim>                    upper;
   std::array<unsigned int, dim> n;
@@ -237,9 +242,8 @@ test()
   // initial places (where they stay with Move points = false).
   const auto departure = [&](const bool move) {
     qsmpm::QuasiStaticProblem<dim> steps(MPI_COMM_WORLD);
-    set_up(steps, true);
-    steps.parameters().load_stepping.n_steps       = 4;
-    steps.parameters().material_points.move_points = move;
+    set_up(steps, true, move);
+    steps.parameters().load_stepping.n_steps = 4;
     steps.run();
     const auto &offsets = steps.points().get_offsets();
     double      error = 0., norm = 0.;
@@ -267,6 +271,24 @@ test()
         1e-8);
   check_that("  4 steps, points moving (MPM): the same above 1e-6",
              departure(true) > 1e-6);
+
+  // The points are made by set_model(): a formulation changed after it
+  // would be ignored, so run() stops and says so.
+  qsmpm::QuasiStaticProblem<dim> late(MPI_COMM_WORLD);
+  set_up(late, true);
+  late.parameters().material_points.formulation.move_points = false;
+  std::string message;
+  try
+    {
+      late.run();
+    }
+  catch (const std::exception &exc)
+    {
+      message = exc.what();
+    }
+  check_that("  Move points changed after set_model(): run() stops, names "
+             "set_model()",
+             message.find("set_model()") != std::string::npos);
 }
 
 int

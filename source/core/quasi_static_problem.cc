@@ -217,11 +217,10 @@ namespace qsmpm
                 ExcMessage("Material points: <Axisymmetric = true> is not "
                            "available with a pore fluid or contact between "
                            "bodies."));
-    AssertThrow(prm_values.material_points.move_points ||
-                  (bcs.rigid_bodies().empty() && !body_contact.enabled()),
+    AssertThrow(formulation.move_points || !body_contact.enabled(),
                 ExcMessage("Material points: <Move points = false> is not "
-                           "available with rigid bodies or contact between "
-                           "bodies, which follow the points' positions."));
+                           "available with contact between bodies, whose "
+                           "grids follow the points' positions."));
     material_points =
       std::make_unique<MaterialPointSet<dim>>(background_grid,
                                               *model,
@@ -1018,14 +1017,13 @@ namespace qsmpm
         for (unsigned int k = 0; k < motion.size(); ++k)
           run_state.plate_displacements[k] += motion[k];
       }
-    const bool   move  = prm_values.material_points.move_points;
-    const double moved = points().advect(cache, du_ghosted, move);
+    const double moved = points().advect(cache, du_ghosted);
     // The cache is of the points' old positions; the next step makes it
     // anew. While every point stays in its cell, that is all: the points'
     // data stay where they are, and the cache keeps its memory for the
     // next step (fresh pages cost a page fault each). Points that do not
     // move stay in their cells at their reference locations.
-    if (move && !points().locate_in_cells())
+    if (points().get_formulation().move_points && !points().locate_in_cells())
       {
         // Sorting moves the points' data in memory. Releasing the cache
         // first keeps it from adding to the copy of all particle data that
@@ -1184,6 +1182,15 @@ namespace qsmpm
                                      OutputWriter<dim> &writer,
                                      ProbeWriter<dim>  &probes)
   {
+    // set_model() made the points with the formulation of that moment; a
+    // later change of it would be ignored.
+    AssertThrow(prm_values.material_points.formulation ==
+                  points().get_formulation(),
+                ExcMessage("Material points: the formulation (Kinematics, "
+                           "Shape functions, Volumetric locking, "
+                           "Axisymmetric, Move points) was changed after "
+                           "set_model(), which made the points with the one "
+                           "before; change it before set_model()."));
     if (body_contact.enabled())
       {
         // What acts on grid nodes or faces would have to be shared among

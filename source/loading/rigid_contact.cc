@@ -71,6 +71,7 @@ namespace qsmpm
     const double margin  = 2. * h;
     finite               = points.get_formulation().finite_strain();
     gimp                 = points.get_formulation().gimp();
+    move_points          = points.get_formulation().move_points;
     const double h_power = std::pow(h, dim - 1);
     // Axisymmetric: the grid's stiffness is per radian, r times that of a
     // plane problem; the penalty is the plane one at the grid's mid-radius.
@@ -127,7 +128,7 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const double    *data = cache->properties(p);
-            const Point<dim> x    = cache->position(p);
+            const Point<dim> x    = material_position(p);
             Tensor<1, dim>   half;
             Tensor<2, dim>   F;
             point_box(p, half, F);
@@ -150,6 +151,9 @@ namespace qsmpm
                 if (!(r > 0.))
                   continue;
                 const Point<dim> corner = x + a;
+                // Where the corner lies on the grid: the point's place
+                // there, which for points that do not move is x - u_p.
+                const Point<dim> grid_corner = cache->position(p) + a;
                 // Relative to the body's reference point, as the gap is
                 // evaluated in every residual (small near the surface).
                 const Tensor<1, dim> relative =
@@ -207,7 +211,7 @@ namespace qsmpm
                 const auto own   = cache->cell(c).cell;
                 auto       found = std::make_pair(own, Point<dim>());
                 if (gimp)
-                  found = grid.find_cell_around(corner, own);
+                  found = grid.find_cell_around(grid_corner, own);
                 const auto group_holds = [&](const auto &cell) {
                   grid.dof_cell(cell)->get_dof_indices(cell_dofs);
                   const types::global_dof_index *group = cache->global_dofs(c);
@@ -224,7 +228,7 @@ namespace qsmpm
                     !group_holds(found.first))
                   found = {own,
                            grid.get_mapping().transform_real_to_unit_cell(
-                             own, corner)};
+                             own, grid_corner)};
                 const auto &[cell, xi] = found;
                 grid.dof_cell(cell)->get_dof_indices(cell_dofs);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -276,13 +280,28 @@ namespace qsmpm
 
 
   template <int dim>
+  Point<dim>
+  RigidContact<dim>::material_position(const unsigned int p) const
+  {
+    if (move_points)
+      return cache->position(p);
+    const double *data = cache->properties(p);
+    Point<dim>    x    = cache->position(p);
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] += data[offsets.displacement + d];
+    return x;
+  }
+
+
+
+  template <int dim>
   void
   RigidContact<dim>::point_box(const unsigned int p,
                                Tensor<1, dim>    &half,
                                Tensor<2, dim>    &F) const
   {
     const double    *data = cache->properties(p);
-    const Point<dim> x    = cache->position(p);
+    const Point<dim> x    = material_position(p);
     // The point's box: half-lengths and its deformation so far.
     // Axisymmetric: the initial volume is per radian, R dA, with R the
     // point's initial radius.
@@ -411,7 +430,7 @@ namespace qsmpm
         const auto &range = cache->cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            const Point<dim>     x = cache->position(p);
+            const Point<dim>     x = material_position(p);
             const Tensor<1, dim> u = cache->interpolate(c, p, du_local);
             Tensor<1, dim>       half;
             Tensor<2, dim>       F;

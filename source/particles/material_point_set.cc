@@ -140,16 +140,17 @@ namespace qsmpm
                         Patterns::Bool());
       prm.add_parameter(
         "Move points",
-        move_points,
+        formulation.move_points,
         "true: the points move with the grid's increment at the end of each "
         "step (paper eqs. 2.26-2.27), the material-point method. false: "
         "they stay where they were created and accumulate their "
-        "displacement only; with <Update volumes = false> this is the "
-        "small-displacement theory with the points as a fixed quadrature "
-        "(the finite element method when they sit at Gauss points), whose "
-        "quadrature does not change as the body deforms. Needs <Kinematics "
-        "= small strain>; not with rigid bodies or contact between bodies, "
-        "which follow the points' positions.",
+        "displacement only; with <Update volumes = false>, which it needs, "
+        "this is the small-displacement theory with the points as a fixed "
+        "quadrature (the finite element method when they sit at Gauss "
+        "points), which does not change as the body deforms. Needs <Kinematics "
+        "= small strain>; a rigid body meets the points where their "
+        "displacement puts them; not with contact between bodies, whose "
+        "grids follow the points' positions.",
         Patterns::Bool());
       Utils::add_selection<Kinematics>(
         prm,
@@ -280,10 +281,15 @@ namespace qsmpm
                 ExcMessage("Material points: <Update volumes = false> "
                            "(a geometrically linear model) contradicts "
                            "<Kinematics = finite strain>."));
-    AssertThrow(move_points || !formulation.finite_strain(),
+    AssertThrow(formulation.move_points || !formulation.finite_strain(),
                 ExcMessage("Material points: <Move points = false> (the "
                            "small-displacement theory) contradicts "
                            "<Kinematics = finite strain>."));
+    AssertThrow(formulation.move_points || !update_volumes,
+                ExcMessage("Material points: <Move points = false> (the "
+                           "points as a fixed quadrature) needs <Update "
+                           "volumes = false>: the quadrature's weights do "
+                           "not change either."));
     AssertThrow(!formulation.axisymmetric || dim == 2,
                 ExcMessage("Material points: <Axisymmetric = true> needs a "
                            "2D grid."));
@@ -718,9 +724,9 @@ namespace qsmpm
   template <int dim>
   double
   MaterialPointSet<dim>::advect(const ShapeCache<dim>               &cache,
-                                const TrilinosWrappers::MPI::Vector &du,
-                                const bool                           move)
+                                const TrilinosWrappers::MPI::Vector &du)
   {
+    const bool    move    = formulation.move_points;
     double        largest = 0.;
     const double *values  = du.trilinos_vector()[0];
     for (unsigned int c = 0; c < cache.n_cells(); ++c)

@@ -323,6 +323,12 @@ namespace qsmpm
     Tensor<1, dim>
     contact_motion(const Candidate &c, const double *du_local) const;
 
+    /// Where point @p p of the material is at the step's start: its place
+    /// on the grid, plus its displacement u_p if the points do not move
+    /// (Formulation::move_points).
+    Point<dim>
+    material_position(const unsigned int p) const;
+
     /// The box of point @p p of the cache at the step's start: its
     /// half-lengths @p half and its deformation @p F (the class
     /// description).
@@ -371,6 +377,7 @@ namespace qsmpm
     bool                                    gimp         = false;
     bool                                    finite       = false;
     bool                                    axisymmetric = false;
+    bool                                    move_points  = true;
     std::vector<double>                     penalty;
     /// Each body's displacement at the step's end, and in the step.
     std::vector<Tensor<1, dim>> body_displacement;

@@ -101,6 +101,24 @@ namespace qsmpm
      * update_kirchhoff_stress_axisymmetric()).
      */
     bool axisymmetric = false;
+    /**
+     * The points move with the grid's increment at the end of each step
+     * (paper eqs. 2.26-2.27). false: they stay where they were created, a
+     * fixed quadrature, and only accumulate their displacement u_p (the
+     * small-displacement theory); what meets the deformed body, a rigid
+     * body's contact, sees them at X_p + u_p.
+     */
+    bool move_points = true;
+
+    bool
+    operator==(const Formulation &other) const
+    {
+      return kinematics == other.kinematics &&
+             shape_functions == other.shape_functions &&
+             volumetric == other.volumetric &&
+             axisymmetric == other.axisymmetric &&
+             move_points == other.move_points;
+    }
 
     bool
     fbar() const

@@ -54,9 +54,6 @@ namespace qsmpm
       std::string region_upper_corner;
       /// Omega_p follows J_p (2.23-2.24); false keeps Omega_p^0.
       bool update_volumes = true;
-      /// The points move with the grid's increment at the end of each step
-      /// (2.26-2.27); false keeps them where they were created.
-      bool move_points = true;
       /// Small or finite strain; linear or GIMP shape functions.
       Formulation formulation;
       /// Nodes holding less material than this fraction of a cell's volume
@@ -220,13 +217,13 @@ namespace qsmpm
      * 2.26-2.27): x_p += sum_i du_i N_i(x_p), u_p += the same. @p du_ghosted
      * must hold the locally relevant entries. Call locate_in_cells() next,
      * and sort_into_cells() if it returns false. Returns the largest
-     * distance a point moved (over all ranks). With @p move = false
-     * (Parameters::move_points) only u_p changes, and 0 is returned.
+     * distance a point moved (over all ranks). Points that do not move
+     * (Formulation::move_points = false) only accumulate u_p, and 0 is
+     * returned.
      */
     double
     advect(const ShapeCache<dim>               &cache,
-           const TrilinosWrappers::MPI::Vector &du_ghosted,
-           const bool                           move = true);
+           const TrilinosWrappers::MPI::Vector &du_ghosted);
 
     /**
      * After the points' locations were changed: if every point (on every
