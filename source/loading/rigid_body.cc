@@ -129,6 +129,56 @@ namespace qsmpm
 
 
   template <int dim>
+  std::vector<typename RigidBody<dim>::Face>
+  RigidBody<dim>::faces() const
+  {
+    constexpr double  unbounded = std::numeric_limits<double>::infinity();
+    std::vector<Face> list;
+    if (shape == Shape::box)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (const bool lower : {true, false})
+          {
+            Face face;
+            face.normal[d] = lower ? -1. : 1.;
+            face.offset    = lower ? 0. : upper_corner[d] - point[d];
+            for (unsigned int k = 0, e = 0; e < dim; ++e)
+              if (e != d)
+                {
+                  face.tangents[k][e] = 1.;
+                  face.lower[k]       = 0.;
+                  face.upper[k]       = upper_corner[e] - point[e];
+                  ++k;
+                }
+            list.push_back(face);
+          }
+    else if (shape == Shape::polygon)
+      for (unsigned int i = 0; i < vertices.size(); ++i)
+        {
+          const Tensor<1, dim> &a    = vertices[i];
+          const Tensor<1, dim> &b    = vertices[(i + 1) % vertices.size()];
+          const Tensor<1, dim>  edge = b - a;
+          Face                  face;
+          face.normal[0] = edge[1];
+          face.normal[1] = -edge[0];
+          face.normal /= face.normal.norm();
+          face.offset      = face.normal * a;
+          face.tangents[0] = edge / edge.norm();
+          face.lower[0]    = face.tangents[0] * a;
+          face.upper[0]    = face.tangents[0] * b;
+          if constexpr (dim == 3)
+            {
+              face.tangents[1][2] = 1.;
+              face.lower[1]       = -unbounded;
+              face.upper[1]       = unbounded;
+            }
+          list.push_back(face);
+        }
+    return list;
+  }
+
+
+
+  template <int dim>
   void
   RigidBody<dim>::set_polygon(const std::vector<Point<dim>> &corners)
   {

@@ -122,6 +122,10 @@ namespace qsmpm
         body_increment[b] = body_displacement[b] - start[b];
       }
 
+    std::vector<std::vector<typename RigidBody<dim>::Face>> faces;
+    for (const RigidBody<dim> &body : bodies)
+      faces.push_back(body.faces());
+
     for (unsigned int c = 0; c < cache->n_cells(); ++c)
       {
         const auto &range = cache->cell(c);
@@ -129,38 +133,131 @@ namespace qsmpm
           {
             const double    *data = cache->properties(p);
             const Point<dim> x    = material_position(p);
+            // Points that do not move (small displacements): the contact's
+            // geometry from the point's place on the grid, the class
+            // description.
+            const Point<dim> place = cache->position(p);
             Tensor<1, dim>   half;
             Tensor<2, dim>   F;
             point_box(p, half, F);
             for (unsigned int b = 0; b < bodies.size(); ++b)
               {
-                Tensor<1, dim> n;
-                const double   centre_gap =
-                  bodies[b].signed_distance(x, body_displacement[b], n);
+                const bool tied =
+                  bodies[b].friction == RigidBody<dim>::Friction::tied;
+                // Small displacements (the class description).
+                const bool small =
+                  !move_points &&
+                  bodies[b].friction == RigidBody<dim>::Friction::frictionless;
+                const Point<dim> &centre = small ? place : x;
+                Tensor<1, dim>    n;
+                const double      centre_gap =
+                  bodies[b].signed_distance(centre, body_displacement[b], n);
                 if (centre_gap > margin + half.norm() * F.norm())
                   continue;
-                Tensor<1, dim> a;
-                for (unsigned int d = 0; d < dim; ++d)
+                // The contact point x_p + a of a box facing along n.
+                const auto support = [&](const Tensor<1, dim> &normal) {
+                  Tensor<1, dim> a;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      Tensor<1, dim> edge;
+                      for (unsigned int i = 0; i < dim; ++i)
+                        edge[i] = F[i][d] * half[d];
+                      a -= (normal * edge) / edge.norm() * edge;
+                    }
+                  return a;
+                };
+                // Points that do not move, against a frictionless body,
+                // meet a box or a polygon at one of its faces, with their
+                // own face: the face that pressed the point in the last
+                // step (its traction, along the normal without friction)
+                // while the point's face still overlaps it, otherwise the
+                // one nearest to the point's place. At its place a point
+                // under a sinking footing lies below the base by the
+                // settlement, and near the base's edge it comes nearer to
+                // the side face once the settlement exceeds its distance
+                // from the edge: measured with the signed distance there,
+                // it went over to the side face and was pushed sideways,
+                // and the plateau fell by 4.9 % after s = 0.3 h (a/h = 8).
+                // A point nearest to an edge or a vertex touches that (the
+                // signed distance).
+                Candidate candidate;
+                candidate.body = b;
+                const std::vector<typename RigidBody<dim>::Face> &options =
+                  faces[b];
+                const auto take_face =
+                  [&](const typename RigidBody<dim>::Face &face) {
+                    candidate.flat = true;
+                    candidate.face = face;
+                    // The half-widths of the box's projection on the face.
+                    for (unsigned int k = 0; k < dim - 1; ++k)
+                      {
+                        candidate.half_width[k] = 0.;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          {
+                            double along = 0.;
+                            for (unsigned int i = 0; i < dim; ++i)
+                              along += face.tangents[k][i] * F[i][d];
+                            candidate.half_width[k] +=
+                              std::abs(along) * half[d];
+                          }
+                      }
+                  };
+                if (small && !options.empty())
                   {
-                    Tensor<1, dim> edge;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      edge[i] = F[i][d] * half[d];
-                    a -= (n * edge) / edge.norm() * edge;
+                    const double  *stored = data + contact_offset + b * dim;
+                    Tensor<1, dim> pressed;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      pressed[d] = stored[d];
+                    unsigned int last = 0;
+                    for (unsigned int f = 1; f < options.size(); ++f)
+                      if (options[f].normal * pressed >
+                          options[last].normal * pressed)
+                        last = f;
+                    if (options[last].normal * pressed > 0.)
+                      {
+                        take_face(options[last]);
+                        Tensor<1, dim> normal;
+                        double         share;
+                        contact_gap(candidate,
+                                    (place - bodies[b].point) -
+                                      body_displacement[b] +
+                                      support(options[last].normal),
+                                    normal,
+                                    share);
+                        candidate.flat = share > 0.;
+                      }
+                    for (unsigned int f = 0;
+                         f < options.size() && !candidate.flat;
+                         ++f)
+                      if (options[f].normal * n > 1. - 1e-12)
+                        take_face(options[f]);
+                    if (candidate.flat)
+                      n = candidate.face.normal;
                   }
-                const double r = -(n * a);
+                const Tensor<1, dim> a = support(n);
+                const double         r = -(n * a);
                 if (!(r > 0.))
                   continue;
                 const Point<dim> corner = x + a;
                 // Where the corner lies on the grid: the point's place
                 // there, which for points that do not move is x - u_p.
-                const Point<dim> grid_corner = cache->position(p) + a;
+                const Point<dim> grid_corner = place + a;
                 // Relative to the body's reference point, as the gap is
                 // evaluated in every residual (small near the surface).
-                const Tensor<1, dim> relative =
-                  (corner - bodies[b].point) - body_displacement[b];
+                // Points that do not move add their displacement u_p
+                // along the normal there.
+                Tensor<1, dim> relative =
+                  ((small ? grid_corner : corner) - bodies[b].point) -
+                  body_displacement[b];
                 Tensor<1, dim> n_corner;
-                const double   gap =
-                  bodies[b].signed_distance_from_point(relative, n_corner);
+                double         share;
+                contact_gap(candidate, relative, n_corner, share);
+                // Zero: the contact point moves with the full motion.
+                candidate.normal = small ? n_corner : Tensor<1, dim>();
+                if (small)
+                  relative += (n_corner * (x - place)) * n_corner;
+                const double gap =
+                  contact_gap(candidate, relative, n_corner, share);
                 if (first_step &&
                     bodies[b].friction != RigidBody<dim>::Friction::tied)
                   {
@@ -174,13 +271,9 @@ namespace qsmpm
                   continue;
                 // A tied body holds the points whose surface touches it
                 // (within half their size) or lies in it, and no others.
-                const bool tied =
-                  bodies[b].friction == RigidBody<dim>::Friction::tied;
                 if (tied && !(gap < r))
                   continue;
-                Candidate candidate;
                 candidate.point    = p;
-                candidate.body     = b;
                 candidate.first    = dof_values.size();
                 candidate.relative = relative;
                 candidate.reach    = half.norm() * F.norm();
@@ -192,7 +285,7 @@ namespace qsmpm
                                               axisymmetric ? x[0] : 1.);
                 // Points that touch the body count too: a body resting on
                 // another is held only by the contact.
-                candidate.penetrates = tied || gap <= 1e-8 * h;
+                candidate.penetrates = tied || (gap <= 1e-8 * h && share > 0.);
                 // The grid's Q1 functions at the corner, of the cell that
                 // holds it. With linear shape functions that is the
                 // point's own cell (extrapolated if the corner lies beyond
@@ -404,8 +497,9 @@ namespace qsmpm
         const RigidBody<dim> &body = bodies[c.body];
         if (body.friction == RigidBody<dim>::Friction::tied)
           continue;
-        const Tensor<1, dim> end = c.relative + contact_motion(c, du_local);
-        Tensor<1, dim>       n_start, n_end;
+        const Tensor<1, dim> end =
+          contact_position(c, contact_motion(c, du_local));
+        Tensor<1, dim> n_start, n_end;
         body.signed_distance_from_point(c.relative, n_start);
         const double gap = body.signed_distance_from_point(end, n_end);
         // Deeper than half the box's radius: a point beside a vertex (a
@@ -530,20 +624,59 @@ namespace qsmpm
 
   template <int dim>
   Tensor<1, dim>
+  RigidContact<dim>::contact_position(const Candidate      &c,
+                                      const Tensor<1, dim> &motion) const
+  {
+    if (c.normal.norm_square() == 0.)
+      return c.relative + motion;
+    return c.relative + (c.normal * motion) * c.normal;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::contact_gap(const Candidate      &c,
+                                 const Tensor<1, dim> &y,
+                                 Tensor<1, dim>       &n,
+                                 double               &share) const
+  {
+    share = 1.;
+    if (!c.flat)
+      return boundary.rigid_bodies()[c.body].signed_distance_from_point(y, n);
+    n = c.face.normal;
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      {
+        const double centre = y * c.face.tangents[k];
+        const double w      = c.half_width[k];
+        const double length = std::min(centre + w, c.face.upper[k]) -
+                              std::max(centre - w, c.face.lower[k]);
+        share *= w > 0. ? std::clamp(length / (2. * w), 0., 1.) :
+                          static_cast<double>(length >= 0.);
+      }
+    return n * y - c.face.offset;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
   RigidContact<dim>::traction(const Candidate &c,
                               const double    *du_local,
                               Tensor<1, dim>  &n,
                               double          &gap,
+                              double          &share,
                               bool            &active) const
   {
     const RigidBody<dim> &body   = boundary.rigid_bodies()[c.body];
     const Tensor<1, dim>  motion = contact_motion(c, du_local);
-    gap             = body.signed_distance_from_point(c.relative + motion, n);
+    gap             = contact_gap(c, contact_position(c, motion), n, share);
     const bool tied = body.friction == RigidBody<dim>::Friction::tied;
-    active          = tied || gap < 0.;
+    active          = tied || (gap < 0. && share > 0.);
     if (!active)
       return Tensor<1, dim>();
-    const double pressure = -penalty[c.body] * gap;
+    // Over the share of the point's face that meets the body.
+    const double pressure = -penalty[c.body] * share * gap;
     if (body.friction == RigidBody<dim>::Friction::frictionless)
       return pressure * n;
     // The traction of the last step, stored on the point.
@@ -560,8 +693,8 @@ namespace qsmpm
     // Return map of the tangential traction: the last step's, plus the
     // penalty of the slip of the contact point relative to the body.
     Tensor<1, dim> tau = t_old;
-    tau -=
-      tangential_scale * penalty[c.body] * (motion - body_increment[c.body]);
+    tau -= tangential_scale * penalty[c.body] * share *
+           (motion - body_increment[c.body]);
     tau -= (tau * n) * n;
     if (body.friction == RigidBody<dim>::Friction::coulomb)
       {
@@ -598,14 +731,15 @@ namespace qsmpm
               if (c.body != b)
                 continue;
               Tensor<1, dim>       n;
-              double               gap;
+              double               gap, share;
               bool                 active;
-              const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
+              const Tensor<1, dim> t =
+                traction(c, du_local, n, gap, share, active);
               if (!active)
                 continue;
               const double normal = (n * d) * (n * d);
               fs[0] += c.area * (t * d);
-              fs[1] += c.area * penalty[b] *
+              fs[1] += c.area * share * penalty[b] *
                        (bodies[b].friction == RigidBody<dim>::Friction::tied ?
                           1. :
                           normal + (tangential ? tangential_scale : 0.) *
@@ -767,9 +901,9 @@ namespace qsmpm
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;
-        double               gap;
+        double               gap, share;
         bool                 active;
-        const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
+        const Tensor<1, dim> t = traction(c, du_local, n, gap, share, active);
         if (active)
           action(c, t, gap);
       }
@@ -895,7 +1029,8 @@ namespace qsmpm
           continue;
         const RigidBody<dim> &body = boundary.rigid_bodies()[c.body];
         Tensor<1, dim>        n;
-        body.signed_distance_from_point(c.relative, n);
+        double                share;
+        contact_gap(c, c.relative, n, share);
         // epsilon A (n (x) n), with friction plus epsilon_T A P if the
         // point sticks. Which points slip in this step is not known yet:
         // those whose traction of the last step was at the Coulomb limit
@@ -913,7 +1048,7 @@ namespace qsmpm
                   !slipped(c, n)))
           stiffness +=
             tangential_scale * (unit_symmetric_tensor<dim>() - normal_part);
-        stiffness *= penalty[c.body] * c.area;
+        stiffness *= penalty[c.body] * c.area * share;
         K_point.reinit(dofs_per_cell, dofs_per_cell);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -1077,9 +1212,9 @@ namespace qsmpm
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;
-        double               gap;
+        double               gap, share;
         bool                 active;
-        const Tensor<1, dim> t = traction(c, du_local, n, gap, active);
+        const Tensor<1, dim> t = traction(c, du_local, n, gap, share, active);
         double              *data =
           cache->properties(c.point, points) + contact_offset + c.body * dim;
         for (unsigned int d = 0; d < dim; ++d)

@@ -1,6 +1,7 @@
 #ifndef qsmpm_loading_rigid_body_h
 #define qsmpm_loading_rigid_body_h
 
+#include <array>
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -162,6 +163,29 @@ namespace qsmpm
     double
     signed_distance_from_point(const Tensor<1, dim> &y,
                                Tensor<1, dim>       &normal) const;
+
+    /**
+     * A flat face of a box or a polygon: the points y (relative to the
+     * body's reference point, initial configuration) with
+     * normal . y = offset whose coordinates y . tangents[k] lie in
+     * [lower[k], upper[k]] (infinite along z for a polygon in 3D).
+     * normal . y - offset is the signed distance of y from the face's
+     * plane, positive on the side the outward normal points to.
+     */
+    struct Face
+    {
+      Tensor<1, dim>                      normal;
+      double                              offset = 0.;
+      std::array<Tensor<1, dim>, dim - 1> tangents;
+      std::array<double, dim - 1>         lower;
+      std::array<double, dim - 1>         upper;
+    };
+
+    /// The flat faces of a box (2 dim of them) or a polygon (one per
+    /// edge); none for a half-space and a sphere, whose surfaces have no
+    /// edges.
+    std::vector<Face>
+    faces() const;
 
     /// Throws with a message naming the body if its description is
     /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0, a

@@ -1,6 +1,7 @@
 #ifndef qsmpm_loading_rigid_contact_h
 #define qsmpm_loading_rigid_contact_h
 
+#include <array>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -64,18 +65,58 @@ namespace qsmpm
    * that partly lies in the cell below, and that cell's stress is off by
    * about u / h (5 % at u = h / 12 in the same test).
    *
+   * <h3>Points that do not move, against a frictionless body</h3>
+   * With Formulation::move_points false the points keep their places on
+   * the grid and the strain is small. Against a frictionless body the
+   * contact is then that of small displacements: the contact point and
+   * the normal are those of the point's place on the grid (the body at
+   * its position of the step's end), and the point's displacement, u_p of
+   * the steps before plus u_c(du), enters the gap by its component along
+   * that normal only: g = g(x_c^place) + n . (u_p + u_c). Measured where
+   * the displacement puts the point, the soil flowing out from under a
+   * smooth rigid footing (u_x = 0.9 s at its edge) slid the points at the
+   * edge over the footing's corner one after the other, and the footing's
+   * plateau fell by 4.2 % after a settlement of a third of a cell (a/h =
+   * 8; 2.2 % at a/h = 16; test contact_footing_small_displacement).
+   *
+   * Such a point meets a box or a polygon at one of its flat faces
+   * (RigidBody::faces()) with its own face of half-widths w_k (the
+   * projection of its box on the face's tangents t_k): n is the face's
+   * normal, the gap the contact point's distance from the face's plane,
+   * and only the share of the point's face that lies over the face is
+   * pressed,
+   *
+   *   share = prod_k |I_k meet [lower_k, upper_k]| / (2 w_k),
+   *   I_k = [x_c . t_k - w_k, x_c . t_k + w_k].
+   *
+   * The face is chosen at the start of each step: the one that pressed
+   * the point in the step before (its stored traction, which without
+   * friction lies along the normal) while the point's face still overlaps
+   * it, otherwise the face nearest to the point's place (a point nearest
+   * to an edge or a vertex touches that, with the signed distance). At
+   * its place a point under a sinking footing lies below the base by the
+   * settlement, and near the base's edge it comes nearer to the side
+   * face: chosen anew each step by the signed distance, it went over to
+   * the side face and was pushed sideways, and the plateau fell by 4.9 %
+   * after s = 0.3 h (a/h = 8). With friction (whose tangential traction
+   * does not tell the face) and with points that move, a point meets every
+   * body at the surface point nearest to its centre where its displacement
+   * puts it (the signed distance, below); the rough footing's base holds
+   * the soil under it, which does not slide over its edge.
+   *
    * <h3>The traction</h3>
-   * With the gap g = phi(x_c) (the body's signed distance at the load
-   * factor of the step's end, RigidBody::signed_distance()) and the
-   * contact stiffness per area
+   * With the gap g (the body's signed distance at the load factor of the
+   * step's end, RigidBody::signed_distance(), but for the faces above)
+   * and the contact stiffness per area
    *
    *   epsilon = gamma kbar / h^(dim-1)
    *
    * (RigidBody::penalty_factor gamma, kbar the mean stiffness of the
    * step's degrees of freedom, h the smallest cell size), a point with
-   * g < 0 gets the contact pressure p_N = -epsilon g along n, and with
+   * g < 0 gets the contact pressure p_N = -epsilon share g along n (share
+   * = 1 but on a face, above), and with
    * friction the tangential traction of a return map: trial
-   * tau = P (t_old - epsilon_T s), s the slip of the contact point
+   * tau = P (t_old - share epsilon_T s), s the slip of the contact point
    * relative to the body in the step, epsilon_T = epsilon / 10 (with the
    * full epsilon a point goes from stick to slip within a thousandth of a
    * step's motion and Newton cycles), P = I - n (x) n, t_old the point's
@@ -313,7 +354,41 @@ namespace qsmpm
       /// Whether the corner touches or is inside the body at du = 0 (every
       /// candidate of a tied body).
       bool penetrates;
+      /// The body's outward normal at the contact point's place at du = 0
+      /// for a point of small displacements (the class description), whose
+      /// contact point then moves along it only; zero otherwise.
+      Tensor<1, dim> normal;
+      /// Whether the point meets a flat face of a box or a polygon (points
+      /// of small displacements), which @p face then
+      /// describes, and the half-widths of the point's box along the
+      /// face's tangents.
+      bool                          flat = false;
+      typename RigidBody<dim>::Face face;
+      std::array<double, dim - 1>   half_width;
     };
+
+    /// Where candidate @p c's contact point is, relative to the body as
+    /// Candidate::relative, when it has moved by @p motion in the step
+    /// (contact_motion()): for a point of small displacements by the part
+    /// of @p motion along Candidate::normal (the class description).
+    Tensor<1, dim>
+    contact_position(const Candidate &c, const Tensor<1, dim> &motion) const;
+
+    /**
+     * The gap of candidate @p c's contact point at @p y (relative to the
+     * body, as Candidate::relative), the body's outward normal @p n there,
+     * and in @p share the part of the point's contact face that lies over
+     * the body's surface. On a flat face (Candidate::flat) the gap is the
+     * distance from the face's plane and @p share the overlap of the
+     * point's face (centred at y, Candidate::half_width along each
+     * tangent) with the face's extent; elsewhere the body's signed
+     * distance and 1 (the class description).
+     */
+    double
+    contact_gap(const Candidate      &c,
+                const Tensor<1, dim> &y,
+                Tensor<1, dim>       &n,
+                double               &share) const;
 
     /// The displacement of candidate @p c's contact point in the step at
     /// the increment whose local entries @p du_local holds (ghosted
@@ -338,16 +413,19 @@ namespace qsmpm
               Tensor<2, dim>    &F) const;
 
     /**
-     * The contact traction on candidate @p c at the increment whose local
-     * entries @p du_local holds (ghosted layout), with the body's normal
-     * @p n there and the gap @p gap; @p active: whether the point is in
-     * contact (g < 0, or tied).
+     * The contact traction on candidate @p c (per unit of its area A) at
+     * the increment whose local entries @p du_local holds (ghosted
+     * layout), with the body's normal @p n there, the gap @p gap and the
+     * share of the point's face over the body's surface @p share
+     * (contact_gap()); @p active: whether the point is in contact (g < 0
+     * with a share > 0, or tied).
      */
     Tensor<1, dim>
     traction(const Candidate &c,
              const double    *du_local,
              Tensor<1, dim>  &n,
              double          &gap,
+             double          &share,
              bool            &active) const;
 
     /// The motion s along its load direction of each body driven by a
