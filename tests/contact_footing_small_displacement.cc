@@ -26,117 +26,37 @@
 //    the supports to 1e-4 of it in every step.
 // 4. The same curve on 1 and on all ranks (to 1e-4 of q: the steps are
 //    solved to the Newton tolerance, 1e-6 relative).
-#include "tests.h"
-
-#include <deal.II/base/function.h>
-#include <qsmpm/core/quasi_static_problem.h>
+#include "rigid_footing.h"
 
 using namespace qsmpm;
+using namespace rigid_footing;
 
 namespace
 {
-  const double       a = 1., h = 0.25, sigma_y = 173.20508075688772;
-  const double       c = sigma_y / std::sqrt(3.), prandtl = 2. + numbers::PI;
-  const double       settlement = 0.75 * h, depth = 3.;
+  const double       h = 0.25, settlement = 0.75 * h;
   const unsigned int steps = 48;
-
-  class Settlement : public Function<2>
-  {
-  public:
-    Settlement()
-      : Function<2>(2)
-    {
-    }
-    double
-    value(const Point<2> &, const unsigned int component) const override
-    {
-      return component == 1 ? -settlement * get_time() : 0.;
-    }
-  };
-
-  struct Result
-  {
-    bool                completed = false;
-    std::vector<double> s, q_over_c;
-    double              largest_imbalance = 0.;
-    std::string         message;
-  };
 
   Result
   run(const MPI_Comm comm)
   {
-    std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Material points\n"
-         << "  set Points per cell per direction = 2\n"
-         << "  set Move points = false\n"
-         << "  set Update volumes = false\n"
-         << "  set Volumetric locking = F-bar\nend\n"
-         << "subsection Material\n  set Model = von Mises\n"
-         << "  subsection von Mises\n"
-         << "    set Young's modulus = 1e6\n    set Poisson's ratio = 0.3\n"
-         << "    set Yield stress = " << std::setprecision(17) << sigma_y
-         << "\n    set Hardening modulus = 0\n  end\nend\n"
-         << "subsection Load stepping\n  set Number of steps = " << steps
-         << "\nend\n"
-         << "subsection Nonlinear solver\n  set Line search steps = 8\nend\n"
-         << "subsection Output\n  set Interval = 0\n"
-         << "  set Directory = small-displacement-out\nend\n";
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
-
-    QuasiStaticProblem<2> problem(comm);
-    problem.pcout().set_condition(false);
-    problem.parameters().parse_parameters(prm);
-    // x in [0, 4 a], y in [0, depth + a]: 16 x 16 cells.
-    problem.grid().make_box(Point<2>(0., 0.),
-                            Point<2>(4. * a, depth + a),
-                            {{16, 16}});
-    auto      &bcs  = problem.boundary_conditions();
-    const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
-    bcs.add_dirichlet_boundary(0, {}, zero, /*normal_only=*/true);
-    bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
-    bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
-    RigidBody<2> footing;
-    footing.name           = "footing";
-    footing.shape          = RigidBody<2>::Shape::box;
-    footing.point          = Point<2>(-a, depth);
-    footing.upper_corner   = Point<2>(a, depth + a);
-    footing.motion         = std::make_shared<Settlement>();
-    footing.penalty_factor = 10.;
-    bcs.add_rigid_body(footing);
-    problem.set_model(ConstitutiveModelFactory<2>::create(prm));
-    problem.points().fill(
-      [](const Point<2> &x) { return x[0] > 0. && x[1] > 0. && x[1] < depth; },
-      2,
-      MaterialPointSet<2>::Placement::regular);
-
-    Result result;
-    problem.set_step_callback(
-      [&](const QuasiStaticProblem<2>::StepReport &report) {
-        const double force    = problem.rigid_body_loads().front().force[1];
-        double       supports = 0.;
-        for (unsigned int k = 0; k < 3; ++k)
-          supports += problem.reactions()[k][1];
-        result.s.push_back(settlement * report.load_factor);
-        result.q_over_c.push_back(force / a / c);
-        result.largest_imbalance =
-          std::max(result.largest_imbalance,
-                   std::abs(supports - force) / std::abs(force));
-        return true;
+    return rigid_footing::run(
+      comm,
+      "  set Move points = false\n"
+      "  set Update volumes = false\n",
+      1e6,
+      settlement,
+      steps,
+      [](QuasiStaticProblem<2> &problem) {
+        // x in [0, 4 a], y in [0, depth + a]: 16 x 16 cells.
+        problem.grid().make_box(Point<2>(0., 0.),
+                                Point<2>(4. * a, depth + a),
+                                {{16, 16}});
+        auto      &bcs  = problem.boundary_conditions();
+        const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+        bcs.add_dirichlet_boundary(0, {}, zero, /*normal_only=*/true);
+        bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
+        bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
       });
-    try
-      {
-        problem.run();
-        result.completed = true;
-      }
-    catch (const std::exception &exc)
-      {
-        result.message = Utils::error_message(exc);
-      }
-    return result;
   }
 } // namespace
 
@@ -186,18 +106,5 @@ main(int argc, char **argv)
         1e-4);
 
   // 4. 1 rank against all ranks.
-  const Result alone      = run(MPI_COMM_SELF);
-  bool         same       = alone.completed && alone.s.size() == r.s.size();
-  double       difference = 0.;
-  for (unsigned int k = 0; same && k < r.s.size(); ++k)
-    {
-      same = same && std::abs(alone.s[k] - r.s[k]) < 1e-12;
-      difference =
-        std::max(difference,
-                 std::abs(alone.q_over_c[k] - r.q_over_c[k]) / prandtl);
-    }
-  check_that("1 rank: the same load steps", same);
-  check("1 rank against all: largest |q difference| / ((2 + pi) c)",
-        difference,
-        1e-4);
+  check_same_on_one_rank(r, run(MPI_COMM_SELF));
 }

@@ -1,0 +1,150 @@
+// Prandtl's smooth strip footing (half-width a = 1) as a rigid box pushed
+// into a weightless von Mises soil (c = 100, nu = 0.3), plane strain,
+// F-bar, 2 x 2 points per cell, the soil 3 a deep: the set-up that the
+// rigid-footing contact tests share. Each test gives the points'
+// formulation, E, the settlement and the grid with its supports.
+#ifndef qsmpm_tests_rigid_footing_h
+#define qsmpm_tests_rigid_footing_h
+
+#include "tests.h"
+
+#include <deal.II/base/function.h>
+#include <qsmpm/core/quasi_static_problem.h>
+
+namespace rigid_footing
+{
+  using namespace qsmpm;
+
+  const double a = 1., sigma_y = 173.20508075688772;
+  const double c = sigma_y / std::sqrt(3.), prandtl = 2. + numbers::PI;
+  const double depth = 3.;
+
+  /// The footing's motion: down by s t.
+  class Settlement : public Function<2>
+  {
+  public:
+    explicit Settlement(const double s)
+      : Function<2>(2)
+      , s(s)
+    {
+    }
+    double
+    value(const Point<2> &, const unsigned int component) const override
+    {
+      return component == 1 ? -s * get_time() : 0.;
+    }
+
+  private:
+    const double s;
+  };
+
+  /// The curve q/c against s, and the largest |supports - footing force|
+  /// relative to the footing force over the steps.
+  struct Result
+  {
+    bool                completed = false;
+    std::vector<double> s, q_over_c;
+    double              largest_imbalance = 0.;
+    std::string         message;
+  };
+
+  /// Push the footing down by @p settlement in @p steps steps on @p comm:
+  /// @p points_entries are the lines of subsection Material points beside
+  /// 2 x 2 points and F-bar, @p grid_and_supports(problem) makes the grid
+  /// and the supports (ids 0-2 carry the reactions).
+  template <typename GridAndSupports>
+  Result
+  run(const MPI_Comm         comm,
+      const std::string     &points_entries,
+      const double           youngs_modulus,
+      const double           settlement,
+      const unsigned int     steps,
+      const GridAndSupports &grid_and_supports)
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Material points\n"
+         << "  set Points per cell per direction = 2\n"
+         << points_entries << "  set Volumetric locking = F-bar\nend\n"
+         << "subsection Material\n  set Model = von Mises\n"
+         << "  subsection von Mises\n"
+         << "    set Young's modulus = " << youngs_modulus
+         << "\n    set Poisson's ratio = 0.3\n"
+         << "    set Yield stress = " << std::setprecision(17) << sigma_y
+         << "\n    set Hardening modulus = 0\n  end\nend\n"
+         << "subsection Load stepping\n  set Number of steps = " << steps
+         << "\nend\n"
+         << "subsection Nonlinear solver\n  set Line search steps = 8\nend\n"
+         << "subsection Output\n  set Interval = 0\n"
+         << "  set Directory = rigid-footing-out\nend\n";
+    ParameterHandler prm;
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(text.str());
+
+    QuasiStaticProblem<2> problem(comm);
+    problem.pcout().set_condition(false);
+    problem.parameters().parse_parameters(prm);
+    grid_and_supports(problem);
+    RigidBody<2> footing;
+    footing.name           = "footing";
+    footing.shape          = RigidBody<2>::Shape::box;
+    footing.point          = Point<2>(-a, depth);
+    footing.upper_corner   = Point<2>(a, depth + a);
+    footing.motion         = std::make_shared<Settlement>(settlement);
+    footing.penalty_factor = 10.;
+    problem.boundary_conditions().add_rigid_body(footing);
+    problem.set_model(ConstitutiveModelFactory<2>::create(prm));
+    problem.points().fill(
+      [](const Point<2> &x) { return x[0] > 0. && x[1] > 0. && x[1] < depth; },
+      2,
+      MaterialPointSet<2>::Placement::regular);
+
+    Result result;
+    problem.set_step_callback(
+      [&](const QuasiStaticProblem<2>::StepReport &report) {
+        const double force    = problem.rigid_body_loads().front().force[1];
+        double       supports = 0.;
+        for (unsigned int k = 0; k < 3; ++k)
+          supports += problem.reactions()[k][1];
+        result.s.push_back(settlement * report.load_factor);
+        result.q_over_c.push_back(force / a / c);
+        result.largest_imbalance =
+          std::max(result.largest_imbalance,
+                   std::abs(supports - force) / std::abs(force));
+        return true;
+      });
+    try
+      {
+        problem.run();
+        result.completed = true;
+      }
+    catch (const std::exception &exc)
+      {
+        result.message = Utils::error_message(exc);
+      }
+    return result;
+  }
+
+  /// Check that @p alone (1 rank) gives the steps of @p r and its q to
+  /// 1e-4 of (2 + pi) c.
+  inline void
+  check_same_on_one_rank(const Result &r, const Result &alone)
+  {
+    bool   same       = alone.completed && alone.s.size() == r.s.size();
+    double difference = 0.;
+    for (unsigned int k = 0; same && k < r.s.size(); ++k)
+      {
+        same = same && std::abs(alone.s[k] - r.s[k]) < 1e-12;
+        difference =
+          std::max(difference,
+                   std::abs(alone.q_over_c[k] - r.q_over_c[k]) / prandtl);
+      }
+    check_that("1 rank: the same load steps", same);
+    check("1 rank against all: largest |q difference| / ((2 + pi) c)",
+          difference,
+          1e-4);
+  }
+} // namespace rigid_footing
+
+#endif
