@@ -63,8 +63,10 @@ namespace NotchedPlate
           csv.open(plate.output_file);
           AssertThrow(csv,
                       ExcMessage("Cannot write <" + plate.output_file + ">."));
-          csv << "angle_deg,peak_N,work_over_Gf_area,crack_energy_over_Gf_area,"
-                 "crack_normal_deg,path_angle_deg,stored_energy_over_Gf_area\n";
+          // The objectivity figures first, then where the energy went.
+          csv << "angle_deg,peak_N,work_over_Gf_area,crack_normal_deg,"
+                 "crack_energy_over_Gf_area,path_angle_deg,"
+                 "stored_energy_over_Gf_area\n";
           curves.open(plate.output_directory + "/load_displacement.csv");
           curves << "angle_deg,grip_displacement_m,load_N\n";
         }
@@ -92,10 +94,9 @@ namespace NotchedPlate
             stopped.push_back(angle);
           else
             csv << angle << "," << std::setprecision(8) << r.peak << ","
-                << r.work / (G_f * ligament) << ","
-                << r.crack_energy / (G_f * ligament) << "," << r.normal << ","
-                << r.path_angle << "," << r.stored_energy / (G_f * ligament)
-                << "\n"
+                << r.work / (G_f * ligament) << "," << r.normal << ","
+                << r.crack_energy / (G_f * ligament) << "," << r.path_angle
+                << "," << r.stored_energy / (G_f * ligament) << "\n"
                 << std::flush;
         }
       if (root)

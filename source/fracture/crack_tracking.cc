@@ -145,12 +145,13 @@ namespace qsmpm
     // Indices into the model's state (SmearedCracks::state_fields()):
     // crack_allowed, crack_count, the first crack's separation history and
     // crack_anchor.
-    const unsigned int allowed   = 0;
-    const unsigned int count     = 1;
-    const unsigned int history   = 2 + 2 * dim * dim;
-    const unsigned int anchor    = Model::anchor_index;
-    const double       radius    = model.tracking_radius();
-    auto              &particles = points.get_particle_handler();
+    const unsigned int allowed     = 0;
+    const unsigned int count       = 1;
+    const unsigned int history     = 2 + 2 * dim * dim;
+    const unsigned int anchor      = Model::anchor_index;
+    const unsigned int band_length = Model::band_length_index;
+    const double       radius      = model.tracking_radius();
+    auto              &particles   = points.get_particle_handler();
 
     // Gather the paths of the cracks anchored in earlier steps and the
     // cracks started in the last one.
@@ -171,8 +172,10 @@ namespace qsmpm
         double dissipated = 0.;
         for (unsigned int k = 0; k < n_cracks; ++k)
           dissipated += cracks[k].dissipated;
-        largest                 = std::max(largest, dissipated);
-        const double half_width = 0.5 * cracks[0].length;
+        largest = std::max(largest, dissipated);
+        // The band of a path is that of its own normal (the smearing
+        // length may come from the mean normal of the band instead).
+        const double half_width = 0.5 * model.smearing_length(cracks[0].normal);
         if (state[anchor] > 0.)
           {
             for (unsigned int d = 0; d < dim; ++d)
@@ -249,6 +252,7 @@ namespace qsmpm
                 return position_key(a) < position_key(b);
               });
     std::vector<Point<dim>> anchors(new_cracks.size());
+    std::vector<double>     band_lengths(new_cracks.size());
     for (const NewCrack<dim> &crack : order)
       {
         const PathLine<dim> *nearest = nullptr;
@@ -262,6 +266,15 @@ namespace qsmpm
           a -= ((crack.centre - nearest->anchor) * nearest->normal) *
                nearest->normal;
         anchors[crack.index] = a;
+        // The band's direction: the mean of the normals of the paths whose
+        // bands contain the cell, this crack's own included (each turned to
+        // the side of this one).
+        Tensor<1, dim> mean = crack.normal;
+        paths.for_each_near(crack.centre, [&](const PathLine<dim> &line) {
+          if (line.offset(crack.centre) <= line.half_width * (1. + 1e-9))
+            mean += (line.normal * crack.normal < 0. ? -1. : 1.) * line.normal;
+        });
+        band_lengths[crack.index] = model.smearing_length(mean / mean.norm());
         paths.add({a, crack.normal, crack.half_width});
       }
     for (unsigned int i = 0; i < local_started.size(); ++i)
@@ -270,6 +283,7 @@ namespace qsmpm
         state[anchor] = 1.;
         for (unsigned int d = 0; d < dim; ++d)
           state[anchor + 1 + d] = anchors[first_local + i][d];
+        state[band_length] = band_lengths[first_local + i];
       }
 
     // Localized: a crack has dissipated `Crack tracking localization` of

@@ -381,7 +381,10 @@ namespace qsmpm
                                       {separation_increment_name, dim},
                                       {failed_name, 1}};
     if (tracking)
-      fields.push_back({anchor_name, dim + 1});
+      {
+        fields.push_back({anchor_name, dim + 1});
+        fields.push_back({band_length_name, 1});
+      }
     return fields;
   }
 
@@ -433,7 +436,8 @@ namespace qsmpm
   SmearedCracks<dim>::read(ArrayView<const double> state) const
   {
     Cracks cracks;
-    cracks.count = static_cast<unsigned int>(state[1]);
+    cracks.extrapolated = integration == DamageIntegration::impl_ex;
+    cracks.count        = static_cast<unsigned int>(state[1]);
     for (unsigned int k = 0; k < cracks.count; ++k)
       {
         for (unsigned int d = 0; d < dim; ++d)
@@ -445,6 +449,10 @@ namespace qsmpm
         cracks.increment[k] = state[2 + 2 * dim * dim + dim + k];
         cracks.length[k]    = smearing_length(cracks.normal[k]);
       }
+    // The first crack's length from its band's direction, once crack
+    // tracking has set it.
+    if (tracking && cracks.count > 0 && state[band_length_index] > 0.)
+      cracks.length[0] = state[band_length_index];
     return cracks;
   }
 
@@ -469,9 +477,7 @@ namespace qsmpm
   SmearedCracks<dim>::step_history(const Cracks      &cracks,
                                    const unsigned int k) const
   {
-    return cracks.history[k] + (integration == DamageIntegration::impl_ex ?
-                                  cracks.increment[k] :
-                                  0.);
+    return cracks.history[k] + (cracks.extrapolated ? cracks.increment[k] : 0.);
   }
 
 
@@ -634,8 +640,7 @@ namespace qsmpm
                    std::sqrt(w_pos * w_pos + beta * beta * s.norm_square());
     // IMPL-EX: the history of the step is extrapolated from the last one
     // and fixed, so that the traction is linear in the jump within a step.
-    const bool loading =
-      integration != DamageIntegration::impl_ex && delta > cracks.history[k];
+    const bool   loading    = !cracks.extrapolated && delta > cracks.history[k];
     const double delta_star = loading ? delta : step_history(cracks, k);
     const double K0         = initial_stiffness(L);
     const double Kc         = contact_stiffness(L);
@@ -758,7 +763,7 @@ namespace qsmpm
     // method cycles between the two (a crack that has almost failed, with
     // q near zero, closing), try every combination and keep the one whose
     // openings have the signs it assumed.
-    if (integration != DamageIntegration::impl_ex)
+    if (!cracks.extrapolated)
       return false;
     const SymmetricTensor<2, dim> C_eps = C * eps;
     for (unsigned int mask = 0; mask < (1u << m); ++mask)
@@ -874,6 +879,20 @@ namespace qsmpm
         return;
       }
     fade_parallel_stress(cracks, stress);
+
+    // IMPL-EX's implicit stage (Oliver, Huespe and Cante 2008): the
+    // stress of the step is that of the extrapolated history, but the
+    // history itself follows the implicit law at the step's strain. Taken
+    // from the jumps of the extrapolated secant instead, a history that
+    // grew in the last step grows on, as the softer secant opens the crack
+    // further.
+    if (cracks.extrapolated)
+      {
+        Cracks implicit       = cracks;
+        implicit.extrapolated = false;
+        if (solve_jumps(eps, implicit))
+          cracks.jump = implicit.jump;
+      }
 
     new_state[1] = cracks.count;
     for (unsigned int k = 0; k < cracks.count; ++k)
