@@ -26,7 +26,12 @@
 //      the paths whose path points lie within r (here the first crack's:
 //      B's path point is 2.06 cells away), so that points cracking
 //      together share a path instead of starting a parallel one;
-//    - the permissions follow the corner test with the three paths.
+//    - the permissions follow the corner test with the three paths;
+//    - the smearing lengths follow the band's direction (h = 1): B's is
+//      that of the mean of its normal and the first path's, which crosses
+//      its cell: L = cos 32.5 + sin 32.5 degrees (its own normal would give
+//      cos 35 + sin 35, 0.9 % more); C's, whose cell no path within r
+//      crosses, that of its own normal; A's stays that of step 1.
 // 3. In 3D (8 x 8 x 8 unit cells, 2 x 2 x 2 points per cell, cracking where
 //    x < 6), one crack with its normal at 30 degrees in the xy plane and
 //    20 degrees out of it: the permissions by the same test with the eight
@@ -188,6 +193,19 @@ namespace
       return a;
     }
 
+    /// The smearing length CrackTracking gave the crack in the point
+    /// nearest @p x (all ranks).
+    double
+    band_length_near(const Point<dim> &x) const
+    {
+      double L = 0.;
+      for (const auto &particle : points->get_particle_handler())
+        if (particle.get_location().distance(x) < 0.25)
+          L = particle.get_properties()
+                .data()[index.at(SmearedCracks<dim>::band_length_name)];
+      return Utilities::MPI::sum(L, MPI_COMM_WORLD);
+    }
+
     /// Run the update and compare the permissions with the corner test
     /// (if @p localized, a point off every path's cells is held back even
     /// far from the paths).
@@ -267,6 +285,13 @@ main(int argc, char *argv[])
   check("one crack: |path point - cell centre|",
         test.anchor_near(A).distance(first.anchor),
         1e-12);
+  // The smearing length at an angle phi to x, h = 1: cos phi + sin phi.
+  const auto length_at = [](const double degrees) {
+    return std::cos(degrees * M_PI / 180.) + std::sin(degrees * M_PI / 180.);
+  };
+  check("one crack: |L - (cos 30 + sin 30)|",
+        test.band_length_near(A) - length_at(30.),
+        1e-12);
 
   // B's cell (4,6) is crossed by the first path, C's cell (6,5) is not.
   AssertThrow(crosses(first, cell_centre(B)) && !crosses(first, cell_centre(C)),
@@ -294,6 +319,15 @@ main(int argc, char *argv[])
         1e-12);
   check("one crack: its path point unchanged",
         test.anchor_near(A).distance(first.anchor),
+        1e-12);
+  check("two more cracks: |L_B - (cos 32.5 + sin 32.5)|",
+        test.band_length_near(B) - length_at(32.5),
+        1e-12);
+  check("two more cracks: |L_C - (cos 30 + sin 30)|",
+        test.band_length_near(C) - length_at(30.),
+        1e-12);
+  check("one crack: |L_A - (cos 30 + sin 30)| after the next step",
+        test.band_length_near(A) - length_at(30.),
         1e-12);
 
   // Localization after 0.02 G_f: tau_nf = G_f = 1e-3, delta_0 = 2.

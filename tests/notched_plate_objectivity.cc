@@ -11,24 +11,25 @@
 // - every run breaks the plate (the load falls below 2 % of its peak);
 // - the crack normal (the energy-weighted mean of the cracks' normals) is
 //   the load axis, within 5 degrees (the issue's tolerance; measured 0.1,
-//   0.4 and 0.3 degrees);
+//   0.1 and 0.3 degrees);
 // - the crack runs straight across the ligament: the least-squares line
 //   through the points that dissipated at least G_f / 2 is within 3
-//   degrees of the ligament (measured 0.0, 1.3, 0.1; without crack
-//   tracking 6.5 degrees at 15: the band bends towards the grid's lines);
+//   degrees of the ligament (measured 0.0, 1.3, 0.7; without crack
+//   tracking 15.1 degrees at 15: the band runs along the grid's lines);
 // - the peak loads agree: each within 2 % of their mean (the issue's
-//   tolerance; measured 0.1-0.6 %);
+//   tolerance; measured 0.1-1.1 %);
 // - the energy the points' cracks dissipated, with what the unfinished
 //   cracks of the band still hold at the stop (their points' elastic
 //   energy: run on to 0.2 % of the peak, the band dissipates it), is the
 //   fracture energy of the ligament, G_f (W - a0) = 14 J/m, within 4 %
-//   (measured 0.974, 0.988, 1.001);
+//   (measured 0.984, 0.989, 1.007);
 // - the work of the grips up to the end of the run (2 % of the peak) is
-//   G_f (W - a0) within 3 %. The issue asks for 2 %; measured 0.988,
-//   1.013, 1.021. The tolerance fails if the band locks again: without
-//   crack-parallel softening the ratio is 1.032 at 30 degrees, without
-//   crack tracking and slip softening 1.27, with Failed points = keep
-//   cracks 1.93 at 15 degrees and still rising.
+//   G_f (W - a0) within 2 % (the issue's tolerance; measured 0.990, 1.008,
+//   1.017). It fails if the band locks or widens again: without
+//   crack-parallel softening the ratio is 1.026 at 30 degrees, without the
+//   localization of crack tracking as well 1.054, without crack tracking
+//   and slip softening 1.24; without tracking it is 0.86 at 15 degrees
+//   (the band along the grid's lines).
 #include "rotated_plate.h"
 #include "tests.h"
 
@@ -75,7 +76,7 @@ main(int argc, char *argv[])
             0.04);
       check(at + "|work / (G_f (W - a0)) - 1|",
             r.work / G_f_ligament - 1.,
-            0.03);
+            0.02);
       peaks.push_back(r.peak);
     }
   const double mean = (peaks[0] + peaks[1] + peaks[2]) / 3.;

@@ -143,8 +143,8 @@ namespace qsmpm
     const unsigned int first   = points.get_offsets().state;
     const unsigned int n_state = points.n_state_components();
     // Indices into the model's state (SmearedCracks::state_fields()):
-    // crack_allowed, crack_count, the first crack's separation history and
-    // crack_anchor.
+    // crack_allowed, crack_count, the first crack's separation history,
+    // crack_anchor and crack_band_length.
     const unsigned int allowed     = 0;
     const unsigned int count       = 1;
     const unsigned int history     = 2 + 2 * dim * dim;

@@ -48,7 +48,10 @@ namespace qsmpm
    * starts a new path through its cell's centre. New cracks are anchored
    * one after another, the most opened first (then by position), the same
    * on every rank: points that cracked together near each other share one
-   * path.
+   * path. It also gets its smearing length (`crack_band_length`) from the
+   * band's direction: L of the mean of the normals of the paths whose bands
+   * contain its cell, its own included (SmearedCracks, "The smearing
+   * length").
    *
    * After each step's commit (QuasiStaticProblem calls update()), the
    * cracked points are gathered on every rank (a few doubles per cracked

@@ -105,13 +105,14 @@ namespace qsmpm
    * near a crack's tip the principal directions of neighbouring points
    * differ by several degrees, and where the band runs along the grid's
    * lines, L = h sum_i |n_i| of a normal a few degrees off the band's
-   * exceeds the band's width h for every such point (the notched plate
-   * along the grid: the band's points had L = 1.05 h on average, and the
-   * band dissipated 5 % less than G_f times the ligament). With crack
+   * exceeds the band's width h for every such point, and the band
+   * dissipates less than G_f per unit area (the notched plate along the
+   * grid: L = 1.05 h on average over the band's points). With crack
    * tracking, the first crack of a point therefore takes L from the mean
    * normal of the cracks whose bands contain its cell (CrackTracking)
-   * from the step after it started on; the crack's own normal still
-   * carries its opening and its path.
+   * from the step after it started on (the notched plate: L = 1.03 h on
+   * average; the first cracks at the notch start before there is a band);
+   * the crack's own normal still carries its opening and its path.
    *
    * <h3>Dissipation</h3>
    * For the damage law the energy dissipated by a crack whose history
