@@ -34,24 +34,6 @@ namespace
   const double a = 1., sigma_y = 173.20508075688772;
   const double c = sigma_y / std::sqrt(3.), prandtl = 2. + numbers::PI;
 
-  class Settlement : public Function<2>
-  {
-  public:
-    explicit Settlement(const double s)
-      : Function<2>(2)
-      , s(s)
-    {
-    }
-    double
-    value(const Point<2> &, const unsigned int component) const override
-    {
-      return component == 1 ? -s * get_time() : 0.;
-    }
-
-  private:
-    const double s;
-  };
-
   struct Result
   {
     bool                completed = false;
@@ -106,7 +88,7 @@ namespace
       "footing",
       [](const Point<2> &x) { return x[0] <= a + 1e-10 && x[1] > 4. - 1e-10; },
       {{false, true}},
-      std::make_shared<Settlement>(0.02));
+      downward_motion(0.02));
 
     Result result;
     problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {

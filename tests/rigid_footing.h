@@ -19,25 +19,6 @@ namespace rigid_footing
   const double c = sigma_y / std::sqrt(3.), prandtl = 2. + numbers::PI;
   const double depth = 3.;
 
-  /// The footing's motion: down by s t.
-  class Settlement : public Function<2>
-  {
-  public:
-    explicit Settlement(const double s)
-      : Function<2>(2)
-      , s(s)
-    {
-    }
-    double
-    value(const Point<2> &, const unsigned int component) const override
-    {
-      return component == 1 ? -s * get_time() : 0.;
-    }
-
-  private:
-    const double s;
-  };
-
   /// The curve q/c against s, and the largest |supports - footing force|
   /// relative to the footing force over the steps.
   struct Result
@@ -91,7 +72,7 @@ namespace rigid_footing
     footing.shape          = RigidBody<2>::Shape::box;
     footing.point          = Point<2>(-a, depth);
     footing.upper_corner   = Point<2>(a, depth + a);
-    footing.motion         = std::make_shared<Settlement>(settlement);
+    footing.motion         = downward_motion(settlement);
     footing.penalty_factor = 10.;
     problem.boundary_conditions().add_rigid_body(footing);
     problem.set_model(ConstitutiveModelFactory<2>::create(prm));

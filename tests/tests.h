@@ -6,12 +6,14 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -105,6 +107,16 @@ namespace qsmpm_tests
     if (!pass)
       deallog << " (value " << value << ")";
     deallog << std::endl;
+  }
+
+  /// The motion (0, -s t) of a 2D footing pushed down by @p s per unit of
+  /// the load factor t (the time of the functions the problem evaluates).
+  inline std::shared_ptr<Function<2>>
+  downward_motion(const double s)
+  {
+    auto motion = std::make_shared<FunctionParser<2>>(2);
+    motion->initialize("x,y,t", "0; -s*t", {{"s", s}}, true);
+    return motion;
   }
 
   /// "PASS" or "FAIL" for a boolean condition.
