@@ -234,11 +234,50 @@ namespace qsmpm
                     if (candidate.flat)
                       n = candidate.face.normal;
                   }
-                const Tensor<1, dim> a = support(n);
-                const double         r = -(n * a);
+                // Near the body in the last step: the contact point goes on
+                // from where the grid moved it while the body's normal has
+                // not turned by more than 60 degrees just behind it (by
+                // h / 100, far more than a contact point's penetration
+                // under the penalty), the class description.
+                bool           follows = false;
+                Tensor<1, dim> tracked;
+                if (!small)
+                  {
+                    const double *track =
+                      data + offsets.contact_point + 2 * dim * b;
+                    Tensor<1, dim> last_normal;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        tracked[d]     = track[d];
+                        last_normal[d] = track[dim + d];
+                      }
+                    Tensor<1, dim> n_tracked;
+                    if (last_normal.norm_square() > 0.)
+                      bodies[b].signed_distance_from_point(
+                        (tracked + 0.01 * h * last_normal - bodies[b].point) -
+                          start[b],
+                        n_tracked);
+                    follows = n_tracked * last_normal > 0.5;
+                    if (follows)
+                      n = n_tracked;
+                    // On a flat face of a box or a polygon that it met it
+                    // goes on with the share of its own face that lies over
+                    // the face, until none does.
+                    for (unsigned int f = 0; follows && f < options.size(); ++f)
+                      if (options[f].normal * last_normal > 1. - 1e-12)
+                        {
+                          take_face(options[f]);
+                          n = options[f].normal;
+                          break;
+                        }
+                  }
+                // The box's depth along n, which its contact area needs.
+                const Tensor<1, dim> box = support(n);
+                const double         r   = -(n * box);
                 if (!(r > 0.))
                   continue;
-                const Point<dim> corner = x + a;
+                const Tensor<1, dim> a      = follows ? tracked - x : box;
+                const Point<dim>     corner = x + a;
                 // Where the corner lies on the grid: the point's place
                 // there, which for points that do not move is x - u_p.
                 const Point<dim> grid_corner = place + a;
@@ -1209,6 +1248,18 @@ namespace qsmpm
         for (unsigned int b = 0; b < motion.size(); ++b)
           motion[b] += shift[b];
       }
+    // Where the grid moved each contact point: the next step's (the class
+    // description); none for the points that were not near a body.
+    const auto        &bodies   = boundary.rigid_bodies();
+    const unsigned int tracking = offsets.contact_point;
+    if (!bodies.empty())
+      for (unsigned int cell = 0; cell < cache->n_cells(); ++cell)
+        for (unsigned int p = cache->cell(cell).first_point;
+             p < cache->cell(cell).end_point;
+             ++p)
+          std::fill_n(cache->properties(p, points) + tracking,
+                      2 * dim * bodies.size(),
+                      0.);
     for (const Candidate &c : candidates)
       {
         Tensor<1, dim>       n;
@@ -1219,6 +1270,23 @@ namespace qsmpm
           cache->properties(c.point, points) + contact_offset + c.body * dim;
         for (unsigned int d = 0; d < dim; ++d)
           data[d] = t[d];
+        if (c.normal.norm_square() == 0.)
+          {
+            // The contact point's own motion, the body's by a force
+            // included.
+            const Tensor<1, dim> moved =
+              c.relative + bodies[c.body].point + body_displacement[c.body] +
+              contact_motion(c, du_local) + shift[c.body] * load_unit[c.body];
+            double *track =
+              cache->properties(c.point, points) + tracking + 2 * dim * c.body;
+            // A point whose face has left the body's face starts afresh.
+            if (!c.flat || share > 0.)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  track[d]       = moved[d];
+                  track[dim + d] = n[d];
+                }
+          }
       }
     return motion;
   }

@@ -372,6 +372,13 @@ namespace qsmpm
       offsets.contact = layout.size();
     for (const auto &body : contact_bodies)
       layout.add("contact_" + body, dim, Kind::vector);
+    if (!contact_bodies.empty())
+      offsets.contact_point = layout.size();
+    for (const auto &body : contact_bodies)
+      {
+        layout.add("contact_point_" + body, dim, Kind::vector);
+        layout.add("contact_normal_" + body, dim, Kind::vector);
+      }
     if (!contact_bodies.empty() && formulation.fbar())
       offsets.fbar_volume_excess =
         layout.add("fbar_volume_excess", 1, Kind::scalar);

@@ -55,6 +55,31 @@ namespace qsmpm
    * contact point drifted from the surface the next step finds, and a
    * rigid footing pushed into the soil lost half of its contact points,
    * and 70 % of its force, when their row crossed a grid line.
+   *
+   * A point that was near a body in the last step (a candidate, within 2 h
+   * of it) keeps the contact point the grid moved: the next step starts
+   * at x_c + u_c(du), not at the support point of the box deformed with
+   * the point's F (MaterialPointSet::Offsets::contact_point), as long as
+   * the body's outward normal h / 100 behind it (far more than a contact
+   * point's penetration under the penalty) has not turned by more than 60
+   * degrees from the last step's; that normal, not the centre's, is then
+   * the one the box's area is taken along, and on a flat face of a box or
+   * a polygon the point meets the face with the share of its own face
+   * that lies over it (as points that do not move, below), until none
+   * does. At large strain the box's support point is not where the grid
+   * carries the point's surface: under a rigid footing pushed in by a
+   * quarter of its width the boxes recomputed at the start of a step
+   * implied up to five times the footing's force (the flattened, sheared
+   * points at its edge), and the pressure fell by 12-18 % in single
+   * steps. Followed, the contact force at the start of a step is within
+   * 1 % of the last step's; with the contact point's normal a flattened
+   * point whose centre lies inside the base's new position is not measured
+   * against the side, and with the share a point whose face slides over
+   * the base's edge leaves it gradually: the largest fall is 1.7 %
+   * (doc/example_footing.md). The normal behind the contact point lets a
+   * point of the soil heaving beside the footing, whose contact point the
+   * grid carried into the footing above its base, meet the side.
+   *
    * The same N_i(x_c) carry the contact force to the nodes,
    * as a traction on the body's surface: with cpGIMP domains, which tile
    * the body, a uniform stress is then in equilibrium with a uniform
@@ -99,10 +124,11 @@ namespace qsmpm
    * face: chosen anew each step by the signed distance, it went over to
    * the side face and was pushed sideways, and the plateau fell by 4.9 %
    * after s = 0.3 h (a/h = 8). With friction (whose tangential traction
-   * does not tell the face) and with points that move, a point meets every
-   * body at the surface point nearest to its centre where its displacement
-   * puts it (the signed distance, below); the rough footing's base holds
-   * the soil under it, which does not slide over its edge.
+   * does not tell the face) and with points that move, a point first meets
+   * a body at the surface point nearest to its centre where its
+   * displacement puts it (the signed distance, below), then where its
+   * contact point goes (above); the rough footing's base holds the soil
+   * under it, which does not slide over its edge.
    *
    * <h3>The traction</h3>
    * With the gap g (the body's signed distance at the load factor of the

@@ -122,6 +122,11 @@ namespace qsmpm
       /// With rigid bodies only: per body, the contact traction on the
       /// point's surface (dim doubles each; RigidContact).
       unsigned int contact = numbers::invalid_unsigned_int;
+      /// With rigid bodies only: per body, where the grid moved the point's
+      /// contact point in the last step, and the body's outward normal
+      /// there (2 dim doubles each, the normal zero where the point was not
+      /// near the body): the next step's contact point (RigidContact).
+      unsigned int contact_point = numbers::invalid_unsigned_int;
       /// With rigid bodies and F-bar only: the point's own volumetric
       /// strain minus the one F-bar gives it (its cell's mean), summed over
       /// the steps (small strain: traces of the increments; finite strain:
