@@ -23,6 +23,14 @@ namespace qsmpm
     // four cut-backs); at a tenth it converges in 4-11 iterations.
     constexpr double tangential_scale = 0.1;
 
+    // A point goes on from the contact point the grid moved while the
+    // body's normal, taken this many cell sizes behind it (far more than a
+    // contact point's penetration under the penalty, about 1e-4 h under a
+    // footing), has turned by less than arccos(follow_cosine) = 60 degrees
+    // (RigidContact's class description).
+    constexpr double follow_probe_depth = 0.01;
+    constexpr double follow_cosine      = 0.5;
+
   } // namespace
   template <int dim>
   RigidContact<dim>::RigidContact(const BoundaryDescriptor<dim> &boundary)
@@ -202,6 +210,17 @@ namespace qsmpm
                           }
                       }
                   };
+                // The face whose outward normal is @p normal, if the body has
+                // one.
+                const auto take_face_along = [&](const Tensor<1, dim> &normal) {
+                  for (const auto &face : options)
+                    if (face.normal * normal > 1. - 1e-12)
+                      {
+                        take_face(face);
+                        return true;
+                      }
+                  return false;
+                };
                 if (small && !options.empty())
                   {
                     const double  *stored = data + contact_offset + b * dim;
@@ -226,11 +245,8 @@ namespace qsmpm
                                     share);
                         candidate.flat = share > 0.;
                       }
-                    for (unsigned int f = 0;
-                         f < options.size() && !candidate.flat;
-                         ++f)
-                      if (options[f].normal * n > 1. - 1e-12)
-                        take_face(options[f]);
+                    if (!candidate.flat)
+                      take_face_along(n);
                     if (candidate.flat)
                       n = candidate.face.normal;
                   }
@@ -254,22 +270,18 @@ namespace qsmpm
                     Tensor<1, dim> n_tracked;
                     if (last_normal.norm_square() > 0.)
                       bodies[b].signed_distance_from_point(
-                        (tracked + 0.01 * h * last_normal - bodies[b].point) -
+                        (tracked + follow_probe_depth * h * last_normal -
+                         bodies[b].point) -
                           start[b],
                         n_tracked);
-                    follows = n_tracked * last_normal > 0.5;
+                    follows = n_tracked * last_normal > follow_cosine;
                     if (follows)
                       n = n_tracked;
                     // On a flat face of a box or a polygon that it met it
                     // goes on with the share of its own face that lies over
                     // the face, until none does.
-                    for (unsigned int f = 0; follows && f < options.size(); ++f)
-                      if (options[f].normal * last_normal > 1. - 1e-12)
-                        {
-                          take_face(options[f]);
-                          n = options[f].normal;
-                          break;
-                        }
+                    if (follows && take_face_along(last_normal))
+                      n = candidate.face.normal;
                   }
                 // The box's depth along n, which its contact area needs.
                 const Tensor<1, dim> box = support(n);
