@@ -107,6 +107,68 @@ namespace rigid_footing
     return result;
   }
 
+  /// Push the footing down by @p settlement in @p steps steps on @p comm
+  /// at finite strain with cpGIMP (Ghost penalty 1e-4), E = 1e5, a/h = 4,
+  /// on the grid of examples/footing: x in [-h, 4 a], y in [-h, depth + a]
+  /// (17 x 17 cells), a column of cells at x < 0 held in x with the
+  /// symmetry line, a row of cells below the soil held in x and y, rollers
+  /// on the right.
+  inline Result
+  run_finite_strain_gimp(const MPI_Comm     comm,
+                         const double       settlement,
+                         const unsigned int steps)
+  {
+    const double h = a / 4.;
+    return run(comm,
+               "  set Kinematics = finite strain\n"
+               "  set Shape functions = cpGIMP\n"
+               "  set Ghost penalty = 1e-4\n",
+               1e5,
+               settlement,
+               steps,
+               [h](QuasiStaticProblem<2> &problem) {
+                 problem.grid().make_box(Point<2>(-h, -h),
+                                         Point<2>(4. * a, depth + a),
+                                         {{17, 17}});
+                 auto      &bcs = problem.boundary_conditions();
+                 const auto zero =
+                   std::make_shared<Functions::ZeroFunction<2>>(2);
+                 bcs.add_dirichlet_nodes(
+                   "symmetry",
+                   [](const Point<2> &x) { return x[0] <= 1e-10; },
+                   {{true, false}},
+                   zero);
+                 bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
+                 bcs.add_dirichlet_nodes(
+                   "base",
+                   [](const Point<2> &x) { return x[1] <= 1e-10; },
+                   {{true, true}},
+                   zero);
+               });
+  }
+
+  /// q/c at the settlement @p s of @p r (0 if no step ends there).
+  inline double
+  q_over_c_at(const Result &r, const double s)
+  {
+    for (unsigned int k = 0; k < r.s.size(); ++k)
+      if (std::abs(r.s[k] - s) < 1e-9)
+        return r.q_over_c[k];
+    return 0.;
+  }
+
+  /// The largest fall of q from one step to the next beyond the settlement
+  /// @p from, over (2 + pi) c.
+  inline double
+  largest_fall(const Result &r, const double from)
+  {
+    double fall = 0.;
+    for (unsigned int k = 1; k < r.s.size(); ++k)
+      if (r.s[k] > from)
+        fall = std::max(fall, (r.q_over_c[k - 1] - r.q_over_c[k]) / prandtl);
+    return fall;
+  }
+
   /// Check that @p alone (1 rank) gives the steps of @p r and its q to
   /// 1e-4 of (2 + pi) c.
   inline void

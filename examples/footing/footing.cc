@@ -180,7 +180,9 @@ namespace Footing
                         "Whether the limit pressure is checked against "
                         "Prandtl's (a small-deformation result); false for "
                         "deep penetration, where the pressure keeps rising "
-                        "with the embedment.");
+                        "with the embedment, and for a non-associated soil "
+                        "(Dilatancy angle != Friction angle), for which "
+                        "Prandtl's N_c is no limit load.");
       prm.add_parameter("UMAT cohesion",
                         umat_cohesion,
                         "With Material/Model = umat: the cohesion c of the "
@@ -212,7 +214,9 @@ namespace Footing
   };
 
   Reference
-  prandtl_reference(ParameterHandler &prm, const std::string &surface)
+  prandtl_reference(ParameterHandler  &prm,
+                    const std::string &surface,
+                    const bool         check)
   {
     Reference reference;
     prm.enter_subsection("Material points");
@@ -256,14 +260,18 @@ namespace Footing
         reference.cohesion = prm.get_double("Cohesion");
         const double phi =
           prm.get_double("Friction angle") * numbers::PI / 180.;
-        AssertThrow((model == "Mohr-Coulomb" ||
-                     prm.get("Mohr-Coulomb matching") == "plane strain") &&
-                      prm.get_double("Dilatancy angle") ==
-                        prm.get_double("Friction angle"),
+        // Without the check (Check against Prandtl = false) N_c is only
+        // the curve's yardstick, and a non-associated soil may be run.
+        AssertThrow(!check ||
+                      ((model == "Mohr-Coulomb" ||
+                        prm.get("Mohr-Coulomb matching") == "plane strain") &&
+                       prm.get_double("Dilatancy angle") ==
+                         prm.get_double("Friction angle")),
                     ExcMessage("Footing: Prandtl's N_c holds for associated "
                                "flow (Dilatancy angle = Friction angle) and, "
                                "with Drucker-Prager, the plane-strain "
-                               "Mohr-Coulomb matching."));
+                               "Mohr-Coulomb matching; set Check against "
+                               "Prandtl = false to run another soil."));
         prm.leave_subsection();
         if (phi == 0.)
           reference.bearing_factor = 2. + numbers::PI;
@@ -738,7 +746,7 @@ namespace Footing
     AssertThrow(!footing.cells.empty() && !footing.treatments.empty(),
                 ExcMessage("Footing: give at least one grid and one "
                            "treatment."));
-    return prandtl_reference(prm, footing.footing_surface);
+    return prandtl_reference(prm, footing.footing_surface, footing.check);
   }
 
 
