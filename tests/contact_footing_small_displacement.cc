@@ -70,12 +70,8 @@ main(int argc, char **argv)
              "0.75 h (small strain, F-bar, a/h = 4)"
           << std::endl;
   const Result r = run(MPI_COMM_WORLD);
-  check_that("completed", r.completed);
-  if (!r.completed)
-    {
-      deallog << "  run stopped: " << r.message << std::endl;
-      return 0;
-    }
+  if (!check_completed(r))
+    return 0;
 
   // 1. The limit.
   double limit = 0.;

@@ -147,6 +147,16 @@ namespace rigid_footing
                });
   }
 
+  /// Check that the run of @p r completed; print why it stopped if not.
+  inline bool
+  check_completed(const Result &r)
+  {
+    check_that("completed", r.completed);
+    if (!r.completed)
+      deallog << "  run stopped: " << r.message << std::endl;
+    return r.completed;
+  }
+
   /// q/c at the settlement @p s of @p r (0 if no step ends there).
   inline double
   q_over_c_at(const Result &r, const double s)
