@@ -82,8 +82,8 @@ namespace qsmpm
    * share, and in 2D a second candidate of the same point presses the
    * rest of its face against the vertex; measured at its face's middle, a
    * point half under the base was let go at once with 12 % of a footing's
-   * force. The largest fall of the footing's pressure in one step is now
-   * 0.6 % (doc/example_footing.md). The normal behind the contact point lets a
+   * force. The largest fall of the footing's pressure in one step is 0.6 %
+   * (doc/example_footing.md). The normal behind the contact point lets a
    * point of the soil heaving beside the footing, whose contact point the
    * grid carried into the footing above its base, meet the side.
    *
