@@ -5,6 +5,7 @@
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/base/tensor_functions.h>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/materials/isotropic_plasticity.h>
 
 namespace qsmpm
 {
@@ -135,6 +136,27 @@ namespace qsmpm
         own_offsets.hoop_stress = points.get_formulation().axisymmetric ?
                                     packed_offset(offsets.hoop_stress) :
                                     numbers::invalid_unsigned_int;
+      }
+
+    // F-bar at small strain with an isotropic elastoplastic model: its
+    // elastic strain tells each point's plastic volume change
+    // (share_plastic_volume_changes()).
+    if (points.get_formulation().fbar() && !finite_strain &&
+        !points.get_formulation().axisymmetric &&
+        state_layout.state != numbers::invalid_unsigned_int &&
+        dynamic_cast<const IsotropicPlasticity<dim> *>(&model) != nullptr)
+      {
+        unsigned int offset = 0;
+        for (const auto &field : model.state_fields())
+          {
+            if (field.name == IsotropicPlasticity<dim>::elastic_strain_name &&
+                field.n_components == 6)
+              {
+                elastic_strain_offset = offset;
+                break;
+              }
+            offset += field.n_components;
+          }
       }
     reinit();
   }
@@ -278,6 +300,13 @@ namespace qsmpm
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         scratch.start_block(first, n_points, state_layout.n_state);
         block_kinematics(kind, c0, c1, du_values);
+        // The volume changes the points have at the iterate, split into the
+        // cell's elastic and their own plastic parts as in evaluate().
+        if (elastic_strain_offset != numbers::invalid_unsigned_int)
+          {
+            Evaluation unused;
+            share_plastic_volume_changes<false>(kind, c0, c1, unused);
+          }
         if (kind.axisymmetric)
           std::copy(scratch.hoop_increment.begin(),
                     scratch.hoop_increment.begin() + n_points,
@@ -341,7 +370,10 @@ namespace qsmpm
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         scratch.start_block(first, n_points, state_layout.n_state);
         block_kinematics(kind, c0, c1, du_values);
-        block_stresses<write_back>(kind, first, n_points, result);
+        if (elastic_strain_offset != numbers::invalid_unsigned_int)
+          share_plastic_volume_changes<write_back>(kind, c0, c1, result);
+        else
+          block_stresses<write_back>(kind, first, n_points, result);
         if (write_back)
           continue;
         // F-bar at small strain: the forces of the virtual F-bar strain.
@@ -1062,6 +1094,124 @@ namespace qsmpm
         total_volume += omega;
       }
     return sum / total_volume;
+  }
+
+
+
+  template <int dim>
+  template <bool write_back>
+  void
+  QuasiStaticResidual<dim>::share_plastic_volume_changes(
+    const LoopKind    &kind,
+    const unsigned int c0,
+    const unsigned int c1,
+    Evaluation        &result) const
+  {
+    const unsigned int first    = cache.cell(c0).first_point;
+    const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
+    // One pass where no point of the block changes its plastic volume, four
+    // or five where one does (the footings of examples/footing); the cap
+    // guards against a return mapping that is not monotone in the volume
+    // change.
+    constexpr unsigned int max_passes = 30;
+    const Evaluation       start      = result;
+    for (unsigned int pass = 0;; ++pass)
+      {
+        result = start;
+        block_stresses<false>(kind, first, n_points, result);
+        if (pass + 1 == max_passes || !update_volume_shares(c0, c1, pass == 0))
+          break;
+      }
+    if (write_back)
+      block_stresses<true>(kind, first, n_points, result);
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticResidual<dim>::update_volume_shares(const unsigned int c0,
+                                                 const unsigned int c1,
+                                                 const bool first_pass) const
+  {
+    const unsigned int n_state = state_layout.n_state;
+    const unsigned int volume  = own_offsets.volume;
+    const unsigned int first   = scratch.block_first;
+    // tr eps_e of a 3D elastic strain in deal.II's unrolled order.
+    const auto elastic_volume = [this](const double *state) {
+      const double *e = state + elastic_strain_offset;
+      return e[0] + e[1] + e[2];
+    };
+    // The common elastic volume change of a cell that keeps its mean total
+    // volume change under the update dx_p = (common - e_p) / s_p:
+    // sum_p w_p dx_p = 0.
+    const auto common_of = [&](const typename ShapeCache<dim>::CellRange &r) {
+      double sum = 0., weight = 0.;
+      for (unsigned int p = r.first_point; p < r.end_point; ++p)
+        {
+          const unsigned int i = p - first;
+          const double       w =
+            committed(p)[volume] / scratch.elastic_volume_slope[i];
+          sum += w * scratch.elastic_volume_change[i];
+          weight += w;
+        }
+      return sum / weight;
+    };
+
+    double mismatch = 0., increments = 0., accumulated = 0.;
+    for (unsigned int c = c0; c < c1; ++c)
+      {
+        const auto &range = cache.cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const unsigned int i = p - first;
+            const double       old =
+              elastic_volume(committed(p) + state_layout.state);
+            const double e =
+              elastic_volume(scratch.state.data() + i * n_state) - old;
+            double &slope = scratch.elastic_volume_slope[i];
+            if (first_pass)
+              {
+                slope                   = 1.;
+                scratch.volume_shift[i] = 0.;
+              }
+            else if (scratch.volume_shift[i] != 0.)
+              slope = std::clamp((e - scratch.elastic_volume_change[i]) /
+                                   scratch.volume_shift[i],
+                                 0.1,
+                                 1.);
+            scratch.elastic_volume_change[i] = e;
+            increments =
+              std::max(increments, scratch.strain_increment[i].norm());
+            accumulated = std::max(accumulated, std::abs(old));
+          }
+        const double common = common_of(range);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          mismatch =
+            std::max(mismatch,
+                     std::abs(scratch.elastic_volume_change[p - first] -
+                              common));
+      }
+    // Well above the round-off of the traces, far below what a
+    // finite-difference product of the Jacobian-free Newton resolves.
+    if (mismatch <= 1e-12 * increments + 1e-14 * accumulated)
+      return false;
+
+    for (unsigned int c = c0; c < c1; ++c)
+      {
+        const auto  &range  = cache.cell(c);
+        const double common = common_of(range);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const unsigned int i = p - first;
+            const double dx      = (common - scratch.elastic_volume_change[i]) /
+                              scratch.elastic_volume_slope[i];
+            scratch.volume_shift[i] = dx;
+            scratch.strain_increment[i] +=
+              dx / dim * unit_symmetric_tensor<dim>();
+          }
+      }
+    return true;
   }
 
 

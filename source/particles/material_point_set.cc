@@ -198,7 +198,11 @@ namespace qsmpm
         "strain the same on tr d eps), which removes the "
         "volumetric locking of plastic flow and nearly "
         "incompressible materials on bilinear/trilinear "
-        "cells.");
+        "cells. With Drucker-Prager, Mohr-Coulomb or Modified "
+        "Cam Clay only the elastic part of the volume change is "
+        "the cell's mean and each point adds its own plastic "
+        "one (no dilatancy locking; small strain, not with "
+        "Axisymmetric).");
       prm.add_parameter(
         "Minimum nodal volume",
         min_nodal_volume_fraction,

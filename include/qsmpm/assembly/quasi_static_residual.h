@@ -127,9 +127,12 @@ namespace qsmpm
      * hands them to the constitutive model: at small strain the strain
      * increments (F-bar's mean volume change included), at finite strain
      * the deformation increments Delta F and, with F-bar, their cells'
-     * mean volume changes; in axisymmetric problems the hoop strain
-     * increments as well. For the stiffness at a Newton
-     * iterate (TangentAssembler).
+     * mean volume changes (at small strain with a dilatant model each
+     * point's share, share_plastic_volume_changes()); in axisymmetric
+     * problems the hoop
+     * strain increments as well. For the stiffness at a Newton
+     * iterate (TangentAssembler), which leaves out the terms of the
+     * share.
      */
     void
     iterate_kinematics(const TrilinosWrappers::MPI::Vector &du,
@@ -210,6 +213,13 @@ namespace qsmpm
       std::vector<double> hoop_increment;
       std::vector<double> hoop_stress;
       std::vector<double> hoop_force;
+      /// F-bar with dilatant plastic flow (share_plastic_volume_changes()):
+      /// per point the elastic volume change of the last pass, the slope
+      /// d(elastic)/d(total) volume change and the last shift of its
+      /// volume change.
+      std::vector<double> elastic_volume_change;
+      std::vector<double> elastic_volume_slope;
+      std::vector<double> volume_shift;
       unsigned int        block_first = 0;
 
       /// Start the block of @p n_points points from @p first, with
@@ -233,6 +243,9 @@ namespace qsmpm
             hoop_increment.resize(n_points);
             hoop_stress.resize(n_points);
             hoop_force.resize(n_points);
+            elastic_volume_change.resize(n_points);
+            elastic_volume_slope.resize(n_points);
+            volume_shift.resize(n_points);
             state.resize(n_points * n_state);
           }
       }
@@ -295,6 +308,53 @@ namespace qsmpm
                    const unsigned int first,
                    const unsigned int n_points,
                    Evaluation        &result) const;
+
+    /**
+     * F-bar at small strain with a model whose plastic flow changes the
+     * volume (IsotropicPlasticity with dilatancy: Drucker-Prager,
+     * Mohr-Coulomb, Modified Cam Clay): block_stresses() for the cells
+     * [@p c0, @p c1)
+     * after the volume change of each point is split into the cell's
+     * common elastic part and the point's own plastic part.
+     *
+     * Plain F-bar gives every point of a cell the cell's mean volume
+     * change. Associated flow ties a point's plastic volume change to its
+     * own plastic shear (tr d eps_p = sin psi gamma_p for Mohr-Coulomb), so
+     * at collapse, where the elastic strains stop changing, every plastic
+     * point of a cell would have to shear alike: a constraint per point
+     * that a bilinear cell cannot meet, and the limit load keeps rising
+     * (dilatancy locking; Sloan and Randolph 1982, de Borst and Vermeer
+     * 1984). Here the volume change of point p is theta_bar + g_p - g_bar,
+     * g_p its plastic volume change in the step and g_bar the cell's
+     * volume-weighted mean: the cell as a whole still changes its volume
+     * by theta_bar, every point changes its elastic volume (its pressure)
+     * by the same amount, and only one constraint per cell remains, as in
+     * the mixed Q1-P0 element. g_p depends on the return mapping at the
+     * point's own volume change: the split is solved per cell by a Newton
+     * iteration on the common elastic volume change with the points'
+     * secant slopes, a few passes of the model over the block, to 1e-12
+     * of the block's strain increments. Where no point of a cell changes
+     * its plastic volume (elastic points, von Mises, psi = 0) g_p = 0 and
+     * this is plain F-bar (one pass). Finite-strain and axisymmetric
+     * problems keep plain F-bar.
+     */
+    template <bool write_back>
+    void
+    share_plastic_volume_changes(const LoopKind    &kind,
+                                 const unsigned int c0,
+                                 const unsigned int c1,
+                                 Evaluation        &result) const;
+
+    /**
+     * One Newton update of share_plastic_volume_changes() on the cells
+     * [@p c0, @p c1) from the elastic volume changes of the last pass;
+     * false (and nothing changed) where they already agree within each
+     * cell.
+     */
+    bool
+    update_volume_shares(const unsigned int c0,
+                         const unsigned int c1,
+                         const bool         first_pass) const;
 
     /// The forces of the cells [@p c0, @p c1), added into @p force.
     void
@@ -484,6 +544,14 @@ namespace qsmpm
     /// Where the model's batched update finds the point state (in the
     /// packed record, or in the property array without a packed copy).
     typename PointStateBatch<dim>::Layout state_layout;
+    /**
+     * The offset, in a point's model state, of the elastic strain
+     * (IsotropicPlasticity's "elastic_strain", 3D), whose trace is the
+     * elastic volume change that share_plastic_volume_changes() makes
+     * common to the points of a cell; invalid without F-bar at small
+     * strain or such a model, or where the batch does not carry the state.
+     */
+    unsigned int elastic_strain_offset = numbers::invalid_unsigned_int;
     /// Where the residual's own fields are in the same data: J, the
     /// initial volume, the volume (F-bar) and F (finite strain).
     typename MaterialPointSet<dim>::Offsets own_offsets;

@@ -82,6 +82,15 @@ namespace qsmpm
      * points of a cell (dilatant plastic flow, Drucker-Prager) do not act
      * on the points' own volume changes (QuasiStaticResidual). In 2D (plane
      * strain) the exponent is 1/2: only the in-plane stretches carry volume.
+     *
+     * At small strain, with a model whose plastic flow changes the volume
+     * (the IsotropicPlasticity models: Drucker-Prager, Mohr-Coulomb, Modified
+     * Cam Clay) only the elastic part of the volume change is the cell's:
+     * point p changes its volume by theta_bar + g_p - g_bar, g_p its own
+     * plastic volume change in the step and g_bar the cell's mean of them,
+     * which removes the dilatancy locking of associated flow (QuasiStatic
+     * Residual::share_plastic_volume_changes(); at small strain, not in
+     * axisymmetric problems).
      */
     fbar
   };
