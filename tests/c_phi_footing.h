@@ -19,8 +19,8 @@ namespace c_phi_footing
 {
   using namespace qsmpm;
 
-  /// The footing's half-width and the soil's cohesion.
-  const double a = 1., c = 100.;
+  /// The footing's half-width, the soil's cohesion and its elasticity.
+  const double a = 1., c = 100., E = 1e6, nu = 0.3;
 
   /// Prandtl-Reissner: q_u = c N_c, N_c = (N_q - 1) cot phi,
   /// N_q = exp(pi tan phi) tan^2(pi/4 + phi/2).
@@ -31,6 +31,44 @@ namespace c_phi_footing
     const double Nq  = std::exp(numbers::PI * std::tan(phi)) *
                       std::pow(std::tan(numbers::PI / 4. + phi / 2.), 2);
     return (Nq - 1.) / std::tan(phi);
+  }
+
+  /**
+   * The .prm text of the tests: 2D, 2 x 2 points per cell with @p locking
+   * (and the entries @p points_extra), the model @p model with E, nu, c,
+   * phi = psi = @p phi_degrees, no hardening (and the entries
+   * @p model_extra), 20 steps, Newton tolerance 1e-9 with 8 line-search
+   * steps, no output but into @p directory.
+   */
+  inline std::string
+  prm_text(const std::string &model,
+           const std::string &locking,
+           const double       phi_degrees,
+           const std::string &directory,
+           const std::string &points_extra = "",
+           const std::string &model_extra  = "")
+  {
+    std::ostringstream text;
+    text << "set Dimension = 2\n"
+         << "subsection Material points\n"
+         << "  set Points per cell per direction = 2\n"
+         << points_extra << "  set Volumetric locking = " << locking
+         << "\nend\n"
+         << "subsection Material\n  set Model = " << model << "\n"
+         << "  subsection " << model << "\n"
+         << "    set Young's modulus = " << E << "\n"
+         << "    set Poisson's ratio = " << nu << "\n"
+         << "    set Cohesion = " << c << "\n"
+         << "    set Friction angle = " << phi_degrees << "\n"
+         << "    set Dilatancy angle = " << phi_degrees << "\n"
+         << "    set Hardening modulus = 0\n"
+         << model_extra << "  end\nend\n"
+         << "subsection Load stepping\n  set Number of steps = 20\nend\n"
+         << "subsection Nonlinear solver\n"
+         << "  set Tolerance = 1e-9\n  set Line search steps = 8\nend\n"
+         << "subsection Output\n  set Interval = 0\n"
+         << "  set Directory = " << directory << "\nend\n";
+    return text.str();
   }
 
   struct Result

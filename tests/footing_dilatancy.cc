@@ -32,7 +32,7 @@ using namespace c_phi_footing;
 
 namespace
 {
-  const double E = 1e6, nu = 0.3, phi_deg = 20.;
+  const double phi_deg = 20.;
 
   /// The largest difference of K tr(eps_e) (3D, plane strain) between two
   /// points of a cell, over c, from the model's state.
@@ -77,28 +77,15 @@ main(int argc, char **argv)
   const double Nc = bearing_factor(phi_deg);
   deallog << "N_c(20 deg) = " << std::setprecision(5) << Nc << std::endl;
 
-  std::ostringstream text;
-  text << "set Dimension = 2\n"
-       << "subsection Material points\n"
-       << "  set Points per cell per direction = 2\n"
-       << "  set Move points = false\n  set Update volumes = false\n"
-       << "  set Volumetric locking = F-bar\nend\n"
-       << "subsection Material\n  set Model = Mohr-Coulomb\n"
-       << "  subsection Mohr-Coulomb\n"
-       << "    set Young's modulus = " << E << "\n"
-       << "    set Poisson's ratio = " << nu << "\n"
-       << "    set Cohesion = " << c << "\n"
-       << "    set Friction angle = " << phi_deg << "\n"
-       << "    set Dilatancy angle = " << phi_deg << "\n"
-       << "    set Hardening modulus = 0\n  end\nend\n"
-       << "subsection Load stepping\n  set Number of steps = 20\nend\n"
-       << "subsection Nonlinear solver\n"
-       << "  set Tolerance = 1e-9\n  set Line search steps = 8\nend\n"
-       << "subsection Output\n  set Interval = 0\n"
-       << "  set Directory = footing-dilatancy-out\nend\n";
+  const std::string text =
+    prm_text("Mohr-Coulomb",
+             "F-bar",
+             phi_deg,
+             "footing-dilatancy-out",
+             "  set Move points = false\n  set Update volumes = false\n");
   double       spread = std::numeric_limits<double>::quiet_NaN();
   const Result r =
-    run(MPI_COMM_WORLD, text.str(), [&spread](QuasiStaticProblem<2> &problem) {
+    run(MPI_COMM_WORLD, text, [&spread](QuasiStaticProblem<2> &problem) {
       spread = pressure_spread(problem);
     });
   check_that("1. 20 steps converged", r.completed);

@@ -40,25 +40,14 @@ namespace
   Result
   run(const MPI_Comm comm, const std::string &locking, const double phi)
   {
-    std::ostringstream text;
-    text << "set Dimension = 2\n"
-         << "subsection Material points\n"
-         << "  set Points per cell per direction = 2\n"
-         << "  set Volumetric locking = " << locking << "\nend\n"
-         << "subsection Material\n  set Model = Drucker-Prager\n"
-         << "  subsection Drucker-Prager\n"
-         << "    set Young's modulus = 1e6\n    set Poisson's ratio = 0.3\n"
-         << "    set Cohesion = " << c << "\n"
-         << "    set Friction angle = " << phi << "\n"
-         << "    set Dilatancy angle = " << phi << "\n"
-         << "    set Hardening modulus = 0\n"
-         << "    set Mohr-Coulomb matching = plane strain\n  end\nend\n"
-         << "subsection Load stepping\n  set Number of steps = 20\nend\n"
-         << "subsection Nonlinear solver\n"
-         << "  set Tolerance = 1e-9\n  set Line search steps = 8\nend\n"
-         << "subsection Output\n  set Interval = 0\n"
-         << "  set Directory = footing-dp-out\nend\n";
-    return c_phi_footing::run(comm, text.str());
+    return c_phi_footing::run(
+      comm,
+      prm_text("Drucker-Prager",
+               locking,
+               phi,
+               "footing-dp-out",
+               "",
+               "    set Mohr-Coulomb matching = plane strain\n"));
   }
 } // namespace
 

@@ -1,5 +1,6 @@
 #include <Epetra_BlockMap.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <qsmpm/assembly/quasi_static_residual.h>
@@ -292,7 +293,6 @@ namespace qsmpm
     kinematics.deformation_increments.resize(kind.finite_strain ? n : 0);
     kinematics.mean_volume_changes.resize(kind.finite_strain && kind.fbar ? n :
                                                                             0);
-    constexpr unsigned int block_cells = 8;
     for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
       {
         const unsigned int c1    = std::min(c0 + block_cells, cache.n_cells());
@@ -362,7 +362,6 @@ namespace qsmpm
     // processor can overlap, where one cell at a time left it waiting for
     // the results of short dependent chains (blocks of 8 cells were the
     // fastest; the figures are in doc/benchmarks.md).
-    constexpr unsigned int block_cells = 8;
     for (unsigned int c0 = 0; c0 < cache.n_cells(); c0 += block_cells)
       {
         const unsigned int c1    = std::min(c0 + block_cells, cache.n_cells());
@@ -1158,6 +1157,10 @@ namespace qsmpm
       return sum / weight;
     };
 
+    // Each cell's common elastic volume change, for the mismatch and for
+    // the update.
+    std::array<double, block_cells> commons;
+    Assert(c1 - c0 <= block_cells, ExcInternalError());
     double mismatch = 0., increments = 0., accumulated = 0.;
     for (unsigned int c = c0; c < c1; ++c)
       {
@@ -1185,7 +1188,7 @@ namespace qsmpm
               std::max(increments, scratch.strain_increment[i].norm());
             accumulated = std::max(accumulated, std::abs(old));
           }
-        const double common = common_of(range);
+        const double common = commons[c - c0] = common_of(range);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           mismatch =
             std::max(mismatch,
@@ -1200,7 +1203,7 @@ namespace qsmpm
     for (unsigned int c = c0; c < c1; ++c)
       {
         const auto  &range  = cache.cell(c);
-        const double common = common_of(range);
+        const double common = commons[c - c0];
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const unsigned int i = p - first;

@@ -251,6 +251,10 @@ namespace qsmpm
       }
     };
 
+    /// The cells of a block of loop() and iterate_kinematics() (blocks of
+    /// 8 cells were the fastest; the figures are in doc/benchmarks.md).
+    static constexpr unsigned int block_cells = 8;
+
     /// What the loop does, the same for all blocks of cells.
     struct LoopKind
     {
