@@ -32,18 +32,22 @@ namespace rigid_footing
   /// Push the footing down by @p settlement in @p steps steps on @p comm:
   /// @p points_entries are the lines of subsection Material points beside
   /// 2 x 2 points and F-bar, @p grid_and_supports(problem) makes the grid
-  /// and the supports (ids 0-2 carry the reactions).
-  template <typename GridAndSupports>
+  /// and the supports (ids 0-2 carry the reactions). In 3D the soil is a
+  /// slab z in [0, @p thickness] (the grid's supports hold it in plane
+  /// strain), the footing reaches a thickness beyond it on either side, and
+  /// q is the force over a times the thickness.
+  template <int dim = 2, typename GridAndSupports>
   Result
   run(const MPI_Comm         comm,
       const std::string     &points_entries,
       const double           youngs_modulus,
       const double           settlement,
       const unsigned int     steps,
-      const GridAndSupports &grid_and_supports)
+      const GridAndSupports &grid_and_supports,
+      const double           thickness = 1.)
   {
     std::ostringstream text;
-    text << "set Dimension = 2\n"
+    text << "set Dimension = " << dim << "\n"
          << "subsection Material points\n"
          << "  set Points per cell per direction = 2\n"
          << points_entries << "  set Volumetric locking = F-bar\nend\n"
@@ -60,36 +64,46 @@ namespace rigid_footing
          << "  set Directory = rigid-footing-out\nend\n";
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
+    QuasiStaticProblem<dim>::Parameters::declare_parameters(prm);
     prm.parse_input_from_string(text.str());
 
-    QuasiStaticProblem<2> problem(comm);
+    QuasiStaticProblem<dim> problem(comm);
     problem.pcout().set_condition(false);
     problem.parameters().parse_parameters(prm);
     grid_and_supports(problem);
-    RigidBody<2> footing;
-    footing.name           = "footing";
-    footing.shape          = RigidBody<2>::Shape::box;
-    footing.point          = Point<2>(-a, depth);
-    footing.upper_corner   = Point<2>(a, depth + a);
-    footing.motion         = downward_motion(settlement);
+    RigidBody<dim> footing;
+    footing.name            = "footing";
+    footing.shape           = RigidBody<dim>::Shape::box;
+    footing.point[0]        = -a;
+    footing.point[1]        = depth;
+    footing.upper_corner[0] = a;
+    footing.upper_corner[1] = depth + a;
+    if (dim == 3)
+      {
+        footing.point[dim - 1]        = -thickness;
+        footing.upper_corner[dim - 1] = 2. * thickness;
+      }
+    footing.motion         = downward_motion<dim>(settlement);
     footing.penalty_factor = 10.;
     problem.boundary_conditions().add_rigid_body(footing);
-    problem.set_model(ConstitutiveModelFactory<2>::create(prm));
+    problem.set_model(ConstitutiveModelFactory<dim>::create(prm));
     problem.points().fill(
-      [](const Point<2> &x) { return x[0] > 0. && x[1] > 0. && x[1] < depth; },
+      [](const Point<dim> &x) {
+        return x[0] > 0. && x[1] > 0. && x[1] < depth;
+      },
       2,
-      MaterialPointSet<2>::Placement::regular);
+      MaterialPointSet<dim>::Placement::regular);
 
-    Result result;
+    Result       result;
+    const double width = dim == 3 ? a * thickness : a;
     problem.set_step_callback(
-      [&](const QuasiStaticProblem<2>::StepReport &report) {
+      [&](const typename QuasiStaticProblem<dim>::StepReport &report) {
         const double force    = problem.rigid_body_loads().front().force[1];
         double       supports = 0.;
         for (unsigned int k = 0; k < 3; ++k)
           supports += problem.reactions()[k][1];
         result.s.push_back(settlement * report.load_factor);
-        result.q_over_c.push_back(force / a / c);
+        result.q_over_c.push_back(force / width / c);
         result.largest_imbalance =
           std::max(result.largest_imbalance,
                    std::abs(supports - force) / std::abs(force));
@@ -112,39 +126,54 @@ namespace rigid_footing
   /// on the grid of examples/footing: x in [-h, 4 a], y in [-h, depth + a]
   /// (17 x 17 cells), a column of cells at x < 0 held in x with the
   /// symmetry line, a row of cells below the soil held in x and y, rollers
-  /// on the right.
+  /// on the right. In 3D the same on a slab one cell (h) thick held in z on
+  /// both faces: plane strain again.
+  template <int dim = 2>
   inline Result
   run_finite_strain_gimp(const MPI_Comm     comm,
                          const double       settlement,
                          const unsigned int steps)
   {
     const double h = a / 4.;
-    return run(comm,
-               "  set Kinematics = finite strain\n"
-               "  set Shape functions = cpGIMP\n"
-               "  set Ghost penalty = 1e-4\n",
-               1e5,
-               settlement,
-               steps,
-               [h](QuasiStaticProblem<2> &problem) {
-                 problem.grid().make_box(Point<2>(-h, -h),
-                                         Point<2>(4. * a, depth + a),
-                                         {{17, 17}});
-                 auto      &bcs = problem.boundary_conditions();
-                 const auto zero =
-                   std::make_shared<Functions::ZeroFunction<2>>(2);
-                 bcs.add_dirichlet_nodes(
-                   "symmetry",
-                   [](const Point<2> &x) { return x[0] <= 1e-10; },
-                   {{true, false}},
-                   zero);
-                 bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
-                 bcs.add_dirichlet_nodes(
-                   "base",
-                   [](const Point<2> &x) { return x[1] <= 1e-10; },
-                   {{true, true}},
-                   zero);
-               });
+    return run<dim>(
+      comm,
+      "  set Kinematics = finite strain\n"
+      "  set Shape functions = cpGIMP\n"
+      "  set Ghost penalty = 1e-4\n",
+      1e5,
+      settlement,
+      steps,
+      [h](QuasiStaticProblem<dim> &problem) {
+        Point<dim>                    lower, upper;
+        std::array<unsigned int, dim> cells;
+        lower[0] = lower[1] = -h;
+        upper[0]            = 4. * a;
+        upper[1]            = depth + a;
+        cells[0] = cells[1] = 17;
+        if (dim == 3)
+          {
+            upper[dim - 1] = h;
+            cells[dim - 1] = 1;
+          }
+        problem.grid().make_box(lower, upper, cells);
+        auto      &bcs  = problem.boundary_conditions();
+        const auto zero = std::make_shared<Functions::ZeroFunction<dim>>(dim);
+        std::array<bool, dim> x_only{}, all{};
+        x_only[0] = true;
+        all.fill(true);
+        bcs.add_dirichlet_nodes(
+          "symmetry",
+          [](const Point<dim> &x) { return x[0] <= 1e-10; },
+          x_only,
+          zero);
+        bcs.add_dirichlet_boundary(1, {}, zero, /*normal_only=*/true);
+        bcs.add_dirichlet_nodes(
+          "base", [](const Point<dim> &x) { return x[1] <= 1e-10; }, all, zero);
+        if (dim == 3)
+          for (const unsigned int face : {4u, 5u})
+            bcs.add_dirichlet_boundary(face, {}, zero, /*normal_only=*/true);
+      },
+      h);
   }
 
   /// Check that the run of @p r completed; print why it stopped if not.

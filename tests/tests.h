@@ -109,13 +109,18 @@ namespace qsmpm_tests
     deallog << std::endl;
   }
 
-  /// The motion (0, -s t) of a 2D footing pushed down by @p s per unit of
-  /// the load factor t (the time of the functions the problem evaluates).
-  inline std::shared_ptr<Function<2>>
+  /// The motion (0, -s t) (in 3D (0, -s t, 0)) of a footing pushed down
+  /// by @p s per unit of the load factor t (the time of the functions the
+  /// problem evaluates).
+  template <int dim = 2>
+  inline std::shared_ptr<Function<dim>>
   downward_motion(const double s)
   {
-    auto motion = std::make_shared<FunctionParser<2>>(2);
-    motion->initialize("x,y,t", "0; -s*t", {{"s", s}}, true);
+    auto motion = std::make_shared<FunctionParser<dim>>(dim);
+    motion->initialize(dim == 2 ? "x,y,t" : "x,y,z,t",
+                       dim == 2 ? "0; -s*t" : "0; -s*t; 0",
+                       {{"s", s}},
+                       true);
     return motion;
   }
 

@@ -79,8 +79,10 @@ namespace qsmpm
    * past the end of the body's face at a vertex at which the surface turns
    * by more than 60 degrees (a footing's edge; not on the axis of an
    * axisymmetric problem), the point is measured at the middle of that
-   * share, and in 2D a second candidate of the same point presses the
-   * rest of its face against the vertex; measured at its face's middle, a
+   * share, and a second candidate of the same point presses the rest of
+   * its face against the vertex (in 3D the edge; at a corner of the base,
+   * where the face reaches past edges along both of its directions, the
+   * rest is not pressed); measured at its face's middle, a
    * point half under the base was let go at once with 12 % of a footing's
    * force. The largest fall of the footing's pressure in one step is 0.6 %
    * (doc/example_footing.md). The normal behind the contact point lets a
