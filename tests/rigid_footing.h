@@ -208,6 +208,28 @@ namespace rigid_footing
     return fall;
   }
 
+  /// The checks of a footing pushed in by @p settlement at finite strain
+  /// (contact_footing_deep and its 3D slab): it got there; from s = 0.05 a
+  /// on no step lowers q by more than 2 % of (2 + pi) c (a perfectly
+  /// plastic, weightless soil under monotonic penetration); q at the end is
+  /// at least q at s = 0.05 a (the embedment only raises the limit load);
+  /// the supports carry the footing's force to 1e-4 of it in every step.
+  inline void
+  check_deep_penetration(const Result &r, const double settlement)
+  {
+    check_that("the footing reached s = a",
+               std::abs(r.s.back() - settlement) < 1e-12);
+    check("largest fall of q in one step, s > 0.05 a, / ((2 + pi) c)",
+          largest_fall(r, 0.05 * a),
+          0.02);
+    const double first_limit = q_over_c_at(r, 0.05 * a);
+    check_that("q(s = a) >= q(s = 0.05 a) > 0",
+               first_limit > 0. && r.q_over_c.back() >= first_limit);
+    check("largest |supports - footing force| / footing force",
+          r.largest_imbalance,
+          1e-4);
+  }
+
   /// Check that @p alone (1 rank) gives the steps of @p r and its q to
   /// 1e-4 of (2 + pi) c.
   inline void
