@@ -19,7 +19,7 @@
 // 4. Plane strain: the slab's q at s = 0.05 a, on the plateau after the
 //    knee, within 1 % of the 2D problem's (5.6602 c from
 //    run_finite_strain_gimp<2>, which contact_footing_deep checks; the
-//    measured difference is 0.12 %: the penalty, scaled with the grid's
+//    measured difference is 0.11 %: the penalty, scaled with the grid's
 //    mean stiffness, differs between the slab and the plane grid, and so
 //    does the footing's penetration at the knee).
 #include "rigid_footing.h"
