@@ -1,5 +1,5 @@
-// The set-up shared by the tests of Prandtl's smooth strip footing on a
-// weightless c-phi soil (footing_drucker_prager, footing_dilatancy): half
+// What the tests of Prandtl's smooth strip footing on a weightless c-phi
+// soil share (footing_drucker_prager, footing_dilatancy): half
 // of the soil (x >= 0), 6 a wide and 4 a deep, a/h = 4 (24 x 16 cells),
 // 2 x 2 points per cell, the footing the top nodes with x <= a pushed down
 // by 0.02 a, rollers on the sides, the base fixed. Wider than
@@ -9,11 +9,7 @@
 #ifndef qsmpm_tests_c_phi_footing_h
 #define qsmpm_tests_c_phi_footing_h
 
-#include "tests.h"
-
-#include <deal.II/base/function.h>
-#include <functional>
-#include <qsmpm/core/quasi_static_problem.h>
+#include "nodal_footing.h"
 
 namespace c_phi_footing
 {
@@ -71,67 +67,19 @@ namespace c_phi_footing
     return text.str();
   }
 
-  struct Result
-  {
-    bool completed = false;
-    /// The footing's mean pressure over c after each step.
-    std::vector<double> pressure_over_c;
-    std::string         message;
-  };
+  using nodal_footing::Result;
 
   /**
-   * The footing with the problem's entries @p prm_text (a .prm text of
-   * QuasiStaticProblem's parameters; "Dimension" is declared here) on
-   * @p comm in 20 steps; @p inspect, if given, sees the problem after a
-   * completed run.
+   * The footing (nodal_footing::run()) on the soil 6 a wide with the
+   * problem's entries @p prm_text; @p inspect, if given, sees the problem
+   * after a completed run.
    */
   inline Result
   run(const MPI_Comm                                      comm,
       const std::string                                  &prm_text,
       const std::function<void(QuasiStaticProblem<2> &)> &inspect = {})
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
-
-    QuasiStaticProblem<2> problem(comm);
-    problem.pcout().set_condition(false);
-    problem.parameters().parse_parameters(prm);
-    problem.grid().make_box(Point<2>(), Point<2>(6., 4.), {{24, 16}});
-    problem.set_model(ConstitutiveModelFactory<2>::create(prm));
-    problem.points().fill([](const Point<2> &) { return true; },
-                          2,
-                          MaterialPointSet<2>::Placement::regular);
-    auto      &bcs  = problem.boundary_conditions();
-    const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
-    bcs.add_dirichlet_boundary(0, {}, zero, true);
-    bcs.add_dirichlet_boundary(1, {}, zero, true);
-    bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
-    bcs.add_dirichlet_nodes(
-      "footing",
-      [](const Point<2> &x) { return x[0] <= a + 1e-10 && x[1] > 4. - 1e-10; },
-      {{false, true}},
-      qsmpm_tests::downward_motion(0.02));
-
-    Result result;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      result.pressure_over_c.push_back(-problem.reactions()[3][1] / a / c);
-      return true;
-    });
-    try
-      {
-        problem.run();
-        result.completed = true;
-      }
-    catch (const std::exception &exc)
-      {
-        result.message = exc.what();
-        return result;
-      }
-    if (inspect)
-      inspect(problem);
-    return result;
+    return nodal_footing::run(comm, prm_text, 6., c, inspect);
   }
 
   /// The pressure over c after the last step, NaN without steps.

@@ -22,24 +22,18 @@
 //    (With perfect plasticity the plastic zone still changes during the
 //    first iterations of a step; the asymptotic rate is the same, but it
 //    sets in later.) The residuals are printed to stdout only.
-#include "tests.h"
-
-#include <deal.II/base/function.h>
-#include <qsmpm/core/quasi_static_problem.h>
+#include "nodal_footing.h"
 
 using namespace qsmpm;
 
 namespace
 {
-  const double a = 1., sigma_y = 173.20508075688772;
+  const double sigma_y = 173.20508075688772;
   const double c = sigma_y / std::sqrt(3.), prandtl = 2. + numbers::PI;
 
-  struct Result
+  struct Result : nodal_footing::Result
   {
-    bool                completed = false;
-    std::vector<double> pressure_over_c;
     std::vector<double> history; // Newton residuals of the last step
-    std::string         message;
   };
 
   Result
@@ -65,47 +59,11 @@ namespace
          << solver << "end\n"
          << "subsection Output\n  set Interval = 0\n"
          << "  set Directory = footing-out\nend\n";
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text.str());
-
-    QuasiStaticProblem<2> problem(comm);
-    problem.pcout().set_condition(false);
-    problem.parameters().parse_parameters(prm);
-    // Half of the soil (x >= 0), 4 a wide and deep, a/h = 4.
-    problem.grid().make_box(Point<2>(), Point<2>(4., 4.), {{16, 16}});
-    problem.set_model(ConstitutiveModelFactory<2>::create(prm));
-    problem.points().fill([](const Point<2> &) { return true; },
-                          2,
-                          MaterialPointSet<2>::Placement::regular);
-    auto      &bcs  = problem.boundary_conditions();
-    const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
-    bcs.add_dirichlet_boundary(0, {}, zero, true);
-    bcs.add_dirichlet_boundary(1, {}, zero, true);
-    bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
-    bcs.add_dirichlet_nodes(
-      "footing",
-      [](const Point<2> &x) { return x[0] <= a + 1e-10 && x[1] > 4. - 1e-10; },
-      {{false, true}},
-      downward_motion(0.02));
-
     Result result;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      result.pressure_over_c.push_back(-problem.reactions()[3][1] / a / c);
-      return true;
-    });
-    try
-      {
-        problem.run();
-        result.completed = true;
-      }
-    catch (const std::exception &exc)
-      {
-        result.message = exc.what();
-      }
-    if (!problem.step_reports().empty())
-      result.history = problem.step_reports().back().newton.residual_history;
+    static_cast<nodal_footing::Result &>(result) = nodal_footing::run(
+      comm, text.str(), 4., c, [&result](QuasiStaticProblem<2> &problem) {
+        result.history = problem.step_reports().back().newton.residual_history;
+      });
     return result;
   }
 } // namespace
