@@ -6,7 +6,6 @@
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/base/tensor_functions.h>
 #include <qsmpm/base/utilities.h>
-#include <qsmpm/materials/isotropic_plasticity.h>
 
 namespace qsmpm
 {
@@ -139,26 +138,14 @@ namespace qsmpm
                                     numbers::invalid_unsigned_int;
       }
 
-    // F-bar at small strain with an isotropic elastoplastic model: its
-    // elastic strain tells each point's plastic volume change
+    // F-bar at small strain with a model that keeps its elastic strain
+    // apart: each point's plastic volume change stays its own
     // (share_plastic_volume_changes()).
-    if (points.get_formulation().fbar() && !finite_strain &&
-        !points.get_formulation().axisymmetric &&
-        state_layout.state != numbers::invalid_unsigned_int &&
-        dynamic_cast<const IsotropicPlasticity<dim> *>(&model) != nullptr)
-      {
-        unsigned int offset = 0;
-        for (const auto &field : model.state_fields())
-          {
-            if (field.name == IsotropicPlasticity<dim>::elastic_strain_name &&
-                field.n_components == 6)
-              {
-                elastic_strain_offset = offset;
-                break;
-              }
-            offset += field.n_components;
-          }
-      }
+    share_volume_changes =
+      points.get_formulation().fbar() && !finite_strain &&
+      !points.get_formulation().axisymmetric &&
+      state_layout.state != numbers::invalid_unsigned_int &&
+      model.plastic_flow_changes_volume();
     reinit();
   }
 
@@ -302,7 +289,7 @@ namespace qsmpm
         block_kinematics(kind, c0, c1, du_values);
         // The volume changes the points have at the iterate, split into the
         // cell's elastic and their own plastic parts as in evaluate().
-        if (elastic_strain_offset != numbers::invalid_unsigned_int)
+        if (share_volume_changes)
           {
             Evaluation unused;
             share_plastic_volume_changes<false>(kind, c0, c1, unused);
@@ -369,7 +356,7 @@ namespace qsmpm
         const unsigned int n_points = cache.cell(c1 - 1).end_point - first;
         scratch.start_block(first, n_points, state_layout.n_state);
         block_kinematics(kind, c0, c1, du_values);
-        if (elastic_strain_offset != numbers::invalid_unsigned_int)
+        if (share_volume_changes)
           share_plastic_volume_changes<write_back>(kind, c0, c1, result);
         else
           block_stresses<write_back>(kind, first, n_points, result);
@@ -470,6 +457,25 @@ namespace qsmpm
 
 
   template <int dim>
+  PointStateBatch<dim>
+  QuasiStaticResidual<dim>::committed_batch(const unsigned int first,
+                                            const unsigned int n_points) const
+  {
+    return packed_record > 0 ?
+             PointStateBatch<dim>(state_layout,
+                                  committed(first),
+                                  packed_record,
+                                  &cache.position(first),
+                                  n_points) :
+             PointStateBatch<dim>(state_layout,
+                                  cache.property_arrays(first),
+                                  &cache.position(first),
+                                  n_points);
+  }
+
+
+
+  template <int dim>
   template <bool write_back>
   void
   QuasiStaticResidual<dim>::block_stresses(const LoopKind    &kind,
@@ -480,16 +486,7 @@ namespace qsmpm
     const unsigned int n_state = state_layout.n_state;
     // The stresses of all points of the block, and with them the
     // volume-weighted stress measures of the forces.
-    const PointStateBatch<dim> old =
-      packed_record > 0 ? PointStateBatch<dim>(state_layout,
-                                               committed(first),
-                                               packed_record,
-                                               &cache.position(first),
-                                               n_points) :
-                          PointStateBatch<dim>(state_layout,
-                                               cache.property_arrays(first),
-                                               &cache.position(first),
-                                               n_points);
+    const PointStateBatch<dim> old = committed_batch(first, n_points);
     if (kind.finite_strain && kind.axisymmetric)
       axisymmetric_finite_strain_stresses<write_back>(old, first, result);
     else if (kind.finite_strain)
@@ -1133,14 +1130,11 @@ namespace qsmpm
                                                  const unsigned int c1,
                                                  const bool first_pass) const
   {
-    const unsigned int n_state = state_layout.n_state;
-    const unsigned int volume  = own_offsets.volume;
-    const unsigned int first   = scratch.block_first;
-    // tr eps_e of a 3D elastic strain in deal.II's unrolled order.
-    const auto elastic_volume = [this](const double *state) {
-      const double *e = state + elastic_strain_offset;
-      return e[0] + e[1] + e[2];
-    };
+    const unsigned int         n_state = state_layout.n_state;
+    const unsigned int         volume  = own_offsets.volume;
+    const unsigned int         first   = scratch.block_first;
+    const PointStateBatch<dim> old =
+      committed_batch(first, cache.cell(c1 - 1).end_point - first);
     // The common elastic volume change of a cell that keeps its mean total
     // volume change under the update dx_p = (common - e_p) / s_p:
     // sum_p w_p dx_p = 0.
@@ -1168,11 +1162,15 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             const unsigned int i = p - first;
-            const double       old =
-              elastic_volume(committed(p) + state_layout.state);
-            const double e =
-              elastic_volume(scratch.state.data() + i * n_state) - old;
-            double &slope = scratch.elastic_volume_slope[i];
+            // A point whose model does not split its strain changes its
+            // elastic volume by all of its volume change.
+            const auto strains = model.elastic_volume_strains(
+              old[i],
+              ArrayView<const double>(scratch.state.data() + i * n_state,
+                                      n_state));
+            const double e     = strains ? (*strains)[1] - (*strains)[0] :
+                                           trace(scratch.strain_increment[i]);
+            double      &slope = scratch.elastic_volume_slope[i];
             if (first_pass)
               {
                 slope                   = 1.;
@@ -1186,7 +1184,8 @@ namespace qsmpm
             scratch.elastic_volume_change[i] = e;
             increments =
               std::max(increments, scratch.strain_increment[i].norm());
-            accumulated = std::max(accumulated, std::abs(old));
+            if (strains)
+              accumulated = std::max(accumulated, std::abs((*strains)[0]));
           }
         const double common = commons[c - c0] = common_of(range);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)

@@ -245,6 +245,25 @@ namespace qsmpm
 
 
   template <int dim>
+  std::optional<std::array<double, 2>>
+  ConstitutiveModel<dim>::elastic_volume_strains(const PointState<dim> &,
+                                                 ArrayView<const double>) const
+  {
+    return std::nullopt;
+  }
+
+
+
+  template <int dim>
+  bool
+  ConstitutiveModel<dim>::plastic_flow_changes_volume() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::supports_finite_strain() const
   {

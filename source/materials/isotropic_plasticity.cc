@@ -417,6 +417,34 @@ namespace qsmpm
 
 
   template <int dim>
+  std::optional<std::array<double, 2>>
+  IsotropicPlasticity<dim>::elastic_volume_strains(
+    const PointState<dim>  &old,
+    ArrayView<const double> new_state) const
+  {
+    AssertThrow(old.state.size() == n_state && new_state.size() == n_state,
+                ExcMessage("plasticity: the point state has " +
+                           std::to_string(old.state.size()) +
+                           " components, expected 8."));
+    // The trace: the first three entries of deal.II's unrolled order.
+    const double *e0 = old.state.data() + eps_offset;
+    const double *e1 = new_state.data() + eps_offset;
+    return std::array<double, 2>{
+      {e0[0] + e0[1] + e0[2], e1[0] + e1[1] + e1[2]}};
+  }
+
+
+
+  template <int dim>
+  bool
+  IsotropicPlasticity<dim>::plastic_flow_changes_volume() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   bool
   IsotropicPlasticity<dim>::supports_axisymmetry() const
   {

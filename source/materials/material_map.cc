@@ -483,6 +483,41 @@ namespace qsmpm
 
 
   template <int dim>
+  std::optional<std::array<double, 2>>
+  MaterialMap<dim>::elastic_volume_strains(
+    const PointState<dim>  &old,
+    ArrayView<const double> new_state) const
+  {
+    const Member &m = member(old.material_id);
+    if (!m.model->plastic_flow_changes_volume())
+      return std::nullopt;
+    const unsigned int n = m.state_index.size();
+    return with_own_state(m, old, [&](const PointState<dim> &own) {
+      if (m.state_is_prefix)
+        return m.model->elastic_volume_strains(
+          own, ArrayView<const double>(new_state.data(), n));
+      std::array<double, max_components> own_new;
+      for (unsigned int c = 0; c < n; ++c)
+        own_new[c] = new_state[m.state_index[c]];
+      return m.model->elastic_volume_strains(
+        own, ArrayView<const double>(own_new.data(), n));
+    });
+  }
+
+
+
+  template <int dim>
+  bool
+  MaterialMap<dim>::plastic_flow_changes_volume() const
+  {
+    return std::any_of(ordered.begin(), ordered.end(), [](const auto &entry) {
+      return entry.second->model->plastic_flow_changes_volume();
+    });
+  }
+
+
+
+  template <int dim>
   bool
   MaterialMap<dim>::computes_dissipation() const
   {

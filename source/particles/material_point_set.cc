@@ -199,7 +199,8 @@ namespace qsmpm
         "volumetric locking of plastic flow and nearly "
         "incompressible materials on bilinear/trilinear "
         "cells. With Drucker-Prager, Mohr-Coulomb or Modified "
-        "Cam Clay only the elastic part of the volume change is "
+        "Cam Clay (also in a material map or under a pore "
+        "fluid) only the elastic part of the volume change is "
         "the cell's mean and each point adds its own plastic "
         "one (no dilatancy locking; small strain, not with "
         "Axisymmetric).");

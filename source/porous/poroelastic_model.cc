@@ -254,6 +254,28 @@ namespace qsmpm
 
 
   template <int dim>
+  std::optional<std::array<double, 2>>
+  PoroelasticModel<dim>::elastic_volume_strains(
+    const PointState<dim>  &old,
+    ArrayView<const double> new_state) const
+  {
+    return skeleton_model->elastic_volume_strains(
+      skeleton_state(old),
+      ArrayView<const double>(new_state.data(), n_skeleton));
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::plastic_flow_changes_volume() const
+  {
+    return skeleton_model->plastic_flow_changes_volume();
+  }
+
+
+
+  template <int dim>
   bool
   PoroelasticModel<dim>::is_elastic() const
   {

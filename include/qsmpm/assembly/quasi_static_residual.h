@@ -300,6 +300,12 @@ namespace qsmpm
                      const unsigned int c1,
                      const double      *du_values) const;
 
+    /// The committed states of the @p n_points points from @p first, as
+    /// the model reads them.
+    PointStateBatch<dim>
+    committed_batch(const unsigned int first,
+                    const unsigned int n_points) const;
+
     /**
      * The stresses of the block's @p n_points points from @p first (one
      * call of ConstitutiveModel::update_stresses() at small strain) and
@@ -315,8 +321,12 @@ namespace qsmpm
 
     /**
      * F-bar at small strain with a model whose plastic flow changes the
-     * volume (IsotropicPlasticity with dilatancy: Drucker-Prager,
-     * Mohr-Coulomb, Modified Cam Clay): block_stresses() for the cells
+     * volume and that keeps its elastic strain apart
+     * (ConstitutiveModel::elastic_volume_strains(); IsotropicPlasticity with
+     * dilatancy: Drucker-Prager, Mohr-Coulomb, Modified Cam Clay; also as
+     * a member of a MaterialMap or the skeleton of a PoroelasticModel;
+     * a point of a model that does not split its strain counts its whole
+     * volume change as elastic): block_stresses() for the cells
      * [@p c0, @p c1)
      * after the volume change of each point is split into the cell's
      * common elastic part and the point's own plastic part.
@@ -549,13 +559,12 @@ namespace qsmpm
     /// packed record, or in the property array without a packed copy).
     typename PointStateBatch<dim>::Layout state_layout;
     /**
-     * The offset, in a point's model state, of the elastic strain
-     * (IsotropicPlasticity's "elastic_strain", 3D), whose trace is the
-     * elastic volume change that share_plastic_volume_changes() makes
-     * common to the points of a cell; invalid without F-bar at small
-     * strain or such a model, or where the batch does not carry the state.
+     * Whether share_plastic_volume_changes() splits the points' volume
+     * changes: F-bar at small strain (not axisymmetric), a batch that
+     * carries the model state and a model whose plastic flow can change
+     * the volume (ConstitutiveModel::plastic_flow_changes_volume()).
      */
-    unsigned int elastic_strain_offset = numbers::invalid_unsigned_int;
+    bool share_volume_changes = false;
     /// Where the residual's own fields are in the same data: J, the
     /// initial volume, the volume (F-bar) and F (finite strain).
     typename MaterialPointSet<dim>::Offsets own_offsets;

@@ -1,6 +1,7 @@
 #ifndef qsmpm_materials_constitutive_model_h
 #define qsmpm_materials_constitutive_model_h
 
+#include <array>
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -9,6 +10,7 @@
 #include <deal.II/particles/property_pool.h>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <qsmpm/materials/point_state.h>
 #include <qsmpm/materials/point_state_batch.h>
 #include <string>
@@ -256,6 +258,31 @@ namespace qsmpm
     /// Whether the model overrides dissipation() (false by default).
     virtual bool
     computes_dissipation() const;
+
+    /**
+     * The elastic volume strain tr eps_e of the point @p old: first at its
+     * committed state, second at the trial state @p new_state that
+     * update_stress() returned. F-bar at small strain
+     * (QuasiStaticResidual::share_plastic_volume_changes()) makes the
+     * change of tr eps_e common to the points of a cell and leaves each
+     * point its own plastic volume change; without that, a dilatant flow
+     * locks (dilatancy locking). The default returns nothing: the model
+     * does not separate elastic from plastic strain, and the point's whole
+     * volume change counts as elastic (plain F-bar).
+     */
+    virtual std::optional<std::array<double, 2>>
+    elastic_volume_strains(const PointState<dim>  &old,
+                           ArrayView<const double> new_state) const;
+
+    /**
+     * Whether the model's plastic flow can change a point's volume, and
+     * elastic_volume_strains() then tells by how much (false by default).
+     * The residual splits the volume changes (and asks each point) only
+     * then; where plastic flow keeps the volume (von Mises) plain F-bar is
+     * that split already.
+     */
+    virtual bool
+    plastic_flow_changes_volume() const;
 
     /**
      * Whether the model implements the finite-strain interface below

@@ -156,6 +156,16 @@ namespace qsmpm
                   SymmetricTensor<2, dim>       &stress,
                   ArrayView<double>              new_state) const override;
 
+    /// tr of the 3D elastic strain of the committed and the trial state.
+    std::optional<std::array<double, 2>>
+    elastic_volume_strains(const PointState<dim>  &old,
+                           ArrayView<const double> new_state) const override;
+
+    /// True (but von Mises): the flow rule may change the volume, and the
+    /// state holds the elastic strain.
+    bool
+    plastic_flow_changes_volume() const override;
+
     /// True in 2D: the hoop strain enters where plane strain has eps_zz.
     bool
     supports_axisymmetry() const override;

@@ -117,6 +117,15 @@ namespace qsmpm
     bool
     computes_dissipation() const override;
 
+    /// The member's elastic_volume_strains(), gathered like dissipation().
+    std::optional<std::array<double, 2>>
+    elastic_volume_strains(const PointState<dim>  &old,
+                           ArrayView<const double> new_state) const override;
+
+    /// True if the plastic flow of one of the models can change the volume.
+    bool
+    plastic_flow_changes_volume() const override;
+
     /// True if every model supports finite strain.
     bool
     supports_finite_strain() const override;

@@ -85,6 +85,14 @@ namespace qsmpm
       return "von Mises";
     }
 
+    /// False: J2 flow keeps the volume, so plain F-bar is already the
+    /// split of the volume change that dilatant models need.
+    bool
+    plastic_flow_changes_volume() const override
+    {
+      return false;
+    }
+
     void
     return_map(const SymmetricTensor<2, 3> &trial_elastic_strain,
                const double                 alpha_old,

@@ -84,8 +84,11 @@ namespace qsmpm
      * strain) the exponent is 1/2: only the in-plane stretches carry volume.
      *
      * At small strain, with a model whose plastic flow changes the volume
-     * (the IsotropicPlasticity models: Drucker-Prager, Mohr-Coulomb, Modified
-     * Cam Clay) only the elastic part of the volume change is the cell's:
+     * and that keeps its elastic strain apart (ConstitutiveModel::
+     * elastic_volume_strains(): the IsotropicPlasticity models Drucker-Prager,
+     * Mohr-Coulomb, Modified Cam Clay, also in a MaterialMap or as the
+     * skeleton of a PoroelasticModel) only the elastic part of the volume
+     * change is the cell's:
      * point p changes its volume by theta_bar + g_p - g_bar, g_p its own
      * plastic volume change in the step and g_bar the cell's mean of them,
      * which removes the dilatancy locking of associated flow (QuasiStatic

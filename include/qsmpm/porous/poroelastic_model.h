@@ -145,6 +145,15 @@ namespace qsmpm
     bool
     computes_dissipation() const override;
 
+    /// The skeleton's: tr eps_e of its effective-stress model.
+    std::optional<std::array<double, 2>>
+    elastic_volume_strains(const PointState<dim>  &old,
+                           ArrayView<const double> new_state) const override;
+
+    /// The skeleton's.
+    bool
+    plastic_flow_changes_volume() const override;
+
     bool
     is_elastic() const override;
 
