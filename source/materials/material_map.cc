@@ -264,6 +264,27 @@ namespace qsmpm
 
   template <int dim>
   template <typename Function>
+  auto
+  MaterialMap<dim>::with_own_states(const Member           &m,
+                                    const PointState<dim>  &old,
+                                    ArrayView<const double> new_state,
+                                    const Function         &f) const
+  {
+    const unsigned int n = m.state_index.size();
+    return with_own_state(m, old, [&](const PointState<dim> &own) {
+      if (m.state_is_prefix)
+        return f(own, ArrayView<const double>(new_state.data(), n));
+      std::array<double, max_components> own_new;
+      for (unsigned int c = 0; c < n; ++c)
+        own_new[c] = new_state[m.state_index[c]];
+      return f(own, ArrayView<const double>(own_new.data(), n));
+    });
+  }
+
+
+
+  template <int dim>
+  template <typename Function>
   void
   MaterialMap<dim>::update(const PointState<dim> &old,
                            ArrayView<double>      new_state,
@@ -445,19 +466,13 @@ namespace qsmpm
   MaterialMap<dim>::dissipation(const PointState<dim>  &old,
                                 ArrayView<const double> new_state) const
   {
-    const Member      &m = member(old.material_id);
-    const unsigned int n = m.state_index.size();
-    return with_own_state(m, old, [&](const PointState<dim> &own) {
-      if (m.state_is_prefix)
-        return m.model->dissipation(own,
-                                    ArrayView<const double>(new_state.data(),
-                                                            n));
-      std::array<double, max_components> own_new;
-      for (unsigned int c = 0; c < n; ++c)
-        own_new[c] = new_state[m.state_index[c]];
-      return m.model->dissipation(own,
-                                  ArrayView<const double>(own_new.data(), n));
-    });
+    const Member &m = member(old.material_id);
+    return with_own_states(m,
+                           old,
+                           new_state,
+                           [&](const PointState<dim> &own, const auto own_new) {
+                             return m.model->dissipation(own, own_new);
+                           });
   }
 
 
@@ -491,17 +506,10 @@ namespace qsmpm
     const Member &m = member(old.material_id);
     if (!m.model->plastic_flow_changes_volume())
       return std::nullopt;
-    const unsigned int n = m.state_index.size();
-    return with_own_state(m, old, [&](const PointState<dim> &own) {
-      if (m.state_is_prefix)
-        return m.model->elastic_volume_strains(
-          own, ArrayView<const double>(new_state.data(), n));
-      std::array<double, max_components> own_new;
-      for (unsigned int c = 0; c < n; ++c)
-        own_new[c] = new_state[m.state_index[c]];
-      return m.model->elastic_volume_strains(
-        own, ArrayView<const double>(own_new.data(), n));
-    });
+    return with_own_states(
+      m, old, new_state, [&](const PointState<dim> &own, const auto own_new) {
+        return m.model->elastic_volume_strains(own, own_new);
+      });
   }
 
 

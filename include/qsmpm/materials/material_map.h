@@ -224,6 +224,18 @@ namespace qsmpm
                    const Function        &f) const;
 
     /**
+     * Call @p f(state, own_new_state) with the committed state of @p old
+     * and the trial state @p new_state (the union's) both in the member's
+     * own layout, for functions that read a step's two states.
+     */
+    template <typename Function>
+    auto
+    with_own_states(const Member           &member,
+                    const PointState<dim>  &old,
+                    ArrayView<const double> new_state,
+                    const Function         &f) const;
+
+    /**
      * Call @p f(point, own_new_state) for an update of @p old, and write the
      * member's new state into @p new_state (the union, whose other fields
      * keep their committed values).
