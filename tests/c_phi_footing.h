@@ -90,6 +90,22 @@ namespace c_phi_footing
              std::numeric_limits<double>::quiet_NaN() :
              r.pressure_over_c.back();
   }
+
+  /// The largest relative difference of the pressure curves @p r and
+  /// @p reference, NaN if they have different lengths.
+  inline double
+  curve_difference(const Result &r, const Result &reference)
+  {
+    if (r.pressure_over_c.size() != reference.pressure_over_c.size())
+      return std::numeric_limits<double>::quiet_NaN();
+    double difference = 0.;
+    for (unsigned int i = 0; i < r.pressure_over_c.size(); ++i)
+      difference =
+        std::max(difference,
+                 std::abs(r.pressure_over_c[i] / reference.pressure_over_c[i] -
+                          1.));
+    return difference;
+  }
 } // namespace c_phi_footing
 
 #endif

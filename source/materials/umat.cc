@@ -100,6 +100,21 @@ namespace qsmpm
                       "The initial STATEV: empty (all zero) or NSTATV "
                       "comma-separated values.",
                       Patterns::List(Patterns::Double(), 0, 10000));
+    prm.add_parameter(
+      "Elastic strain state variable",
+      elastic_strain_state_variable,
+      "k > 0: STATEV(k), STATEV(k+1), STATEV(k+2) hold the direct components "
+      "(xx, yy, zz) of the elastic strain, as Abaqus's example UMATs keep "
+      "EELAS in STATEV(1:NTENS). With Volumetric locking = F-bar at small "
+      "strain the cell's common volume change is then only the elastic one "
+      "and each point keeps its own plastic volume change, so that a "
+      "dilatant flow (Drucker-Prager, Mohr-Coulomb) does not lock: Prandtl's "
+      "footing on a c-phi soil at a/h = 4 carried 7.5 % more without it (test "
+      "umat_drucker_prager). 0 (default): the UMAT's whole volume change "
+      "counts as elastic (plain F-bar), right for a UMAT whose plastic flow "
+      "keeps the volume (von Mises) and for one without an elastic strain "
+      "(hypoplasticity).",
+      Patterns::Integer(0, 10000));
   }
 
 
@@ -137,6 +152,15 @@ namespace qsmpm
                   " values for Number of state variables = " +
                   std::to_string(parameters.n_state_variables) +
                   " (give none, or one per state variable)."));
+    AssertThrow(parameters.elastic_strain_state_variable == 0 ||
+                  parameters.elastic_strain_state_variable + 2 <=
+                    parameters.n_state_variables,
+                ExcMessage(
+                  "Material/umat/Elastic strain state variable = " +
+                  std::to_string(parameters.elastic_strain_state_variable) +
+                  ": STATEV(k) to STATEV(k+2) must lie within Number of "
+                  "state variables = " +
+                  std::to_string(parameters.n_state_variables) + "."));
     std::fill(std::begin(cmname), std::end(cmname), ' ');
     std::copy(parameters.material_name.begin(),
               parameters.material_name.end(),
@@ -480,6 +504,33 @@ namespace qsmpm
   Umat<dim>::tangent(const PointState<dim> &old) const
   {
     return consistent_tangent(old, SymmetricTensor<2, dim>());
+  }
+
+
+
+  template <int dim>
+  std::optional<std::array<double, 2>>
+  Umat<dim>::elastic_volume_strains(const PointState<dim>  &old,
+                                    ArrayView<const double> new_state) const
+  {
+    if (parameters.elastic_strain_state_variable == 0)
+      return std::nullopt;
+    // STATEV are the first fields of the state (state_fields()).
+    const double *e0 =
+      old.state.data() + parameters.elastic_strain_state_variable - 1;
+    const double *e1 =
+      new_state.data() + parameters.elastic_strain_state_variable - 1;
+    return std::array<double, 2>{
+      {e0[0] + e0[1] + e0[2], e1[0] + e1[1] + e1[2]}};
+  }
+
+
+
+  template <int dim>
+  bool
+  Umat<dim>::plastic_flow_changes_volume() const
+  {
+    return parameters.elastic_strain_state_variable > 0;
   }
 
 

@@ -93,6 +93,9 @@ namespace qsmpm
       std::vector<double> properties;
       unsigned int        n_state_variables = 0;
       std::vector<double> initial_state_variables;
+      /// 1-based index of STATEV's first component of the elastic strain
+      /// (0: the UMAT does not say where it keeps one).
+      unsigned int elastic_strain_state_variable = 0;
 
       /// Declare the entries, bound to the members.
       void
@@ -151,6 +154,21 @@ namespace qsmpm
     consistent_tangent(
       const PointState<dim>         &old,
       const SymmetricTensor<2, dim> &strain_increment) const override;
+
+    /**
+     * With "Elastic strain state variable" = k: the traces of the elastic
+     * strain the UMAT keeps in STATEV(k), STATEV(k+1), STATEV(k+2) (the
+     * direct components, Abaqus's order) at the committed and the trial
+     * state, for F-bar's split of the volume change. Without the entry
+     * nothing: the point's whole volume change counts as elastic.
+     */
+    std::optional<std::array<double, 2>>
+    elastic_volume_strains(const PointState<dim>  &old,
+                           ArrayView<const double> new_state) const override;
+
+    /// True with "Elastic strain state variable".
+    bool
+    plastic_flow_changes_volume() const override;
 
     bool
     supports_finite_strain() const override;
