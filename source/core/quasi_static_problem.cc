@@ -212,8 +212,7 @@ namespace qsmpm
                                              surface_tractions);
       }
     const Formulation &formulation = prm_values.material_points.formulation;
-    AssertThrow(!formulation.axisymmetric ||
-                  !(pore_fluid.enabled || body_contact.enabled()),
+    AssertThrow(!formulation.axisymmetric || !pore_fluid.enabled,
                 ExcMessage("Material points: <Axisymmetric = true> is not "
                            "available with a pore fluid or contact between "
                            "bodies."));

@@ -200,9 +200,13 @@ namespace qsmpm
     const MPI_Comm communicator = grid.get_communicator();
     const auto    &offsets      = points.get_offsets();
     const bool     finite       = points.get_formulation().finite_strain();
+    const bool     axisymmetric = points.get_formulation().axisymmetric;
     gap_tolerance = parameters.gap_tolerance * grid.min_cell_size();
 
     // The gradient of each body's nodal volume, in the body's dofs.
+    // Axisymmetric: of its area in the (r, z) plane, Omega_p / r_p (the
+    // volume per radian r dA grows with r inside a body, and its gradient
+    // would tilt every normal towards the outside).
     TrilinosWrappers::MPI::Vector gradient(grid.locally_owned_dofs(),
                                            communicator);
     {
@@ -214,7 +218,9 @@ namespace qsmpm
           const auto &range = cache.cell(c);
           for (unsigned int p = range.first_point; p < range.end_point; ++p)
             {
-              const double          omega = cache.properties(p)[offsets.volume];
+              const double omega =
+                cache.properties(p)[offsets.volume] /
+                (axisymmetric ? cache.position(p)[0] : 1.);
               const auto           *grad  = cache.gradients(c, p, buffer);
               const unsigned short *node  = cache.nodes(p);
               for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
@@ -341,9 +347,16 @@ namespace qsmpm
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
             // The point's box: half-length and its deformation so far.
+            // Axisymmetric: the initial volume is per radian, R dA, with R
+            // the point's initial radius (the points move: body contact
+            // needs Move points).
             const double *data = cache.properties(p);
-            const double  half =
-              0.5 * std::pow(data[offsets.initial_volume], 1. / dim);
+            const double  initial_size =
+              axisymmetric ? data[offsets.initial_volume] /
+                               (cache.position(p)[0] -
+                                data[offsets.displacement]) :
+                             data[offsets.initial_volume];
+            const double half = 0.5 * std::pow(initial_size, 1. / dim);
             const Tensor<2, dim> F =
               finite ?
                 Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
