@@ -214,8 +214,7 @@ namespace qsmpm
     const Formulation &formulation = prm_values.material_points.formulation;
     AssertThrow(!formulation.axisymmetric || !pore_fluid.enabled,
                 ExcMessage("Material points: <Axisymmetric = true> is not "
-                           "available with a pore fluid or contact between "
-                           "bodies."));
+                           "available with a pore fluid."));
     AssertThrow(formulation.move_points || !body_contact.enabled(),
                 ExcMessage("Material points: <Move points = false> is not "
                            "available with contact between bodies, whose "

@@ -218,11 +218,10 @@ namespace qsmpm
           const auto &range = cache.cell(c);
           for (unsigned int p = range.first_point; p < range.end_point; ++p)
             {
-              const double omega =
-                cache.properties(p)[offsets.volume] /
-                (axisymmetric ? cache.position(p)[0] : 1.);
-              const auto           *grad  = cache.gradients(c, p, buffer);
-              const unsigned short *node  = cache.nodes(p);
+              const double omega = cache.properties(p)[offsets.volume] /
+                                   (axisymmetric ? cache.position(p)[0] : 1.);
+              const auto           *grad = cache.gradients(c, p, buffer);
+              const unsigned short *node = cache.nodes(p);
               for (unsigned int k = 0; k < cache.stencil_size(p); ++k)
                 for (unsigned int d = 0; d < dim; ++d)
                   local[node[k] * dim + d] += omega * grad[k][d];
@@ -352,11 +351,11 @@ namespace qsmpm
             // needs Move points).
             const double *data = cache.properties(p);
             const double  initial_size =
-              axisymmetric ? data[offsets.initial_volume] /
-                               (cache.position(p)[0] -
-                                data[offsets.displacement]) :
-                             data[offsets.initial_volume];
-            const double half = 0.5 * std::pow(initial_size, 1. / dim);
+              axisymmetric ?
+                 data[offsets.initial_volume] /
+                  (cache.position(p)[0] - data[offsets.displacement]) :
+                 data[offsets.initial_volume];
+            const double         half = 0.5 * std::pow(initial_size, 1. / dim);
             const Tensor<2, dim> F =
               finite ?
                 Utils::read_tensor<dim>(data + offsets.deformation_gradient) :
