@@ -72,14 +72,16 @@ namespace c_phi_footing
   /**
    * The footing (nodal_footing::run()) on the soil 6 a wide with the
    * problem's entries @p prm_text; @p inspect, if given, sees the problem
-   * after a completed run.
+   * after a completed run; @p radius > 0: the ring of an axisymmetric
+   * problem (nodal_footing::run()).
    */
   inline Result
   run(const MPI_Comm                                      comm,
       const std::string                                  &prm_text,
-      const std::function<void(QuasiStaticProblem<2> &)> &inspect = {})
+      const std::function<void(QuasiStaticProblem<2> &)> &inspect = {},
+      const double                                        radius  = 0.)
   {
-    return nodal_footing::run(comm, prm_text, 6., c, inspect);
+    return nodal_footing::run(comm, prm_text, 6., c, inspect, radius);
   }
 
   /// The pressure over c after the last step, NaN without steps.

@@ -33,14 +33,19 @@ namespace nodal_footing
    * @p prm_text (a .prm text of QuasiStaticProblem's parameters with the
    * points per cell, the model, the steps and the solver; "Dimension" is
    * declared here) on @p comm; the pressure is given over @p c.
-   * @p inspect, if given, sees the problem after a completed run.
+   * @p inspect, if given, sees the problem after a completed run. With
+   * @p radius > 0 the soil is the ring r in [radius, radius + width] of an
+   * axisymmetric problem (the entries must set Axisymmetric = true), the
+   * footing the ring r <= radius + a, and the pressure its force per
+   * radian over its area per radian, a (radius + a / 2).
    */
   inline Result
   run(const MPI_Comm                                      comm,
       const std::string                                  &prm_text,
       const double                                        width,
       const double                                        c,
-      const std::function<void(QuasiStaticProblem<2> &)> &inspect = {})
+      const std::function<void(QuasiStaticProblem<2> &)> &inspect = {},
+      const double                                        radius  = 0.)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
@@ -50,8 +55,8 @@ namespace nodal_footing
     QuasiStaticProblem<2> problem(comm);
     problem.pcout().set_condition(false);
     problem.parameters().parse_parameters(prm);
-    problem.grid().make_box(Point<2>(),
-                            Point<2>(width, 4.),
+    problem.grid().make_box(Point<2>(radius, 0.),
+                            Point<2>(radius + width, 4.),
                             {{static_cast<unsigned int>(4. * width + 0.5),
                               16}});
     problem.set_model(ConstitutiveModelFactory<2>::create(prm));
@@ -65,13 +70,16 @@ namespace nodal_footing
     bcs.add_dirichlet_boundary(2, {{true, true}}, zero);
     bcs.add_dirichlet_nodes(
       "footing",
-      [](const Point<2> &x) { return x[0] <= a + 1e-10 && x[1] > 4. - 1e-10; },
+      [radius](const Point<2> &x) {
+        return x[0] <= radius + a + 1e-10 && x[1] > 4. - 1e-10;
+      },
       {{false, true}},
       qsmpm_tests::downward_motion(0.02));
 
     Result result;
     problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      result.pressure_over_c.push_back(-problem.reactions()[3][1] / a / c);
+      const double area = radius > 0. ? a * (radius + a / 2.) : a;
+      result.pressure_over_c.push_back(-problem.reactions()[3][1] / area / c);
       return true;
     });
     try

@@ -143,7 +143,6 @@ namespace qsmpm
     // (share_plastic_volume_changes()).
     share_volume_changes =
       points.get_formulation().fbar() && !finite_strain &&
-      !points.get_formulation().axisymmetric &&
       state_layout.state != numbers::invalid_unsigned_int &&
       model.plastic_flow_changes_volume();
     reinit();
@@ -1130,9 +1129,16 @@ namespace qsmpm
                                                  const unsigned int c1,
                                                  const bool first_pass) const
   {
-    const unsigned int         n_state = state_layout.n_state;
-    const unsigned int         volume  = own_offsets.volume;
-    const unsigned int         first   = scratch.block_first;
+    const unsigned int n_state = state_layout.n_state;
+    const unsigned int volume  = own_offsets.volume;
+    const unsigned int first   = scratch.block_first;
+    // Axisymmetric: the hoop strain is the third normal strain; a volume
+    // change is shared by all three, as F-bar's correction is.
+    const bool axisymmetric  = points.get_formulation().axisymmetric;
+    const auto volume_change = [&](const unsigned int i) {
+      return trace(scratch.strain_increment[i]) +
+             (axisymmetric ? scratch.hoop_increment[i] : 0.);
+    };
     const PointStateBatch<dim> old =
       committed_batch(first, cache.cell(c1 - 1).end_point - first);
     // The common elastic volume change of a cell that keeps its mean total
@@ -1168,9 +1174,9 @@ namespace qsmpm
               old[i],
               ArrayView<const double>(scratch.state.data() + i * n_state,
                                       n_state));
-            const double e     = strains ? (*strains)[1] - (*strains)[0] :
-                                           trace(scratch.strain_increment[i]);
-            double      &slope = scratch.elastic_volume_slope[i];
+            const double e =
+              strains ? (*strains)[1] - (*strains)[0] : volume_change(i);
+            double &slope = scratch.elastic_volume_slope[i];
             if (first_pass)
               {
                 slope                   = 1.;
@@ -1209,8 +1215,11 @@ namespace qsmpm
             const double dx      = (common - scratch.elastic_volume_change[i]) /
                               scratch.elastic_volume_slope[i];
             scratch.volume_shift[i] = dx;
+            const double n_normal   = axisymmetric ? 3. : dim;
             scratch.strain_increment[i] +=
-              dx / dim * unit_symmetric_tensor<dim>();
+              dx / n_normal * unit_symmetric_tensor<dim>();
+            if (axisymmetric)
+              scratch.hoop_increment[i] += dx / n_normal;
           }
       }
     return true;

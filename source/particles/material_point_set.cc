@@ -199,11 +199,11 @@ namespace qsmpm
         "volumetric locking of plastic flow and nearly "
         "incompressible materials on bilinear/trilinear "
         "cells. With Drucker-Prager, Mohr-Coulomb or Modified "
-        "Cam Clay (also in a material map or under a pore "
-        "fluid) only the elastic part of the volume change is "
-        "the cell's mean and each point adds its own plastic "
-        "one (no dilatancy locking; small strain, not with "
-        "Axisymmetric).");
+        "Cam Clay (also in a material map, under a pore fluid, "
+        "axisymmetric, or a UMAT with <Elastic strain state "
+        "variable>) only the elastic part of the volume change "
+        "is the cell's mean and each point adds its own plastic "
+        "one (no dilatancy locking; small strain).");
       prm.add_parameter(
         "Minimum nodal volume",
         min_nodal_volume_fraction,
