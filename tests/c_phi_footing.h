@@ -67,6 +67,24 @@ namespace c_phi_footing
     return text.str();
   }
 
+  /**
+   * prm_text() for Drucker-Prager with the plane-strain Mohr-Coulomb
+   * matching, whose associated flow reproduces c N_c.
+   */
+  inline std::string
+  drucker_prager_text(const std::string &locking,
+                      const double       phi_degrees,
+                      const std::string &directory,
+                      const std::string &points_extra = "")
+  {
+    return prm_text("Drucker-Prager",
+                    locking,
+                    phi_degrees,
+                    directory,
+                    points_extra,
+                    "    set Mohr-Coulomb matching = plane strain\n");
+  }
+
   using nodal_footing::Result;
 
   /**

@@ -79,12 +79,10 @@ namespace
   {
     const bool  ring = soil == Soil::axisymmetric_ring;
     std::string text =
-      prm_text("Drucker-Prager",
-               locking,
-               phi,
-               "footing-dp-out",
-               ring ? "  set Axisymmetric = true\n" : "",
-               "    set Mohr-Coulomb matching = plane strain\n");
+      drucker_prager_text(locking,
+                          phi,
+                          "footing-dp-out",
+                          ring ? "  set Axisymmetric = true\n" : "");
     if (soil == Soil::in_map)
       {
         const std::string model = "  set Model = Drucker-Prager\n";

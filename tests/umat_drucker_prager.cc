@@ -66,13 +66,7 @@ main(int argc, char **argv)
 
   deallog << "1. The built-in Drucker-Prager soil, F-bar" << std::endl;
   const Result builtin =
-    run(MPI_COMM_WORLD,
-        prm_text("Drucker-Prager",
-                 "F-bar",
-                 20.,
-                 "umat-dp-out",
-                 "",
-                 "    set Mohr-Coulomb matching = plane strain\n"));
+    run(MPI_COMM_WORLD, drucker_prager_text("F-bar", 20., "umat-dp-out"));
   check_that("  20 steps converged", builtin.completed);
   check("  |q/c - N_c| / N_c", (last(builtin) - Nc) / Nc, 0.07);
 

@@ -1134,8 +1134,9 @@ namespace qsmpm
     const unsigned int first   = scratch.block_first;
     // Axisymmetric: the hoop strain is the third normal strain; a volume
     // change is shared by all three, as F-bar's correction is.
-    const bool axisymmetric  = points.get_formulation().axisymmetric;
-    const auto volume_change = [&](const unsigned int i) {
+    const bool   axisymmetric  = points.get_formulation().axisymmetric;
+    const double n_normal      = axisymmetric ? 3. : dim;
+    const auto   volume_change = [&](const unsigned int i) {
       return trace(scratch.strain_increment[i]) +
              (axisymmetric ? scratch.hoop_increment[i] : 0.);
     };
@@ -1215,7 +1216,6 @@ namespace qsmpm
             const double dx      = (common - scratch.elastic_volume_change[i]) /
                               scratch.elastic_volume_slope[i];
             scratch.volume_shift[i] = dx;
-            const double n_normal   = axisymmetric ? 3. : dim;
             scratch.strain_increment[i] +=
               dx / n_normal * unit_symmetric_tensor<dim>();
             if (axisymmetric)

@@ -6,6 +6,7 @@
 #include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/body_contact.h>
+#include <qsmpm/particles/initial_measure.h>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -345,17 +346,13 @@ namespace qsmpm
         const auto &range = cache.cell(c);
         for (unsigned int p = range.first_point; p < range.end_point; ++p)
           {
-            // The point's box: half-length and its deformation so far.
-            // Axisymmetric: the initial volume is per radian, R dA, with R
-            // the point's initial radius (the points move: body contact
-            // needs Move points).
+            // The point's box: half-length and its deformation so far
+            // (the points move: body contact needs Move points).
             const double *data = cache.properties(p);
-            const double  initial_size =
-              axisymmetric ?
-                 data[offsets.initial_volume] /
-                  (cache.position(p)[0] - data[offsets.displacement]) :
-                 data[offsets.initial_volume];
-            const double         half = 0.5 * std::pow(initial_size, 1. / dim);
+            const double  half =
+              0.5 * std::pow(initial_measure<dim>(
+                               data, offsets, cache.position(p), axisymmetric),
+                             1. / dim);
             const Tensor<2, dim> F =
               finite ?
                 Utils::read_tensor<dim>(data + offsets.deformation_gradient) :

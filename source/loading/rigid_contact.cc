@@ -9,6 +9,7 @@
 #include <limits>
 #include <qsmpm/base/utilities.h>
 #include <qsmpm/loading/rigid_contact.h>
+#include <qsmpm/particles/initial_measure.h>
 #include <sstream>
 
 namespace qsmpm
@@ -607,12 +608,8 @@ namespace qsmpm
     const double    *data = cache->properties(p);
     const Point<dim> x    = material_position(p);
     // The point's box: half-lengths and its deformation so far.
-    // Axisymmetric: the initial volume is per radian, R dA, with R the
-    // point's initial radius.
     const double initial_size =
-      axisymmetric ?
-        data[offsets.initial_volume] / (x[0] - data[offsets.displacement]) :
-        data[offsets.initial_volume];
+      initial_measure<dim>(data, offsets, x, axisymmetric);
     for (unsigned int d = 0; d < dim; ++d)
       half[d] = gimp ? data[offsets.initial_half_length + d] :
                        0.5 * std::pow(initial_size, 1. / dim);
