@@ -12,7 +12,8 @@ namespace qsmpm
     prm.enter_subsection("Rigid body");
     prm.declare_entry("Shape",
                       "none",
-                      Patterns::Selection("none|half-space|box|sphere|polygon"),
+                      Patterns::Selection(
+                        "none|half-space|box|sphere|polygon|cone"),
                       "A rigid body the material points cannot enter "
                       "(contact by a penalty on the points' surfaces). none: "
                       "no body. half-space: the side of the plane through "
@@ -20,7 +21,13 @@ namespace qsmpm
                       "corner) to <Upper corner>. sphere: centre <Point>, "
                       "<Radius> (a circle in 2D). polygon: the convex "
                       "polygon with the corners <Vertices> in the x-y plane "
-                      "(in 3D the prism along z). Positions are those at "
+                      "(in 3D the prism along z). cone: a cone "
+                      "penetrometer, tip <Point>, axis <Normal> (from the "
+                      "tip into the body), <Half-angle>, and above the cone "
+                      "a shaft of <Radius> (in 3D the solid of revolution; "
+                      "in an axisymmetric problem the cone, with the tip on "
+                      "the axis and <Normal> = 0, 1; in plane strain a "
+                      "wedge with a shaft). Positions are those at "
                       "t = 0; the body then moves by <Motion>.");
     prm.declare_entry("Name",
                       "body",
@@ -32,12 +39,14 @@ namespace qsmpm
                       dim == 2 ? "0, 0" : "0, 0, 0",
                       Patterns::Anything(),
                       "half-space: a point of its plane; box: its lower "
-                      "corner; sphere: its centre (not used by a polygon).");
+                      "corner; sphere: its centre; cone: its tip (not used "
+                      "by a polygon).");
     prm.declare_entry("Normal",
                       dim == 2 ? "0, 1" : "0, 0, 1",
                       Patterns::Anything(),
                       "half-space: its outward unit normal (towards the "
-                      "material).");
+                      "material); cone: its axis, from the tip into the "
+                      "body.");
     prm.declare_entry("Upper corner",
                       dim == 2 ? "1, 1" : "1, 1, 1",
                       Patterns::Anything(),
@@ -45,7 +54,12 @@ namespace qsmpm
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0.),
-                      "sphere: its radius.");
+                      "sphere: its radius; cone: the radius of its shaft.");
+    prm.declare_entry("Half-angle",
+                      "30",
+                      Patterns::Double(0., 90.),
+                      "cone: the angle between its axis and its face, in "
+                      "degrees (30: the standard 60 degree penetrometer).");
     prm.declare_entry("Vertices",
                       "",
                       Patterns::Anything(),
@@ -119,7 +133,8 @@ namespace qsmpm
     body.point = Utils::parse_point<dim>(prm.get("Point"), where + "<Point>");
     const Point<dim> normal =
       Utils::parse_point<dim>(prm.get("Normal"), where + "<Normal>");
-    AssertThrow(body.shape != RigidBody<dim>::Shape::half_space ||
+    AssertThrow((body.shape != RigidBody<dim>::Shape::half_space &&
+                 body.shape != RigidBody<dim>::Shape::cone) ||
                   normal.norm() > 0.,
                 ExcMessage(where + "<Normal> must not be zero."));
     if (normal.norm() > 0.)
@@ -127,6 +142,7 @@ namespace qsmpm
     body.upper_corner = Utils::parse_point<dim>(prm.get("Upper corner"),
                                                 where + "<Upper corner>");
     body.radius       = prm.get_double("Radius");
+    body.half_angle   = prm.get_double("Half-angle") * M_PI / 180.;
     if (body.shape == RigidBody<dim>::Shape::polygon)
       {
         std::vector<Point<dim>> corners;

@@ -122,6 +122,57 @@ namespace qsmpm
             n = out_normal;
             return out;
           }
+        case Shape::cone:
+          {
+            // In the meridian half-plane of y: zeta along the axis from the
+            // tip, rho >= 0 from the axis (in plane strain the side of the
+            // wedge y lies on). The section there is convex: the face from
+            // the tip (0, 0) to the rim c = (R, R / tan(alpha)), then the
+            // shaft rho = R upwards; the mirrored half is never nearer.
+            const double   zeta   = y * normal;
+            Tensor<1, dim> radial = y - zeta * normal;
+            const double   rho    = radial.norm();
+            if (rho > 0.)
+              radial /= rho;
+            else
+              {
+                // On the axis: any direction across it.
+                radial                                    = Tensor<1, dim>();
+                radial[std::abs(normal[0]) < 0.9 ? 0 : 1] = 1.;
+                radial -= (radial * normal) * normal;
+                radial /= radial.norm();
+              }
+            const double sin_a = std::sin(half_angle),
+                         cos_a = std::cos(half_angle);
+            const double rim   = radius * cos_a / sin_a;
+            const double face  = rho * cos_a - zeta * sin_a; // < 0 inside
+            if (zeta >= 0. && face <= 0. && rho <= radius)
+              {
+                // Inside: the nearer of the face's line and the shaft.
+                if (face >= rho - radius)
+                  {
+                    n = cos_a * radial - sin_a * normal;
+                    return face;
+                  }
+                n = radial;
+                return rho - radius;
+              }
+            if (zeta >= rim && rho > radius)
+              {
+                n = radial;
+                return rho - radius;
+              }
+            // Outside, nearest to the face's segment (its ends included).
+            const double s     = std::clamp((rho * radius + zeta * rim) /
+                                          (radius * radius + rim * rim),
+                                        0.,
+                                        1.);
+            const double d_rho = rho - s * radius, d_zeta = zeta - s * rim;
+            const double distance = std::hypot(d_rho, d_zeta);
+            n = distance > 0. ? (d_rho * radial + d_zeta * normal) / distance :
+                                cos_a * radial - sin_a * normal;
+            return distance;
+          }
       }
     return 0.;
   }
@@ -173,6 +224,33 @@ namespace qsmpm
             }
           list.push_back(face);
         }
+    else if (shape == Shape::cone && dim == 2)
+      {
+        // In a plane the section is flat-faced: the two faces from the tip
+        // to the rims and the two sides of the shaft above them.
+        Tensor<1, dim> across;
+        across[0]          = normal[1];
+        across[1]          = -normal[0];
+        const double rim   = radius / std::tan(half_angle);
+        const double sin_a = std::sin(half_angle), cos_a = std::cos(half_angle);
+        for (const double side : {1., -1.})
+          {
+            const Tensor<1, dim> e = side * across;
+            Face                 face;
+            face.normal      = cos_a * e - sin_a * normal;
+            face.tangents[0] = sin_a * e + cos_a * normal;
+            face.lower[0]    = 0.;
+            face.upper[0]    = radius / sin_a;
+            list.push_back(face);
+            Face shaft;
+            shaft.normal      = e;
+            shaft.offset      = radius;
+            shaft.tangents[0] = normal;
+            shaft.lower[0]    = rim;
+            shaft.upper[0]    = unbounded;
+            list.push_back(shaft);
+          }
+      }
     return list;
   }
 
@@ -278,6 +356,16 @@ namespace qsmpm
                       ExcMessage(body + "a polygon needs at least 3 "
                                         "vertices (set_polygon())."));
           break;
+        case Shape::cone:
+          AssertThrow(std::abs(normal.norm() - 1.) < 1e-12,
+                      ExcMessage(body + "the axis of a cone must be a unit "
+                                        "vector."));
+          AssertThrow(radius > 0.,
+                      ExcMessage(body + "the radius must be positive."));
+          AssertThrow(half_angle > 0. && half_angle < M_PI / 2.,
+                      ExcMessage(body + "the half-angle of a cone must lie "
+                                        "between 0 and 90 degrees."));
+          break;
       }
     AssertThrow(friction != Friction::coulomb || friction_coefficient >= 0.,
                 ExcMessage(body + "the friction coefficient must not be "
@@ -327,9 +415,11 @@ namespace qsmpm
       return Shape::sphere;
     if (name == "polygon")
       return Shape::polygon;
+    if (name == "cone")
+      return Shape::cone;
     AssertThrow(false,
                 ExcMessage("Unknown rigid body shape <" + name +
-                           ">: half-space, box, sphere or polygon."));
+                           ">: half-space, box, sphere, polygon or cone."));
     return Shape::half_space;
   }
 

@@ -27,7 +27,12 @@ namespace qsmpm
    *    centre @p point, radius @p radius;
    *  - polygon: the convex polygon with the @p vertices (in the x-y
    *    plane, in either order; a wedge, a punch with chamfers, a cone's
-   *    section in plane strain); in 3D the prism it spans along z.
+   *    section in plane strain); in 3D the prism it spans along z;
+   *  - cone: a cone penetrometer: the tip @p point, the axis @p normal
+   *    (from the tip into the body), the half-angle @p half_angle at the
+   *    tip, and above the cone a shaft of @p radius. In 3D the solid of
+   *    revolution; in an axisymmetric problem (tip on the axis x = 0,
+   *    axis along y) the same cone; in plane strain a wedge with a shaft.
    *
    * Friction of the surface:
    *  - frictionless: the body pushes along its normal only;
@@ -48,7 +53,8 @@ namespace qsmpm
       half_space,
       box,
       sphere,
-      polygon
+      polygon,
+      cone
     };
 
     enum class Friction
@@ -67,12 +73,15 @@ namespace qsmpm
     /// half-space: a point of its plane; box: the lower corner; sphere:
     /// the centre (initial configuration).
     Point<dim> point;
-    /// half-space: the outward unit normal.
+    /// half-space: the outward unit normal; cone: the unit axis, from the
+    /// tip into the body.
     Tensor<1, dim> normal;
     /// box: the upper corner.
     Point<dim> upper_corner;
-    /// sphere: the radius.
+    /// sphere: the radius; cone: the radius of its shaft.
     double radius = 0.;
+    /// cone: the angle between the axis and the cone's face (radians).
+    double half_angle = 0.;
     /// polygon: its vertices, x and y (the z coordinate is ignored),
     /// relative to @p point, counterclockwise (set_polygon() orders them).
     std::vector<Tensor<1, dim>> vertices;
@@ -181,15 +190,17 @@ namespace qsmpm
       std::array<double, dim - 1>         upper;
     };
 
-    /// The flat faces of a box (2 dim of them) or a polygon (one per
-    /// edge); none for a half-space and a sphere, whose surfaces have no
-    /// edges.
+    /// The flat faces of a box (2 dim of them), a polygon (one per edge)
+    /// and a cone in 2D (its faces and the sides of its shaft); none for a
+    /// half-space and a sphere, whose surfaces have no edges, and for a
+    /// cone in 3D, whose surface is curved.
     std::vector<Face>
     faces() const;
 
     /// Throws with a message naming the body if its description is
     /// incomplete (a zero normal, an empty box, a radius <= 0, mu < 0, a
-    /// load direction without a load or the other way round).
+    /// load direction without a load or the other way round, a cone's
+    /// half-angle outside (0, 90) degrees).
     void
     check() const;
 
@@ -197,7 +208,7 @@ namespace qsmpm
     static Friction
     parse_friction(const std::string &name);
 
-    /// Shape from its name: half-space, box, sphere or polygon.
+    /// Shape from its name: half-space, box, sphere, polygon or cone.
     static Shape
     parse_shape(const std::string &name);
   };
