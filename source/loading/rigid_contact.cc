@@ -88,9 +88,14 @@ namespace qsmpm
     const double radius =
       axisymmetric ? 0.5 * (grid.lower_corner()[0] + grid.upper_corner()[0]) :
                      1.;
-    const auto &fe = grid.get_dof_handler().get_fe();
-    dofs_per_cell  = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> cell_dofs(dofs_per_cell);
+    // On a multi-field grid (Contact between bodies) a point meets a body
+    // through its own body's field only: a candidate holds the dofs of
+    // that field, dofs_per_cell of the cell's fe.n_dofs_per_cell().
+    const auto        &fe       = grid.get_dof_handler().get_fe();
+    const unsigned int all_dofs = fe.n_dofs_per_cell();
+    const unsigned int n_fields = fe.n_components() / dim;
+    dofs_per_cell               = all_dofs / n_fields;
+    std::vector<types::global_dof_index> cell_dofs(all_dofs);
     const Epetra_BlockMap &ghosted_map = ghosted_layout.trilinos_vector().Map();
     penalty.resize(bodies.size());
     body_displacement.resize(bodies.size());
@@ -484,7 +489,7 @@ namespace qsmpm
                       cache->global_dofs(c);
                     const types::global_dof_index *group_end =
                       group + cache->n_dofs(c);
-                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    for (unsigned int i = 0; i < all_dofs; ++i)
                       if (fe.system_to_component_index(i).first / dim ==
                             cache->cell(c).body &&
                           std::find(group, group_end, cell_dofs[i]) ==
@@ -499,15 +504,17 @@ namespace qsmpm
                       grid.get_mapping().transform_real_to_unit_cell(own, at)};
                   const auto &[cell, xi] = found;
                   grid.dof_cell(cell)->get_dof_indices(cell_dofs);
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  for (unsigned int i = 0; i < all_dofs; ++i)
                     {
                       const unsigned int component =
                         fe.system_to_component_index(i).first;
+                      if (component / dim != cache->cell(c).body)
+                        continue;
                       dof_global.push_back(cell_dofs[i]);
                       dof_local.push_back(ghosted_map.LID(
                         static_cast<TrilinosWrappers::types::int_type>(
                           cell_dofs[i])));
-                      dof_component.push_back(component);
+                      dof_component.push_back(component % dim);
                       dof_values.push_back(
                         fe.shape_value_component(i, xi, component));
                     }

@@ -273,7 +273,7 @@ driver_case rigid_body_inside "starts inside" 2 \
 driver_case rigid_body_friction_negative "Friction coefficient" 1 \
   $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = half-space\n  set Point = 0, 1\n  set Normal = 0, -1\n  set Friction = coulomb\n  set Friction coefficient = -0.3\n end\nend'
 driver_case rigid_body_shape_unknown "Shape" 1 \
-  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = cone\n end\nend'
+  $'subsection Boundary conditions\n subsection Rigid body\n  set Shape = pyramid\n end\nend'
 # A body driven by a force: a zero load direction, a load that is no
 # expression in t.
 driver_case rigid_body_load_direction_zero "Load direction" 1 \

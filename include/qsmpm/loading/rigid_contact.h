@@ -505,10 +505,11 @@ namespace qsmpm
     mutable std::vector<double> shift;
     double                      cell_size = 0.;
     std::vector<Candidate>      candidates;
-    unsigned int                dofs_per_cell = 0;
-    /// Per candidate, the dofs of the cell that holds its contact point:
-    /// global index, index in the ghosted layout's storage, component,
-    /// N_i(x_c).
+    /// The dofs of a candidate: those of one body's field in a cell.
+    unsigned int dofs_per_cell = 0;
+    /// Per candidate, the dofs of its point's body's field in the cell
+    /// that holds its contact point: global index, index in the ghosted
+    /// layout's storage, component (the direction), N_i(x_c).
     std::vector<types::global_dof_index> dof_global;
     std::vector<int>                     dof_local;
     std::vector<unsigned int>            dof_component;
