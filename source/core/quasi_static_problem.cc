@@ -1202,9 +1202,9 @@ namespace qsmpm
         };
         unsupported(!bcs.tractions().empty(), "Tractions on grid faces");
         unsupported(!bcs.point_loads().empty(), "Point loads");
-        // Rigid bodies press on each point through its own body's field;
-        // one driven by a force adds an unknown that is not written for
-        // several fields.
+        // Rigid bodies and surface tractions act on each point through its
+        // own body's field; a rigid body driven by a force adds an unknown
+        // that is not written for several fields.
         unsupported(std::any_of(bcs.rigid_bodies().begin(),
                                 bcs.rigid_bodies().end(),
                                 [](const auto &body) {
@@ -1212,7 +1212,6 @@ namespace qsmpm
                                 }),
                     "Rigid bodies driven by a force (Load direction)");
         unsupported(!bcs.rigid_plates().empty(), "Rigid plates");
-        unsupported(!bcs.surface_tractions().empty(), "Surface tractions");
         unsupported(!background_grid.periodic_directions().empty(),
                     "A periodic grid (Geometry/Periodic)");
         unsupported(pore_pressure != nullptr, "A pore fluid");

@@ -273,8 +273,11 @@ namespace qsmpm
     load_components.clear();
     const auto               &conditions = boundary.surface_tractions();
     const FiniteElement<dim> &fe         = grid.get_fe();
-    dofs_per_cell                        = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index>              dofs(dofs_per_cell);
+    // On a multi-field grid (Contact between bodies) a point's load acts
+    // on its own body's field: dofs_per_cell of the cell's dofs.
+    const unsigned int all_dofs = fe.n_dofs_per_cell();
+    dofs_per_cell               = all_dofs / (fe.n_components() / dim);
+    std::vector<types::global_dof_index>              dofs(all_dofs);
     typename Triangulation<dim>::active_cell_iterator hint;
     std::string                                       error;
     for (unsigned int c = 0; c < cache->n_cells() && error.empty(); ++c)
@@ -342,12 +345,14 @@ namespace qsmpm
               const Point<dim> xi =
                 GeometryInfo<dim>::project_to_unit_cell(found.second);
               loads.push_back({c, p, k, (unsigned int)load_dofs.size(), x_f});
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int i = 0; i < all_dofs; ++i)
                 {
                   const unsigned int component =
                     fe.system_to_component_index(i).first;
+                  if (component / dim != range.body)
+                    continue;
                   load_dofs.push_back(dofs[i]);
-                  load_components.push_back(component);
+                  load_components.push_back(component % dim);
                   load_values.push_back(
                     fe.shape_value_component(i, xi, component));
                 }

@@ -125,8 +125,10 @@ namespace qsmpm
      * @p action(point, x_f, dofs, values, components) with the point's index
      * in the ShapeCache, the centre x_f of its faces, and the
      * dofs_per_cell dofs of the cell whose Q1 functions carry its load with
-     * N_i(x_f) and the component of each. A drained surface of a pore fluid
-     * (PorePressureSolver) is such a condition without load.
+     * N_i(x_f) and the component (direction) of each: on a multi-field
+     * grid (Contact between bodies) those of the point's body's field. A
+     * drained surface of a pore fluid (PorePressureSolver) is such a condition
+     * without load.
      */
     void
     for_each_load(
@@ -189,11 +191,12 @@ namespace qsmpm
     };
 
     /// The step's data (reinit_step()).
-    const ShapeCache<dim>               *cache         = nullptr;
-    unsigned int                         offset        = 0;
-    unsigned int                         displacement  = 0;
-    bool                                 finite_strain = false;
-    double                               time          = 0.;
+    const ShapeCache<dim> *cache         = nullptr;
+    unsigned int           offset        = 0;
+    unsigned int           displacement  = 0;
+    bool                   finite_strain = false;
+    double                 time          = 0.;
+    /// The dofs of a load: those of one body's field in a cell.
     unsigned int                         dofs_per_cell = 0;
     std::vector<Load>                    loads;
     std::vector<types::global_dof_index> load_dofs;
