@@ -39,21 +39,14 @@
 // found in contact from the first step and carried 0.79-0.96 of the peak
 // force while the gap closed).
 #include "tests.h"
-
-#include <qsmpm/base/utilities.h>
-#include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/materials/linear_elastic.h>
+#include "two_blocks.h"
 
 using namespace qsmpm;
+using namespace two_blocks;
 
 namespace
 {
-  const double E = 1000., nu = 0.3, h = 0.125, W = 0.5, g = 0.5 * h, c = 0.006,
-               s = 0.01;
-
-  // u(t) of the moving face along the direction @p axis: single = false as
-  // above; single = true, the single block's: 0 until t = 0.4, then
-  // u(t) + g.
+  // two_blocks::motion() along the direction @p axis.
   class MovingFace : public Function<2>
   {
   public:
@@ -66,17 +59,7 @@ namespace
     double
     value(const Point<2> &, const unsigned int component) const override
     {
-      if (component != axis)
-        return 0.;
-      const double t = get_time();
-      double       u = 0.;
-      if (t <= 0.4)
-        u = -g * t / 0.4;
-      else if (t <= 0.7)
-        u = -g - c * (t - 0.4) / 0.3;
-      else
-        u = -g - c + (c + s) * (t - 0.7) / 0.3;
-      return single ? (t <= 0.4 ? 0. : u + g) : u;
+      return component == axis ? motion(get_time(), single) : 0.;
     }
 
   private:
@@ -95,23 +78,16 @@ namespace
     // The direction along the blocks, and the face that moves (boundary id).
     const unsigned int    a = axisymmetric ? 1 : 0, moving = 2 * a + 1;
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    auto &prm                                       = problem.parameters();
-    prm.material_points.formulation.shape_functions = shape_functions;
-    prm.material_points.formulation.axisymmetric    = axisymmetric;
-    prm.load_stepping.n_steps                       = 10;
-    prm.nonlinear_solver.tolerance                  = 1e-10;
-    prm.output.interval                             = 0;
-    prm.output.directory                            = "two-blocks-out";
-    if (two_bodies)
-      {
-        BodyContact<2>::Parameters contact;
-        contact.bodies   = "0; 1";
-        contact.friction = friction == "rough" ?
-                             BodyContact<2>::Parameters::Friction::rough :
-                             BodyContact<2>::Parameters::Friction::frictionless;
-        problem.set_body_contact(contact);
-      }
+    set_up(problem,
+           two_bodies,
+           friction == "rough" ?
+             BodyContact<2>::Parameters::Friction::rough :
+             BodyContact<2>::Parameters::Friction::frictionless,
+           shape_functions,
+           10,
+           "two-blocks-out");
+    problem.parameters().material_points.formulation.axisymmetric =
+      axisymmetric;
     if (axisymmetric)
       problem.grid().make_box(Point<2>(), Point<2>(W, 2.), {{4, 16}});
     else
@@ -127,24 +103,17 @@ namespace
     bcs.add_dirichlet_boundary(moving,
                                along,
                                std::make_shared<MovingFace>(!two_bodies, a));
-
-    LinearElastic<2>::Parameters material;
-    material.elasticity.young_modulus = E;
-    material.elasticity.poisson_ratio = nu;
-    problem.set_model(std::make_unique<LinearElastic<2>>(material));
-    const auto rule = MaterialPointSet<2>::reference_rule(
-      MaterialPointSet<2>::Placement::regular, {{2, 2}});
     if (two_bodies)
-      problem.points().fill(
+      make_points(
+        problem,
         [a](const Point<2> &x) { return x[a] < 1. || x[a] > 1. + g; },
-        rule,
-        [a](const Point<2> &x) { return x[a] < 1. ? 0u : 1u; });
+        true,
+        a);
     else
       // Where A's and B's points are once the gap has closed: B's moved
       // by -g, which keeps them on the same lattice of spacing h / 2.
-      problem.points().fill([a](const Point<2> &x) { return x[a] < 2. - g; },
-                            rule,
-                            [](const Point<2> &) { return 0u; });
+      make_points(
+        problem, [a](const Point<2> &x) { return x[a] < 2. - g; }, false, a);
 
     std::vector<double> force;
     problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
