@@ -56,10 +56,12 @@ namespace qsmpm
 
     /**
      * The mean over the dofs that have stiffness of the diagonal of the
-     * tangent at the points (TangentAssembler::assemble_diagonal()): the
-     * stiffness scale of the ghost penalty and of the held-stiffness
-     * threshold. Computed once per state of the shape cache (a pass over
-     * all points), however often a step asks.
+     * tangent at the points (TangentAssembler::assemble_diagonal()), on a
+     * grid of several bodies' fields over each node's directions with the
+     * diagonal summed over its fields: the stiffness scale of the ghost
+     * penalty, the rigid bodies' and plates' penalties and the
+     * held-stiffness threshold. Computed once per state of the shape cache (a
+     * pass over all points), however often a step asks.
      */
     double
     mean_stiffness(const MaterialPointSet<dim> &points) const;
