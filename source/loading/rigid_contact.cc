@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <limits>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/grid/field_shape_values.h>
 #include <qsmpm/loading/rigid_contact.h>
 #include <qsmpm/particles/initial_measure.h>
 #include <sstream>
@@ -93,8 +94,7 @@ namespace qsmpm
     // that field, dofs_per_cell of the cell's fe.n_dofs_per_cell().
     const auto        &fe       = grid.get_dof_handler().get_fe();
     const unsigned int all_dofs = fe.n_dofs_per_cell();
-    const unsigned int n_fields = fe.n_components() / dim;
-    dofs_per_cell               = all_dofs / n_fields;
+    dofs_per_cell               = field_dofs_per_cell(fe);
     std::vector<types::global_dof_index> cell_dofs(all_dofs);
     const Epetra_BlockMap &ghosted_map = ghosted_layout.trilinos_vector().Map();
     penalty.resize(bodies.size());
@@ -504,20 +504,17 @@ namespace qsmpm
                       grid.get_mapping().transform_real_to_unit_cell(own, at)};
                   const auto &[cell, xi] = found;
                   grid.dof_cell(cell)->get_dof_indices(cell_dofs);
-                  for (unsigned int i = 0; i < all_dofs; ++i)
-                    {
-                      const unsigned int component =
-                        fe.system_to_component_index(i).first;
-                      if (component / dim != cache->cell(c).body)
-                        continue;
-                      dof_global.push_back(cell_dofs[i]);
-                      dof_local.push_back(ghosted_map.LID(
-                        static_cast<TrilinosWrappers::types::int_type>(
-                          cell_dofs[i])));
-                      dof_component.push_back(component % dim);
-                      dof_values.push_back(
-                        fe.shape_value_component(i, xi, component));
-                    }
+                  append_field_shape_values(fe,
+                                            cell_dofs,
+                                            xi,
+                                            cache->cell(c).body,
+                                            dof_global,
+                                            dof_component,
+                                            dof_values);
+                  for (unsigned int i = cand.first; i < dof_global.size(); ++i)
+                    dof_local.push_back(ghosted_map.LID(
+                      static_cast<TrilinosWrappers::types::int_type>(
+                        dof_global[i])));
                   candidates.push_back(cand);
                 };
                 push(candidate, grid_corner);

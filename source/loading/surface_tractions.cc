@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_tools.h>
 #include <qsmpm/base/utilities.h>
+#include <qsmpm/grid/field_shape_values.h>
 #include <qsmpm/loading/surface_tractions.h>
 #include <sstream>
 #include <tuple>
@@ -275,9 +276,8 @@ namespace qsmpm
     const FiniteElement<dim> &fe         = grid.get_fe();
     // On a multi-field grid (Contact between bodies) a point's load acts
     // on its own body's field: dofs_per_cell of the cell's dofs.
-    const unsigned int all_dofs = fe.n_dofs_per_cell();
-    dofs_per_cell               = all_dofs / (fe.n_components() / dim);
-    std::vector<types::global_dof_index>              dofs(all_dofs);
+    dofs_per_cell = field_dofs_per_cell(fe);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     typename Triangulation<dim>::active_cell_iterator hint;
     std::string                                       error;
     for (unsigned int c = 0; c < cache->n_cells() && error.empty(); ++c)
@@ -345,17 +345,13 @@ namespace qsmpm
               const Point<dim> xi =
                 GeometryInfo<dim>::project_to_unit_cell(found.second);
               loads.push_back({c, p, k, (unsigned int)load_dofs.size(), x_f});
-              for (unsigned int i = 0; i < all_dofs; ++i)
-                {
-                  const unsigned int component =
-                    fe.system_to_component_index(i).first;
-                  if (component / dim != range.body)
-                    continue;
-                  load_dofs.push_back(dofs[i]);
-                  load_components.push_back(component % dim);
-                  load_values.push_back(
-                    fe.shape_value_component(i, xi, component));
-                }
+              append_field_shape_values(fe,
+                                        dofs,
+                                        xi,
+                                        range.body,
+                                        load_dofs,
+                                        load_components,
+                                        load_values);
             }
       }
     Utils::throw_if_any_rank(error, grid.get_communicator());
