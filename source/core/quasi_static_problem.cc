@@ -307,7 +307,8 @@ namespace qsmpm
                "direct" :
                "amg";
     return Preconditioner<dim>(Preconditioner<dim>::parse_type(type),
-                               solver_prm.amg_null_space == "rigid body modes");
+                               solver_prm.amg_null_space == "rigid body modes",
+                               solver_prm.amg_anisotropy_threshold);
   }
 
 

@@ -1,12 +1,51 @@
 #include <Amesos.h>
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <qsmpm/solvers/preconditioner.h>
 
 namespace qsmpm
 {
+  namespace
+  {
+    /**
+     * The coordinates of the grid's nodes whose dofs @p owned_map holds, one
+     * entry per node in the order of the nodes' first dofs (ML's layout of
+     * "x-coordinates" etc. with "PDE equations" = dofs per node).
+     */
+    template <int dim>
+    std::array<std::vector<double>, dim>
+    make_node_coordinates(const BackgroundGrid<dim> &grid,
+                          const Epetra_Map          &owned_map)
+    {
+      const unsigned int node_dofs = grid.n_node_dofs();
+      const unsigned int n_nodes   = owned_map.NumMyElements() / node_dofs;
+      std::array<std::vector<double>, dim> x;
+      for (auto &xd : x)
+        xd.assign(n_nodes, 0.);
+      const IndexSet &owned = grid.locally_owned_dofs();
+      for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto dof = cell->vertex_dof_index(v, 0);
+              if (!owned.is_element(dof))
+                continue;
+              const int lid = owned_map.LID(
+                static_cast<TrilinosWrappers::types::int_type>(dof));
+              Assert(lid % node_dofs == 0,
+                     ExcMessage("The dofs of a node are not in a row."));
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d][lid / node_dofs] = cell->vertex(v)[d];
+            }
+      return x;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::unique_ptr<Epetra_MultiVector>
   make_rigid_body_modes(const BackgroundGrid<dim> &grid,
@@ -85,10 +124,15 @@ namespace qsmpm
 
 
   template <int dim>
-  Preconditioner<dim>::Preconditioner(const Type type, const bool rotations)
+  Preconditioner<dim>::Preconditioner(const Type   type,
+                                      const bool   rotations,
+                                      const double anisotropy_threshold)
     : preconditioner_type(type)
     , with_rotations(rotations)
+    , anisotropy_threshold(anisotropy_threshold)
   {
+    AssertThrow(anisotropy_threshold >= 0. && anisotropy_threshold < 1.,
+                ExcMessage("AMG anisotropy threshold: must lie in [0, 1)."));
   }
 
 
@@ -164,6 +208,34 @@ namespace qsmpm
         // x but not the y dof of a node; per node, GMRES needs fewer
         // iterations and the setup is faster and needs less memory.
         parameters.set("PDE equations", static_cast<int>(grid.n_node_dofs()));
+        // On cells of equal sides the distances show no direction: the
+        // aggregation stays with the stiffness, and the set-up does not
+        // build the auxiliary matrix.
+        const Tensor<1, dim> h     = grid.cell_size();
+        double               h_min = h[0], h_max = h[0];
+        for (unsigned int d = 1; d < dim; ++d)
+          {
+            h_min = std::min(h_min, h[d]);
+            h_max = std::max(h_max, h[d]);
+          }
+        if (anisotropy_threshold > 0. && h_max > (1. + 1e-6) * h_min)
+          {
+            // ML aggregates on a Laplacian of the nodes' distances, which
+            // sees a stretched cell's weak direction whatever the material;
+            // the stiffness's own entries mix the two with the material's
+            // anisotropy and Poisson coupling.
+            node_coordinates            = make_node_coordinates(grid, map);
+            static const char *names[3] = {"x-coordinates",
+                                           "y-coordinates",
+                                           "z-coordinates"};
+            for (unsigned int d = 0; d < dim; ++d)
+              parameters.set(names[d],
+                             node_coordinates[d].empty() ?
+                               &no_rows :
+                               node_coordinates[d].data());
+            parameters.set("aggregation: aux: enable", true);
+            parameters.set("aggregation: aux: threshold", anisotropy_threshold);
+          }
         amg.initialize(K, parameters);
       }
     else if (preconditioner_type == Type::direct)

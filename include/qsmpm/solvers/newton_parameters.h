@@ -62,6 +62,9 @@ namespace qsmpm
     /// AMG's near-null space: "rigid body modes" (translations and
     /// rotations) or "translations" (see Preconditioner).
     std::string amg_null_space = "rigid body modes";
+    /// AMG aggregates nodes by their distances, dropping connections below
+    /// this fraction (0: by the stiffness alone; see Preconditioner).
+    double amg_anisotropy_threshold = 0.01;
     /// Load steps a preconditioner may serve before it is rebuilt (1 = a
     /// new one every step, as in the paper's runs; 0 = auto, see
     /// resolve()).

@@ -4,6 +4,7 @@
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <qsmpm/grid/background_grid.h>
 #include <string>
+#include <vector>
 
 namespace qsmpm
 {
@@ -61,10 +63,17 @@ namespace qsmpm
     /**
      * With @p rotations (the default) AMG's near-null space holds the
      * rigid-body rotations besides the translations (see
-     * make_rigid_body_modes()); without, only the translations.
+     * make_rigid_body_modes()); without, only the translations. With an
+     * @p anisotropy_threshold > 0, AMG aggregates the nodes by ML's
+     * auxiliary matrix of their distances (weights 1/|x_i - x_j|^2, the
+     * grid's vertices), dropping connections whose scaled weight is below
+     * the threshold: on stretched cells the aggregates follow the short
+     * directions, along which the stiffness is strong. On cells of equal
+     * sides, and with 0, the aggregation is by the stiffness.
      */
-    explicit Preconditioner(const Type type      = Type::amg,
-                            const bool rotations = true);
+    explicit Preconditioner(const Type   type                 = Type::amg,
+                            const bool   rotations            = true,
+                            const double anisotropy_threshold = 0.);
 
     Type
     type() const;
@@ -92,8 +101,12 @@ namespace qsmpm
           const TrilinosWrappers::MPI::Vector &src) const;
 
   private:
-    Type                                 preconditioner_type;
-    bool                                 with_rotations;
+    Type   preconditioner_type;
+    bool   with_rotations;
+    double anisotropy_threshold;
+    /// The x, y (and z) coordinates of the locally owned nodes, in the
+    /// order of their first dofs, for ML's auxiliary aggregation.
+    std::array<std::vector<double>, dim> node_coordinates;
     TrilinosWrappers::PreconditionJacobi jacobi;
     TrilinosWrappers::PreconditionAMG    amg;
     std::unique_ptr<Epetra_MultiVector>  rigid_body_modes;
