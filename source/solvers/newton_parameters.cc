@@ -111,8 +111,11 @@ namespace qsmpm
         "3:1 nothing is dropped at 0.01. On cells of equal sides (squares, "
         "cubes) the distances have no direction and the aggregation is by "
         "the stiffness whatever this value. 0: aggregation by the "
-        "stiffness only (ML's default).",
-        Patterns::Double(0., 1.));
+        "stiffness only (ML's default). At most 0.5: an interior node of "
+        "a grid of boxes has two nearest neighbours, so none of its "
+        "connections weighs more than half, and a larger value would "
+        "drop them all.",
+        Patterns::Double(0., 0.5));
       prm.add_parameter("Direct solver threshold",
                         direct_threshold,
                         "With <Preconditioner> = auto: the largest number of "

@@ -131,8 +131,8 @@ namespace qsmpm
     , with_rotations(rotations)
     , anisotropy_threshold(anisotropy_threshold)
   {
-    AssertThrow(anisotropy_threshold >= 0. && anisotropy_threshold < 1.,
-                ExcMessage("AMG anisotropy threshold: must lie in [0, 1)."));
+    AssertThrow(anisotropy_threshold >= 0. && anisotropy_threshold <= 0.5,
+                ExcMessage("AMG anisotropy threshold: must lie in [0, 0.5]."));
   }
 
 
