@@ -69,7 +69,8 @@ namespace qsmpm
      * grid's vertices), dropping connections whose scaled weight is below
      * the threshold: on stretched cells the aggregates follow the short
      * directions, along which the stiffness is strong. On cells of equal
-     * sides, and with 0, the aggregation is by the stiffness.
+     * sides, on a periodic grid and with 0, the aggregation is by the
+     * stiffness.
      */
     explicit Preconditioner(const Type   type                 = Type::amg,
                             const bool   rotations            = true,
