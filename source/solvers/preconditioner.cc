@@ -214,14 +214,10 @@ namespace qsmpm
         // stiffness couples nodes a period apart, which the distances
         // would drop (the polycrystal's periodic tests: 103-168 GMRES
         // iterations instead of 37-94).
-        const Tensor<1, dim> h     = grid.cell_size();
-        double               h_min = h[0], h_max = h[0];
-        for (unsigned int d = 1; d < dim; ++d)
-          {
-            h_min = std::min(h_min, h[d]);
-            h_max = std::max(h_max, h[d]);
-          }
-        if (anisotropy_threshold > 0. && h_max > (1. + 1e-6) * h_min &&
+        const Tensor<1, dim> h = grid.cell_size();
+        const double h_max     = *std::max_element(h.begin_raw(), h.end_raw());
+        if (anisotropy_threshold > 0. &&
+            h_max > (1. + 1e-6) * grid.min_cell_size() &&
             grid.periodic_directions().empty())
           {
             // ML aggregates on a Laplacian of the nodes' distances, which
