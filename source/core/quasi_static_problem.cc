@@ -282,8 +282,23 @@ namespace qsmpm
         secant_retry           = false;
         preconditioner_reuse.reset();
         last_load_increment = 0.;
-        if (preconditioner.needs_matrix())
-          tangent.reinit(background_grid, points().get_formulation().gimp());
+        // A stiffness handed over on the same degrees of freedom (on
+        // every rank) brings the pattern of the same grid.
+        const bool gimp = points().get_formulation().gimp();
+        if (handover &&
+            (handover->preconditioner->type() != preconditioner->type() ||
+             handover->gimp != gimp ||
+             dealii::Utilities::MPI::min(
+               handover->tangent->matrix().locally_owned_range_indices() ==
+                   background_grid.locally_owned_dofs() ?
+                 1 :
+                 0,
+               communicator) == 0))
+          handover.reset();
+        if (handover)
+          tangent = std::move(handover->tangent);
+        else if (preconditioner->needs_matrix())
+          tangent->reinit(background_grid, gimp);
       }
     du.reinit(background_grid.locally_owned_dofs(), communicator);
     R.reinit(du);
@@ -293,7 +308,7 @@ namespace qsmpm
 
 
   template <int dim>
-  Preconditioner<dim>
+  std::unique_ptr<Preconditioner<dim>>
   QuasiStaticProblem<dim>::make_preconditioner() const
   {
     // auto: a direct factorization for small problems, where its cost is
@@ -306,9 +321,10 @@ namespace qsmpm
                  solver_prm.direct_threshold_for(dim) ?
                "direct" :
                "amg";
-    return Preconditioner<dim>(Preconditioner<dim>::parse_type(type),
-                               solver_prm.amg_null_space == "rigid body modes",
-                               solver_prm.amg_anisotropy_threshold);
+    return std::make_unique<Preconditioner<dim>>(
+      Preconditioner<dim>::parse_type(type),
+      solver_prm.amg_null_space == "rigid body modes",
+      solver_prm.amg_anisotropy_threshold);
   }
 
 
@@ -317,6 +333,10 @@ namespace qsmpm
   void
   QuasiStaticProblem<dim>::prepare_step(const double t_old, const double t_new)
   {
+    AssertThrow(tangent,
+                ExcMessage("This problem handed its stiffness over to "
+                           "another (hand_over_preconditioner()) and cannot "
+                           "solve again."));
     setup_step_data();
 
     // N_i(x_p) and grad N_i(x_p) for the whole step (paper Section 2.3);
@@ -410,11 +430,25 @@ namespace qsmpm
     // either (with GIMP its pattern may change, and AMG and KLU refer to
     // it).
     const bool new_preconditioner =
-      preconditioner_reuse.build_for_step(preconditioner.needs_matrix(),
+      preconditioner_reuse.build_for_step(preconditioner->needs_matrix(),
                                           solver_parameters(),
                                           step_constraints.get(),
                                           background_grid.locally_owned_dofs(),
                                           communicator);
+    // The first step may take over what another problem built for the
+    // same constrained dofs (take_over_preconditioner()); otherwise the
+    // handover is freed before the new set-up.
+    if (new_preconditioner && handover &&
+        handover->constrained == preconditioner_reuse.constrained_signature())
+      {
+        preconditioner         = std::move(handover->preconditioner);
+        preconditioner_tangent = handover->tangent_kind;
+        preconditioner_reuse.count_as_taken_over();
+        handover.reset();
+        complete_preconditioner(true);
+        return;
+      }
+    handover.reset();
     if (new_preconditioner)
       {
         {
@@ -425,18 +459,51 @@ namespace qsmpm
           // secant that AMG needs, unless the step failed with the slopes
           // (reject_step()).
           preconditioner_tangent =
-            (preconditioner.type() == Preconditioner<dim>::Type::direct &&
+            (preconditioner->type() == Preconditioner<dim>::Type::direct &&
              !secant_retry) ?
               TangentAssembler<dim>::Tangent::loading :
               TangentAssembler<dim>::Tangent::secant;
           assemble_tangent(nullptr);
         }
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
-        preconditioner.setup(tangent.matrix(),
-                             background_grid,
-                             tangent.pattern_generation());
+        preconditioner->setup(tangent->matrix(),
+                              background_grid,
+                              tangent->pattern_generation());
       }
     complete_preconditioner(new_preconditioner);
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<PreconditionerHandover<dim>>
+  QuasiStaticProblem<dim>::hand_over_preconditioner()
+  {
+    if (!tangent || preconditioner_reuse.constrained_signature()[0] < 0. ||
+        !preconditioner->needs_matrix())
+      return nullptr;
+    auto given     = std::make_unique<PreconditionerHandover<dim>>();
+    given->tangent = std::move(tangent);
+    given->preconditioner =
+      std::exchange(preconditioner, make_preconditioner());
+    given->tangent_kind = preconditioner_tangent;
+    given->gimp         = points().get_formulation().gimp();
+    given->constrained  = preconditioner_reuse.constrained_signature();
+    preconditioner_reuse.reset();
+    return given;
+  }
+
+
+
+  template <int dim>
+  void
+  QuasiStaticProblem<dim>::take_over_preconditioner(
+    std::unique_ptr<PreconditionerHandover<dim>> given)
+  {
+    AssertThrow(!residual,
+                ExcMessage("take_over_preconditioner() must be called "
+                           "before the first load step."));
+    handover = std::move(given);
   }
 
 
@@ -446,15 +513,15 @@ namespace qsmpm
   QuasiStaticProblem<dim>::assemble_tangent(
     const IterateKinematics<dim> *iterate)
   {
-    tangent.assemble(background_grid,
-                     points(),
-                     cache,
-                     step_constraints.get(),
-                     stabilization(),
-                     additional_stiffness(true),
-                     preconditioner_tangent,
-                     iterate,
-                     /*fbar_terms=*/iterate != nullptr);
+    tangent->assemble(background_grid,
+                      points(),
+                      cache,
+                      step_constraints.get(),
+                      stabilization(),
+                      additional_stiffness(true),
+                      preconditioner_tangent,
+                      iterate,
+                      /*fbar_terms=*/iterate != nullptr);
   }
 
 
@@ -471,7 +538,7 @@ namespace qsmpm
     // plasticity can be poor (doc/benchmarks.md: a footing twice as slow).
     try
       {
-        preconditioner.setup(tangent.matrix(), background_grid);
+        preconditioner->setup(tangent->matrix(), background_grid);
       }
     catch (const std::exception &)
       {
@@ -480,7 +547,7 @@ namespace qsmpm
         // Mohr-Coulomb surface stiffen nothing): this iteration takes the
         // tangents of the committed state, as the step's first did.
         assemble_tangent(nullptr);
-        preconditioner.setup(tangent.matrix(), background_grid);
+        preconditioner->setup(tangent->matrix(), background_grid);
       }
     complete_preconditioner(true);
   }
@@ -495,20 +562,20 @@ namespace qsmpm
     // The bodies driven by a force (RigidContact) and the plates
     // (RigidPlates) complete the preconditioner; the plates in every step,
     // since their nodes change with the material.
-    if (preconditioner.needs_matrix() &&
+    if (preconditioner->needs_matrix() &&
         !(rigid_contact.empty() && rigid_plates.empty()))
       {
         TimerOutput::Scope scope(timer_output, "preconditioner setup");
         const auto         M = [this](VectorType &dst, const VectorType &src) {
-          preconditioner.vmult(dst, src);
+          preconditioner->vmult(dst, src);
         };
         if (!rigid_contact.empty())
-          rigid_contact.setup_preconditioner(tangent.matrix(),
+          rigid_contact.setup_preconditioner(tangent->matrix(),
                                              M,
                                              new_preconditioner);
         if (!rigid_plates.empty())
           rigid_plates.setup_preconditioner(
-            tangent.matrix(),
+            tangent->matrix(),
             M,
             [this](VectorType &v) {
               step_constraints.set_constrained_to_zero(v);
@@ -614,7 +681,7 @@ namespace qsmpm
       TimerOutput::Scope scope(timer_output, "Newton-Krylov solve");
       StepOperator<dim>  op = step_operator();
       if (newton_parameters.preconditioner_update == "Newton iteration" &&
-          preconditioner.needs_matrix())
+          preconditioner->needs_matrix())
         op.set_preconditioner_update([this](const VectorType &iterate) {
           build_preconditioner_at(iterate);
         });
@@ -754,7 +821,7 @@ namespace qsmpm
   {
     return StepOperator<dim>(*residual,
                              step_constraints,
-                             preconditioner,
+                             *preconditioner,
                              stabilizations(),
                              pressure_loads(),
                              contact_loads(),
@@ -952,7 +1019,7 @@ namespace qsmpm
       TimerOutput::Scope      scope(timer_output, "Newton-Krylov solve");
       const StepOperator<dim> op(*residual,
                                  step_constraints,
-                                 preconditioner,
+                                 *preconditioner,
                                  stabilizations(),
                                  pressure_loads(),
                                  contact_loads());
@@ -1430,12 +1497,13 @@ namespace qsmpm
   {
     const auto &solver_prm = prm_values.nonlinear_solver;
     if (!solver_prm.direct_retry || direct_retry ||
-        preconditioner.type() != Preconditioner<dim>::Type::amg ||
+        preconditioner->type() != Preconditioner<dim>::Type::amg ||
         background_grid.get_dof_handler().n_dofs() >
           solver_prm.direct_threshold_for(dim))
       return false;
-    preconditioner = Preconditioner<dim>(Preconditioner<dim>::Type::direct);
-    direct_retry   = true;
+    preconditioner =
+      std::make_unique<Preconditioner<dim>>(Preconditioner<dim>::Type::direct);
+    direct_retry = true;
     preconditioner_reuse.reset();
     return true;
   }

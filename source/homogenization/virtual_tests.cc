@@ -107,8 +107,16 @@ namespace qsmpm
     for (auto &row : mask)
       row.fill(false);
 
-    // The groups of ranks: contiguous ranks, test number n of the list to
-    // group n mod n_groups, so that each group gets normal and shear tests.
+    // The groups of ranks: contiguous ranks. The tests in the order of the
+    // faces they load (stable: in the order of the list among those), in
+    // contiguous runs to the groups, so that the tests of a group that fix
+    // the same dofs follow each other and share their stiffness.
+    std::vector<unsigned int> order = prm.tests;
+    std::stable_sort(order.begin(),
+                     order.end(),
+                     [this](const unsigned int a, const unsigned int b) {
+                       return loaded_direction(a) < loaded_direction(b);
+                     });
     const unsigned int n_ranks =
       dealii::Utilities::MPI::n_mpi_processes(communicator);
     const unsigned int rank =
@@ -122,6 +130,9 @@ namespace qsmpm
     const auto group_of_rank = [&](const unsigned int r) {
       return r * n_groups / n_ranks;
     };
+    const auto group_of_test = [&](const unsigned int n) {
+      return n * n_groups / n_tests;
+    };
     const unsigned int group = group_of_rank(rank);
     MPI_Comm           group_communicator;
     const int          ierr =
@@ -131,24 +142,26 @@ namespace qsmpm
     // A test that fails on one group must stop every rank: the others
     // would wait for its results below. Its message travels to all. With
     // Verbose, the first rank prints the steps of its own group's tests.
-    std::string error;
+    std::string                                error;
+    std::unique_ptr<PreconditionerHandover<3>> handover;
     for (unsigned int n = 0; n < n_tests; ++n)
-      if (n % n_groups == group && error.empty())
+      if (group_of_test(n) == group && error.empty())
         {
           try
             {
-              test_reports[prm.tests[n]] =
-                run_test(prm.tests[n],
-                         group_communicator,
-                         prm.solver.verbose && rank == 0,
-                         make_model,
-                         material_id);
+              test_reports[order[n]] = run_test(order[n],
+                                                group_communicator,
+                                                prm.solver.verbose && rank == 0,
+                                                make_model,
+                                                material_id,
+                                                handover);
             }
           catch (const std::exception &exc)
             {
               error = Utils::error_message(exc);
             }
         }
+    handover.reset();
     MPI_Comm_free(&group_communicator);
     Utils::throw_if_any_rank(error, communicator);
 
@@ -158,9 +171,9 @@ namespace qsmpm
     for (unsigned int n = 0; n < n_tests; ++n)
       {
         unsigned int root = 0;
-        while (group_of_rank(root) != n % n_groups)
+        while (group_of_rank(root) != group_of_test(n))
           ++root;
-        MPI_Bcast(&test_reports[prm.tests[n]],
+        MPI_Bcast(&test_reports[order[n]],
                   sizeof(TestReport),
                   MPI_BYTE,
                   root,
@@ -181,12 +194,21 @@ namespace qsmpm
 
 
 
+  unsigned int
+  VirtualTests::loaded_direction(const unsigned int k) const
+  {
+    return prm.boundary_type == BoundaryType::mixed ? voigt_j[k] : 0;
+  }
+
+
+
   VirtualTests::TestReport
   VirtualTests::run_test(const unsigned int  k,
                          const MPI_Comm      group,
                          const bool          verbose,
                          const ModelFactory &make_model,
-                         const MaterialId   &material_id)
+                         const MaterialId   &material_id,
+                         std::unique_ptr<PreconditionerHandover<3>> &handover)
   {
     const double L = prm.side_length;
     Point<3>     centre, upper;
@@ -271,6 +293,8 @@ namespace qsmpm
     p.output.write_increment          = false;
     p.output.directory = prm.output_directory + "/test_" + std::to_string(k);
     p.material_points.update_volumes = prm.update_volumes;
+    if (handover)
+      problem.take_over_preconditioner(std::move(handover));
     problem.run();
 
     TestReport report;
@@ -279,6 +303,7 @@ namespace qsmpm
         report.newton_iterations += step.newton.newton_iterations;
         report.gmres_iterations += step.newton.linear_iterations;
       }
+    report.preconditioner_builds = problem.n_preconditioner_builds();
 
     // Volume averages of stress and strain at the points.
     double sums[13] = {};
@@ -340,6 +365,8 @@ namespace qsmpm
         report.stress_reaction[a]   = n > 0 ? sum / n : 0.;
       }
 
+    if (prm.share_preconditioner)
+      handover = problem.hand_over_preconditioner();
     timer.stop();
     report.wall_time = timer.wall_time();
     return report;

@@ -62,6 +62,23 @@ namespace qsmpm
 
 
 
+  const std::array<double, 2> &
+  PreconditionerReuse::constrained_signature() const
+  {
+    return constrained;
+  }
+
+
+
+  void
+  PreconditionerReuse::count_as_taken_over()
+  {
+    Assert(builds > 0 && age == 0, ExcInternalError());
+    --builds;
+  }
+
+
+
   void
   PreconditionerReuse::count_use(const NewtonReport     &report,
                                  const NewtonParameters &parameters)

@@ -13,6 +13,7 @@
 #include <qsmpm/assembly/quasi_static_residual.h>
 #include <qsmpm/assembly/tangent_assembler.h>
 #include <qsmpm/core/path_following_setup.h>
+#include <qsmpm/core/preconditioner_handover.h>
 #include <qsmpm/core/step_constraint_maker.h>
 #include <qsmpm/core/step_operator.h>
 #include <qsmpm/core/step_report.h>
@@ -292,6 +293,34 @@ namespace qsmpm
     const TrilinosWrappers::SparseMatrix &
     stiffness() const;
 
+    /**
+     * Give away the stiffness matrix and the preconditioner this problem
+     * built last (null if it built none), for take_over_preconditioner()
+     * of another problem. This problem cannot solve again afterwards.
+     */
+    std::unique_ptr<PreconditionerHandover<dim>>
+    hand_over_preconditioner();
+
+    /**
+     * Let the first load step use @p handover, which another problem gave
+     * away (hand_over_preconditioner()), instead of assembling the
+     * stiffness and building a preconditioner: if it holds the same kind
+     * of preconditioner for the same degrees of freedom and was built for
+     * the same constrained ones (compared as PreconditionerReuse compares
+     * them). Otherwise it is freed before the step builds its own. Call
+     * before the first step.
+     *
+     * The caller vouches for the rest: the same grid, and points at the
+     * same places with the same state as those the other problem built
+     * from, as the load cases of one sample have (VirtualTests). A
+     * preconditioner changes the GMRES iterations a step needs, not its
+     * answer: GMRES multiplies with the Jacobian of the residual itself,
+     * and Newton's stopping test is on the residual.
+     */
+    void
+    take_over_preconditioner(
+      std::unique_ptr<PreconditionerHandover<dim>> handover);
+
     /// Progress and summary printing (rank 0); silence with set_condition().
     ConditionalOStream &
     pcout();
@@ -422,7 +451,7 @@ namespace qsmpm
 
     /// The preconditioner of the settings (Preconditioner, with auto
     /// decided by the number of dofs).
-    Preconditioner<dim>
+    std::unique_ptr<Preconditioner<dim>>
     make_preconditioner() const;
 
     /// reactions.csv, probes.csv and the fields of an accepted step to
@@ -514,9 +543,14 @@ namespace qsmpm
     ShapeCache<dim>                           cache;
     StepConstraintMaker<dim>                  constraint_maker;
     std::unique_ptr<QuasiStaticResidual<dim>> residual;
-    TangentAssembler<dim>                     tangent;
-    GhostPenalty<dim>                         ghost_penalty;
-    NullModeHold<dim>                         null_mode_hold;
+    /// The stiffness at the points (null once handed over).
+    std::unique_ptr<TangentAssembler<dim>> tangent =
+      std::make_unique<TangentAssembler<dim>>();
+    /// The stiffness and preconditioner another problem handed over, until
+    /// the first step takes or frees them (take_over_preconditioner()).
+    std::unique_ptr<PreconditionerHandover<dim>> handover;
+    GhostPenalty<dim>                            ghost_penalty;
+    NullModeHold<dim>                            null_mode_hold;
     /// The ghost penalty if Material points/Ghost penalty > 0, else null.
     const GhostPenalty<dim> *
     stabilization() const
@@ -538,7 +572,8 @@ namespace qsmpm
     {
       return surface_tractions.has_pressure() ? &surface_tractions : nullptr;
     }
-    Preconditioner<dim> preconditioner;
+    std::unique_ptr<Preconditioner<dim>> preconditioner =
+      std::make_unique<Preconditioner<dim>>();
     /// Whether #preconditioner is the direct factorization that replaced
     /// AMG for a step that failed with it (switch_to_direct()).
     bool direct_retry = false;
@@ -696,7 +731,10 @@ namespace qsmpm
   inline const TrilinosWrappers::SparseMatrix &
   QuasiStaticProblem<dim>::stiffness() const
   {
-    return tangent.matrix();
+    AssertThrow(tangent,
+                ExcMessage("The stiffness was handed over to another "
+                           "problem (hand_over_preconditioner())."));
+    return tangent->matrix();
   }
 
 

@@ -15,6 +15,9 @@
 
 namespace qsmpm
 {
+  template <int dim>
+  struct PreconditionerHandover;
+
   /**
    * The six virtual tests of paper Section 4.4 (Fig. 6) on a box of
    * material, in 3D, that give the full effective stiffness C of eq. (4.3)
@@ -84,6 +87,16 @@ namespace qsmpm
        * the solver's tolerances.
        */
       unsigned int test_groups = 0;
+      /**
+       * The tests of a group that fix the same degrees of freedom (mixed:
+       * those that load the same pair of faces; affine and periodic: all)
+       * take the stiffness and preconditioner over from the test before
+       * instead of building their own (QuasiStaticProblem::
+       * take_over_preconditioner()): they start from the same points. The
+       * groups get the tests in the order of the faces they load. false:
+       * each test builds its own.
+       */
+      bool share_preconditioner = true;
     };
 
     /// Result of one test.
@@ -97,7 +110,9 @@ namespace qsmpm
       std::array<double, 6> mean_strain{};
       unsigned int          newton_iterations = 0;
       unsigned int          gmres_iterations  = 0;
-      double                wall_time         = 0;
+      /// Preconditioners the test built (not those it took over).
+      unsigned int preconditioner_builds = 0;
+      double       wall_time             = 0;
     };
 
     /// Creates a fresh constitutive model for each test.
@@ -158,13 +173,23 @@ namespace qsmpm
     relative_asymmetry(const Matrix6 &C);
 
   private:
-    /// Test @p k on the ranks of @p group (all of them take part).
+    /**
+     * Test @p k on the ranks of @p group (all of them take part), with the
+     * stiffness and preconditioner of the group's test before in
+     * @p handover (if not null); returns with those of this test there if
+     * Parameters::share_preconditioner.
+     */
     TestReport
-    run_test(const unsigned int  k,
-             const MPI_Comm      group,
-             const bool          verbose,
-             const ModelFactory &make_model,
-             const MaterialId   &material_id);
+    run_test(const unsigned int                          k,
+             const MPI_Comm                              group,
+             const bool                                  verbose,
+             const ModelFactory                         &make_model,
+             const MaterialId                           &material_id,
+             std::unique_ptr<PreconditionerHandover<3>> &handover);
+
+    /// The pair of faces test @p k loads (mixed; 0 for the others).
+    unsigned int
+    loaded_direction(const unsigned int k) const;
 
     Parameters                         prm;
     MPI_Comm                           communicator;

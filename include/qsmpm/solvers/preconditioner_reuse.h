@@ -59,6 +59,22 @@ namespace qsmpm
                    const IndexSet                  &owned,
                    const MPI_Comm                   communicator);
 
+    /**
+     * The number and the checksum of the constrained degrees of freedom
+     * the current preconditioner was built for (the last build_for_step()
+     * with constraints that asked for a build; {-1, -1} before).
+     */
+    const std::array<double, 2> &
+    constrained_signature() const;
+
+    /**
+     * The preconditioner the last build_for_step() asked for was not built
+     * but taken over from another problem (QuasiStaticProblem::
+     * take_over_preconditioner()): not counted as a build.
+     */
+    void
+    count_as_taken_over();
+
     /// Count a step of the current preconditioner, with its @p report.
     void
     count_use(const NewtonReport &report, const NewtonParameters &parameters);
