@@ -76,6 +76,35 @@ main()
             1e-8);
     }
 
+  // The disorientation within a bound (the texture assignment's search
+  // within 7 degrees): the same angle where it is below the bound, a value
+  // of at least the bound elsewhere, also for angles within 1e-9 degrees
+  // of the bound.
+  {
+    const double        bound = 7. * deg;
+    bool                agree = true;
+    std::vector<double> angles;
+    for (const auto &c : cases)
+      angles.push_back(c.angle);
+    for (int k = -100; k <= 100; ++k)
+      angles.push_back(7. + 1e-3 * k);
+    for (const double offset : {-1e-9, 0., 1e-9})
+      angles.push_back(7. + offset);
+    for (const auto &axis : {Tensor<1, 3>({1, 2, 3}), Tensor<1, 3>({0, 0, 1})})
+      for (const double angle : angles)
+        {
+          const Tensor<2, 3> gb      = axis_angle(axis, angle * deg) * g;
+          const double       exact   = Rotation::disorientation(g, gb);
+          const double       bounded = Rotation::disorientation(g, gb, bound);
+          agree =
+            agree && (exact < bound ? bounded == exact : bounded >= bound);
+        }
+    check_that("disorientation within 7 deg: the angle below, at least 7 deg "
+               "above (" +
+                 std::to_string(2 * angles.size()) + " pairs)",
+               agree);
+  }
+
   // Mean orientation: +-3 degrees about two axes around g, some replaced by
   // symmetry equivalents.
   std::vector<Tensor<2, 3>> set;

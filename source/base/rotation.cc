@@ -119,48 +119,77 @@ namespace qsmpm
 
 
 
+  namespace
+  {
+    /**
+     * The cubic symmetry S (its index in Rotation::cubic_symmetry()) with
+     * the largest trace of S dg, dg = g_b g_a^T, and that trace.
+     */
+    std::pair<unsigned int, double>
+    closest_symmetry(const Tensor<2, 3> &dg)
+    {
+      // trace(S dg) for all S at once: the largest trace is the smallest angle.
+      // Every S is a signed permutation, S_i,p(i) = +-1, so
+      // trace(S dg) = sum_i S_i,p(i) dg_p(i),i: three terms per S.
+      struct SignedPermutation
+      {
+        unsigned int p[3];
+        double       sign[3];
+      };
+      static const std::vector<SignedPermutation> table = [] {
+        std::vector<SignedPermutation> t;
+        for (const auto &S : Rotation::cubic_symmetry())
+          {
+            SignedPermutation sp;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                if (S[i][j] != 0.)
+                  {
+                    sp.p[i]    = j;
+                    sp.sign[i] = S[i][j];
+                  }
+            t.push_back(sp);
+          }
+        return t;
+      }();
+      double       max_trace = -2.;
+      unsigned int best      = 0;
+      for (unsigned int s = 0; s < table.size(); ++s)
+        {
+          const auto  &sp = table[s];
+          const double t  = sp.sign[0] * dg[sp.p[0]][0] +
+                           sp.sign[1] * dg[sp.p[1]][1] +
+                           sp.sign[2] * dg[sp.p[2]][2];
+          if (t > max_trace)
+            {
+              max_trace = t;
+              best      = s;
+            }
+        }
+      return {best, max_trace};
+    }
+  } // namespace
+
+
+
   double
   Rotation::disorientation(const Tensor<2, 3> &g_a, const Tensor<2, 3> &g_b)
   {
-    // trace(S dg) for all S at once: the largest trace is the smallest angle.
-    // Every S is a signed permutation, S_i,p(i) = +-1, so
-    // trace(S dg) = sum_i S_i,p(i) dg_p(i),i: three terms per S.
-    struct SignedPermutation
-    {
-      unsigned int p[3];
-      double       sign[3];
-    };
-    static const std::vector<SignedPermutation> table = [] {
-      std::vector<SignedPermutation> t;
-      for (const auto &S : cubic_symmetry())
-        {
-          SignedPermutation sp;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              if (S[i][j] != 0.)
-                {
-                  sp.p[i]    = j;
-                  sp.sign[i] = S[i][j];
-                }
-          t.push_back(sp);
-        }
-      return t;
-    }();
+    const Tensor<2, 3> dg = g_b * transpose(g_a);
+    return angle(cubic_symmetry()[closest_symmetry(dg).first] * dg);
+  }
+
+
+
+  double
+  Rotation::disorientation(const Tensor<2, 3> &g_a,
+                           const Tensor<2, 3> &g_b,
+                           const double        bound)
+  {
     const Tensor<2, 3> dg        = g_b * transpose(g_a);
-    double             max_trace = -2.;
-    unsigned int       best      = 0;
-    for (unsigned int s = 0; s < table.size(); ++s)
-      {
-        const auto  &sp = table[s];
-        const double t  = sp.sign[0] * dg[sp.p[0]][0] +
-                         sp.sign[1] * dg[sp.p[1]][1] +
-                         sp.sign[2] * dg[sp.p[2]][2];
-        if (t > max_trace)
-          {
-            max_trace = t;
-            best      = s;
-          }
-      }
+    const auto [best, max_trace] = closest_symmetry(dg);
+    if (max_trace < 1. + 2. * std::cos(bound) - 1e-12)
+      return bound;
     return angle(cubic_symmetry()[best] * dg);
   }
 
@@ -170,20 +199,8 @@ namespace qsmpm
   Rotation::closest_equivalent(const Tensor<2, 3> &g,
                                const Tensor<2, 3> &reference)
   {
-    const Tensor<2, 3> dg         = g * transpose(reference);
-    double             max_trace  = -2.;
-    unsigned int       best       = 0;
-    const auto        &operations = cubic_symmetry();
-    for (unsigned int s = 0; s < operations.size(); ++s)
-      {
-        const double t = trace(operations[s] * dg);
-        if (t > max_trace)
-          {
-            max_trace = t;
-            best      = s;
-          }
-      }
-    return operations[best] * g;
+    return cubic_symmetry()[closest_symmetry(g * transpose(reference)).first] *
+           g;
   }
 
 

@@ -142,7 +142,8 @@ namespace qsmpm
           for (unsigned int c = 0; c < n_cells; ++c)
             if (remaining[c] > 0 || c == s)
               {
-                const double a = Rotation::disorientation(centre[s], centre[c]);
+                const double a =
+                  Rotation::disorientation(centre[s], centre[c], threshold);
                 if (a < threshold)
                   neighbours[s].emplace_back(a, c);
               }

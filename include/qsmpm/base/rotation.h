@@ -67,6 +67,19 @@ namespace qsmpm
     disorientation(const Tensor<2, 3> &g_a, const Tensor<2, 3> &g_b);
 
     /**
+     * The same where it is less than @p bound (radians); elsewhere some
+     * value of at least @p bound, found without the angle itself: the
+     * largest trace over the symmetries, 1 + 2 cos(angle), decides (with a
+     * margin of round-off, inside which the angle is computed), which
+     * saves the arc tangent for most pairs of a search within a small
+     * bound.
+     */
+    static double
+    disorientation(const Tensor<2, 3> &g_a,
+                   const Tensor<2, 3> &g_b,
+                   const double        bound);
+
+    /**
      * The symmetry-equivalent S g of @p g (S cubic) closest to @p reference,
      * i.e. with the smallest rotation angle of S g reference^T.
      */
