@@ -155,6 +155,11 @@ namespace qsmpm
                                                 make_model,
                                                 material_id,
                                                 handover);
+              // What the test freed goes back to the system before the
+              // next one sets up beside the handed-over matrix and
+              // hierarchy (the polycrystal: a peak of 0.89 GB per rank
+              // instead of 0.94).
+              Utils::release_free_heap();
             }
           catch (const std::exception &exc)
             {
