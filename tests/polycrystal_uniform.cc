@@ -22,16 +22,11 @@
 //   once in groups of ranks (the default: on 2 ranks, three tests on
 //   each);
 // - the orientations are the same on every rank.
+#include "small_polycrystal.h"
 #include "tests.h"
 
-#include <filesystem>
 #include <qsmpm/base/rotation.h>
-#include <qsmpm/homogenization/columnar_voronoi.h>
-#include <qsmpm/homogenization/orientation_distribution.h>
 #include <qsmpm/homogenization/stiffness_bounds.h>
-#include <qsmpm/homogenization/texture_sampler.h>
-#include <qsmpm/homogenization/virtual_tests.h>
-#include <qsmpm/materials/cubic_elastic.h>
 
 using namespace qsmpm;
 
@@ -41,16 +36,11 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPILogInitAll                    log;
 
-  const unsigned int            n_grains = 40, cells = 12, ppd = 2;
-  const ColumnarVoronoi         grains(n_grains, {{0., 0.}}, {{1., 1.}}, 3);
-  const auto                    areas = grains.areas(cells * ppd, cells * ppd);
-  const OrientationDistribution odf(
-    (std::filesystem::path(__FILE__).parent_path() / ".." / "examples" /
-     "polycrystal" / "odf" / "uniform.txt")
-      .string());
-  const auto            texture   = TextureSampler(4000).assign(odf, areas, 3);
+  const SmallPolycrystal sample;
+  const unsigned int     cells    = SmallPolycrystal::cells;
+  const auto            &texture  = sample.texture;
   const auto            C_crystal = Rotation::cubic_stiffness(249., 155., 114.);
-  const StiffnessBounds bounds(C_crystal, texture.orientations, areas);
+  const StiffnessBounds bounds(C_crystal, texture.orientations, sample.areas);
 
   // Every rank must hold the same orientations.
   double sum = 0;
@@ -78,19 +68,13 @@ main(int argc, char *argv[])
         p.n_load_steps   = 1;
       }
     p.subdivisions            = {{cells, cells, 3}};
-    p.points_per_direction    = ppd;
+    p.points_per_direction    = SmallPolycrystal::ppd;
     p.solver.tolerance        = 1e-8;
     p.solver.residual_floor   = 0.;
     p.solver.linear_tolerance = 1e-8;
     p.output_directory        = "results";
     VirtualTests tests(p, comm);
-    tests.run([&]() {
-      auto m = std::make_unique<CubicElastic<3>>(249., 155., 114.);
-      m->set_orientation([&](const Point<3> &x) {
-        return texture.orientations[grains.grain(x)];
-      });
-      return std::unique_ptr<ConstitutiveModel<3>>(std::move(m));
-    });
+    tests.run(sample.model());
     return tests.stiffness_from_mean_strains();
   };
   const auto C   = run(MPI_COMM_WORLD);

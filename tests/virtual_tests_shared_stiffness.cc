@@ -19,14 +19,8 @@
 //   (difference 0) and C is the same to round-off (1e-12 relative, far
 //   below the solver tolerances of 1e-8: a preconditioner built for other
 //   constrained dofs would change the iterations and C by about those).
+#include "small_polycrystal.h"
 #include "tests.h"
-
-#include <filesystem>
-#include <qsmpm/homogenization/columnar_voronoi.h>
-#include <qsmpm/homogenization/orientation_distribution.h>
-#include <qsmpm/homogenization/texture_sampler.h>
-#include <qsmpm/homogenization/virtual_tests.h>
-#include <qsmpm/materials/cubic_elastic.h>
 
 using namespace qsmpm;
 
@@ -36,14 +30,8 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPILogInitAll                    log;
 
-  const unsigned int            n_grains = 40, cells = 12, ppd = 2;
-  const ColumnarVoronoi         grains(n_grains, {{0., 0.}}, {{1., 1.}}, 3);
-  const auto                    areas = grains.areas(cells * ppd, cells * ppd);
-  const OrientationDistribution odf(
-    (std::filesystem::path(__FILE__).parent_path() / ".." / "examples" /
-     "polycrystal" / "odf" / "uniform.txt")
-      .string());
-  const auto texture = TextureSampler(4000).assign(odf, areas, 3);
+  const SmallPolycrystal sample;
+  const unsigned int     cells = SmallPolycrystal::cells;
 
   struct Result
   {
@@ -59,19 +47,13 @@ main(int argc, char *argv[])
     p.test_groups             = test_groups;
     p.share_preconditioner    = share;
     p.subdivisions            = {{cells, cells, 3}};
-    p.points_per_direction    = ppd;
+    p.points_per_direction    = SmallPolycrystal::ppd;
     p.solver.tolerance        = 1e-8;
     p.solver.residual_floor   = 0.;
     p.solver.linear_tolerance = 1e-8;
     p.output_directory        = "results";
     VirtualTests tests(p, MPI_COMM_WORLD);
-    tests.run([&]() {
-      auto m = std::make_unique<CubicElastic<3>>(249., 155., 114.);
-      m->set_orientation([&](const Point<3> &x) {
-        return texture.orientations[grains.grain(x)];
-      });
-      return std::unique_ptr<ConstitutiveModel<3>>(std::move(m));
-    });
+    tests.run(sample.model());
     Result result;
     result.C = tests.stiffness();
     for (const auto &report : tests.reports())
