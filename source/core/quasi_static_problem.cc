@@ -287,7 +287,7 @@ namespace qsmpm
         const bool gimp = points().get_formulation().gimp();
         if (handover &&
             (handover->preconditioner->type() != preconditioner->type() ||
-             handover->gimp != gimp ||
+             handover->tangent->has_step_patterns() != gimp ||
              dealii::Utilities::MPI::min(
                handover->tangent->matrix().locally_owned_range_indices() ==
                    background_grid.locally_owned_dofs() ?
@@ -487,7 +487,6 @@ namespace qsmpm
     given->preconditioner =
       std::exchange(preconditioner, make_preconditioner());
     given->tangent_kind = preconditioner_tangent;
-    given->gimp         = points().get_formulation().gimp();
     given->constrained  = preconditioner_reuse.constrained_signature();
     preconditioner_reuse.reset();
     return given;

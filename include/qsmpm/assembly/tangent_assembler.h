@@ -114,6 +114,13 @@ namespace qsmpm
 
 
 
+    /// Whether the pattern is built in every assemble() (GIMP, reinit()).
+    bool
+    has_step_patterns() const
+    {
+      return pattern_per_step;
+    }
+
     /**
      * A number that changes whenever matrix() gets a new sparsity pattern
      * (in reinit(), and with GIMP in every assemble()): while it stays the

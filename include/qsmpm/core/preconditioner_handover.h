@@ -25,9 +25,8 @@ namespace qsmpm
     std::unique_ptr<TangentAssembler<dim>> tangent;
     std::unique_ptr<Preconditioner<dim>>   preconditioner;
     /// The tangent the matrix holds.
-    typename TangentAssembler<dim>::Tangent tangent_kind;
-    /// Whether the matrix has GIMP's pattern (built per step).
-    bool gimp = false;
+    typename TangentAssembler<dim>::Tangent tangent_kind =
+      TangentAssembler<dim>::Tangent::secant;
     /// The constrained degrees of freedom it was built for
     /// (PreconditionerReuse::constrained_signature()).
     std::array<double, 2> constrained{{-1., -1.}};
