@@ -405,6 +405,14 @@ namespace qsmpm
     double
     coupling_floor_factor() const;
 
+    /**
+     * Set du to the extrapolated first iterate of a step of load-factor
+     * increment @p dt from the last converged steps' increments (without
+     * the prescribed increments, which the caller distributes).
+     */
+    void
+    extrapolated_guess(const double dt);
+
     /// Commit du: point state, positions.
     void
     commit_step();
@@ -599,6 +607,10 @@ namespace qsmpm
     /// next step starts from the linear predictor).
     VectorType last_increment;
     double     last_load_increment = 0.;
+    /// The same for the step before it (0: none, or not a step the last
+    /// one followed from; extrapolated_guess()).
+    VectorType second_last_increment;
+    double     second_last_load_increment = 0.;
     VectorType R;
     VectorType f_ext;
     /// Reactions, load scale and step reports; checkpoints.
