@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <qsmpm/base/mpi_transport.h>
 #include <qsmpm/base/parameter_file.h>
 #include <qsmpm/base/utilities.h>
 
@@ -18,34 +19,9 @@ namespace qsmpm
 {
   namespace
   {
-    /**
-     * A process that no MPI launcher started (`./compact_tension b15.prm`)
-     * is a singleton: MPI_COMM_WORLD is this one process. Open MPI treats
-     * it as if it might grow, and MPI_Init pays for that twice:
-     * - It tries all its point-to-point layers, and the cm layer probes the
-     *   high-speed networks (libfabric, PSM). Such a process sends
-     *   messages only to itself, which the ob1 layer does, so it gets
-     *   OMPI_MCA_pml = ob1.
-     * - It starts a daemon (orted) beside itself, which MPI_Comm_spawn
-     *   would need; qsmpm never spawns, so it gets
-     *   OMPI_MCA_ess_singleton_isolated = 1 (no daemon).
-     * What each saves is measured in doc/benchmarks.md, "Start-up of a
-     * process without mpirun".
-     * Both are set before main() and with it MPI_Init(), unless the user has
-     * set them already. A process that mpirun, mpiexec or srun started (they
-     * set OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK) is left alone, and
-     * other MPI libraries ignore the variables.
-     */
-    [[maybe_unused]] const bool singleton_settings_chosen = [] {
-      for (const char *launched :
-           {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-        if (std::getenv(launched) != nullptr)
-          return false;
-      return setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0) == 0 &&
-             setenv("OMPI_MCA_ess_singleton_isolated",
-                    "1",
-                    /*overwrite=*/0) == 0;
-    }();
+    /// Open MPI's start-up settings, before main() and with it MPI_Init().
+    [[maybe_unused]] const Utils::MpiStartup mpi_startup_chosen =
+      Utils::choose_mpi_startup();
   } // namespace
 
 
