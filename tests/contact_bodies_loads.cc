@@ -62,6 +62,30 @@
 // once ("Surface tractions cannot be used with several bodies yet"); with only
 // that check lifted, the load of a point went to every body's field at its
 // cell's nodes (its components indexed past dim).
+//
+// 3. Loads on grid faces and nodes (ExternalForceAssembler divides a grid
+// node's force among the bodies' fields in proportion to their material
+// there): A [0, 1] (id 0) and B [1, 2] (id 1) fill the grid [0, 2] x [0, W],
+// h = 0.125, linear shape functions; A is held at x = 0 along x, both are
+// on rollers at y = 0.
+// One load step, from the points' regular places, where the one block's
+// stress under the tractions below is uniform (later steps move the points
+// off the grid's symmetry, and the stress is uniform only to the order of
+// the strain, with a shear along x = 1 that frictionless contact releases:
+// 1.5e-3 p after 4 steps).
+// a) Tractions on grid faces: (-p t, 0) on x = 2 (B's face only) and
+//    (0, -q t) on y = W, p = 10, q = 5; frictionless contact.
+//    The top face's node at x = 1 belongs to both blocks, and its vertical
+//    force divides between them; frictionless, they would slide along each
+//    other if it went to one field only. Known answer: every point's stress
+//    equals that of one block [0, 2] on one field under the same loads, to
+//    1e-6 of p; the reactions equal p W at x = 0 and q 2 at y = 0 to 1e-6.
+//    Before, such a run stopped at once ("Tractions on grid faces cannot be
+//    used with several bodies yet").
+// b) A point load (-P t, 0), P = 1, at the node (2, W / 2) of B's face,
+//    rough contact: the same against one block to 1e-6 of P / h, and
+//    the reaction at x = 0 equals P. On A's field (where the first field
+//    of a node took it) the load would be lost: B has the node's material.
 #include "tests.h"
 #include "two_blocks.h"
 
@@ -199,6 +223,92 @@ namespace
     result.all_steps = steps == 4;
     return result;
   }
+
+  // Part 3.
+  const double q = 5., P = 1.;
+
+  struct GridLoadRun
+  {
+    std::map<types::particle_index, std::array<double, 3>> stress;
+    Tensor<1, 2>                                           held, floor;
+    bool                                                   all_steps = false;
+  };
+
+  GridLoadRun
+  grid_load_run(const bool     two_bodies,
+                const Friction friction,
+                const bool     point)
+  {
+    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    set_up(problem,
+           two_bodies,
+           friction,
+           ShapeFunctions::linear,
+           1,
+           "bodies-loads-out");
+    problem.grid().make_box(Point<2>(),
+                            Point<2>(2., W),
+                            {{static_cast<unsigned int>(2. / h + 0.5),
+                              static_cast<unsigned int>(W / h + 0.5)}});
+    auto      &bcs  = problem.boundary_conditions();
+    const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+    bcs.add_dirichlet_boundary(0, {{true, false}}, zero);
+    bcs.add_dirichlet_boundary(2, {{false, true}}, zero);
+    if (point)
+      bcs.add_point_load(Point<2>(2., W / 2.), Tensor<1, 2>({-P, 0.}));
+    else
+      {
+        auto traction = std::make_shared<FunctionParser<2>>(2);
+        traction->initialize("x,y,t",
+                             "x > 2 - 1e-9 ? -p*t : 0; y > W - 1e-9 ? -q*t : 0",
+                             {{"p", p}, {"q", q}, {"W", W}},
+                             true);
+        bcs.add_traction(1, traction);
+        bcs.add_traction(3, traction);
+      }
+    make_points(
+      problem, [](const Point<2> &) { return true; }, two_bodies);
+    unsigned int steps = 0;
+    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
+      ++steps;
+      return true;
+    });
+    problem.run();
+
+    GridLoadRun result;
+    const auto &offsets = problem.points().get_offsets();
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
+          &particle.get_properties()[offsets.stress]);
+        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
+      }
+    result.held      = problem.reactions().at(0);
+    result.floor     = problem.reactions().at(1);
+    result.all_steps = steps == 1;
+    return result;
+  }
+
+  /// The largest difference of a point's stress between two runs (all
+  /// ranks; the partition is the same in both).
+  double
+  largest_stress_difference(
+    const std::map<types::particle_index, std::array<double, 3>> &a,
+    const std::map<types::particle_index, std::array<double, 3>> &b)
+  {
+    double difference = 0.;
+    for (const auto &[id, s] : a)
+      {
+        const auto found = b.find(id);
+        if (found == b.end())
+          difference = std::numeric_limits<double>::infinity();
+        else
+          for (unsigned int k = 0; k < 3; ++k)
+            difference =
+              std::max(difference, std::abs(s[k] - found->second[k]));
+      }
+    return Utilities::MPI::max(difference, MPI_COMM_WORLD);
+  }
 } // namespace
 
 int
@@ -286,4 +396,33 @@ main(int argc, char *argv[])
                 1e-6);
         }
     }
+
+  deallog << "3. Loads on grid faces and nodes" << std::endl;
+  {
+    const GridLoadRun one = grid_load_run(false, Friction::frictionless, false);
+    const GridLoadRun two = grid_load_run(true, Friction::frictionless, false);
+    check_that("  tractions: 1 step, one block and two",
+               one.all_steps && two.all_steps);
+    check("  max |stress - one block's| / p",
+          largest_stress_difference(two.stress, one.stress) / p,
+          1e-6);
+    check("  |reaction at x = 0| / (p W) - 1",
+          std::abs(two.held[0]) / (p * W) - 1.,
+          1e-6);
+    check("  |reaction at y = 0| / (2 q) - 1",
+          std::abs(two.floor[1]) / (2. * q) - 1.,
+          1e-6);
+  }
+  {
+    const GridLoadRun one = grid_load_run(false, Friction::rough, true);
+    const GridLoadRun two = grid_load_run(true, Friction::rough, true);
+    check_that("  point load: 1 step, one block and two",
+               one.all_steps && two.all_steps);
+    check("  max |stress - one block's| / (P / h)",
+          largest_stress_difference(two.stress, one.stress) / (P / h),
+          1e-6);
+    check("  |reaction at x = 0| / P - 1",
+          std::abs(two.held[0]) / P - 1.,
+          1e-6);
+  }
 }

@@ -1300,16 +1300,14 @@ namespace qsmpm
                            "before; change it before set_model()."));
     if (body_contact.enabled())
       {
-        // What acts on grid nodes or faces would have to be shared among
-        // the bodies' fields, and the pore pressure and path following
-        // are not written for several fields.
+        // Loads on grid nodes and faces are divided among the bodies'
+        // fields (ExternalForceAssembler); rigid plates, the pore pressure
+        // and path following are not written for several fields.
         const auto unsupported = [](const bool used, const std::string &what) {
           AssertThrow(!used,
                       ExcMessage("Contact between bodies/Bodies: " + what +
                                  " cannot be used with several bodies yet."));
         };
-        unsupported(!bcs.tractions().empty(), "Tractions on grid faces");
-        unsupported(!bcs.point_loads().empty(), "Point loads");
         // Rigid bodies and surface tractions act on each point through its
         // own body's field; a rigid body driven by a force adds an unknown
         // that is not written for several fields.

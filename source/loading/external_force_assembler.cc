@@ -36,10 +36,49 @@ namespace qsmpm
     f_ext = 0;
     if (boundary.body_force())
       add_body_force(cache, volume_offset, t, f_ext);
+    // With several bodies (a multi-field grid), what acts on a grid node
+    // goes to the fields of the bodies there.
+    TrilinosWrappers::MPI::Vector volumes;
+    if (grid.n_bodies() > 1 &&
+        (!boundary.tractions().empty() || !boundary.point_loads().empty()))
+      {
+        volumes.reinit(grid.locally_owned_dofs(),
+                       grid.locally_relevant_dofs(),
+                       grid.get_communicator());
+        volumes = cache.nodal_volumes(grid, volume_offset);
+      }
     if (!boundary.tractions().empty())
-      add_tractions(grid, t, f_ext);
-    add_point_loads(grid, t, f_ext);
+      add_tractions(grid, volumes, t, f_ext);
+    add_point_loads(grid, volumes, t, f_ext);
     f_ext.compress(VectorOperation::add);
+  }
+
+
+
+  // A grid node's force along d goes to the field of body b in proportion
+  // to b's material at the node, sum_p Omega_p N_i(x_p) over b's points
+  // (ShapeCache::nodal_volumes()): where one body touches a loaded face, it
+  // carries the load alone; a node where two bodies meet divides it as
+  // their material does. At a node without material the force stays on the
+  // first field, at a node that the step holds: the load is lost there, as
+  // on one field, and the equilibrium audit says so.
+  template <int dim>
+  double
+  ExternalForceAssembler<dim>::field_share(
+    const BackgroundGrid<dim>                  &grid,
+    const TrilinosWrappers::MPI::Vector        &volumes,
+    const std::vector<types::global_dof_index> &node_dofs,
+    const unsigned int                          component)
+  {
+    if (grid.n_bodies() == 1)
+      return 1.;
+    const unsigned int d     = component % dim;
+    double             total = 0.;
+    for (unsigned int b = 0; b < grid.n_bodies(); ++b)
+      total += volumes(node_dofs[b * dim + d]);
+    if (!(total > 0.))
+      return component < dim ? 1. : 0.;
+    return volumes(node_dofs[component]) / total;
   }
 
 
@@ -88,19 +127,22 @@ namespace qsmpm
   template <int dim>
   void
   ExternalForceAssembler<dim>::add_tractions(
-    const BackgroundGrid<dim>     &grid,
-    const double                   t,
-    TrilinosWrappers::MPI::Vector &f_ext) const
+    const BackgroundGrid<dim>           &grid,
+    const TrilinosWrappers::MPI::Vector &volumes,
+    const double                         t,
+    TrilinosWrappers::MPI::Vector       &f_ext) const
   {
-    const QGauss<dim - 1> face_quadrature(2);
-    FEFaceValues<dim>     fe_face(grid.get_mapping(),
+    const FiniteElement<dim>            &fe = grid.get_fe();
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    fe_face(grid.get_mapping(),
                               grid.get_fe(),
                               face_quadrature,
                               update_values | update_quadrature_points |
                                 update_JxW_values);
-    Vector<double>        traction(dim);
-    const unsigned int    dofs_per_cell = grid.get_fe().n_dofs_per_cell();
+    Vector<double>                       traction(dim);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    std::vector<types::global_dof_index> node_dofs(fe.n_components());
     std::vector<double>                  cell_force(dofs_per_cell);
     for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -122,12 +164,21 @@ namespace qsmpm
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
                         const unsigned int c =
-                          grid.get_fe().system_to_component_index(i).first;
+                          fe.system_to_component_index(i).first;
                         cell_force[i] +=
-                          traction[c] * fe_face.shape_value(i, q) * JxW;
+                          traction[c % dim] * fe_face.shape_value(i, q) * JxW;
                       }
                   }
                 cell->get_dof_indices(dofs);
+                if (grid.n_bodies() > 1)
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    {
+                      const auto [c, vertex] = fe.system_to_component_index(i);
+                      for (unsigned int k = 0; k < fe.n_components(); ++k)
+                        node_dofs[k] =
+                          dofs[fe.component_to_system_index(k, vertex)];
+                      cell_force[i] *= field_share(grid, volumes, node_dofs, c);
+                    }
                 f_ext.add(dofs, cell_force);
               }
   }
@@ -139,10 +190,13 @@ namespace qsmpm
   template <int dim>
   void
   ExternalForceAssembler<dim>::add_point_loads(
-    const BackgroundGrid<dim>     &grid,
-    const double                   t,
-    TrilinosWrappers::MPI::Vector &f_ext) const
+    const BackgroundGrid<dim>           &grid,
+    const TrilinosWrappers::MPI::Vector &volumes,
+    const double                         t,
+    TrilinosWrappers::MPI::Vector       &f_ext) const
   {
+    std::vector<types::global_dof_index> node_dofs(
+      grid.get_fe().n_components());
     for (const auto &[location, force] : boundary.point_loads())
       {
         bool found = false;
@@ -152,10 +206,13 @@ namespace qsmpm
               if (cell->vertex(v).distance(location) < 1e-10 * cell->diameter())
                 {
                   found = true;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    if (grid.locally_owned_dofs().is_element(
-                          cell->vertex_dof_index(v, d)))
-                      f_ext(cell->vertex_dof_index(v, d)) += t * force[d];
+                  for (unsigned int k = 0; k < node_dofs.size(); ++k)
+                    node_dofs[k] = cell->vertex_dof_index(v, k);
+                  for (unsigned int k = 0; k < node_dofs.size(); ++k)
+                    if (grid.locally_owned_dofs().is_element(node_dofs[k]))
+                      f_ext(node_dofs[k]) +=
+                        t * force[k % dim] *
+                        field_share(grid, volumes, node_dofs, k);
                   break;
                 }
         AssertThrow(dealii::Utilities::MPI::max(found ? 1 : 0,

@@ -481,37 +481,48 @@ namespace qsmpm
     // (or, with a threshold, the material volume sum_p Omega_p N_i(x_p) in
     // its support); the sum over ranks tells which nodes are inactive
     // everywhere.
+    if (min_nodal_volume > 0.)
+      return grid.dofs_at_most(nodal_volumes(grid, volume_offset, per_radian),
+                               min_nodal_volume);
     TrilinosWrappers::MPI::Vector count(grid.locally_owned_dofs(),
                                         grid.get_communicator());
-    if (min_nodal_volume > 0.)
-      {
-        std::vector<double> volume(max_dofs_per_group);
-        ValueBuffer         buffer;
-        for (unsigned int c = 0; c < n_cells(); ++c)
-          {
-            std::fill(volume.begin(), volume.begin() + n_dofs(c), 0.);
-            const auto &range = cell(c);
-            for (unsigned int p = range.first_point; p < range.end_point; ++p)
-              {
-                const double omega = properties(p)[volume_offset] /
-                                     (per_radian ? position(p)[0] : 1.);
-                const double         *N    = values(c, p, buffer);
-                const unsigned short *node = nodes(p);
-                for (unsigned int k = 0; k < stencil_size(p); ++k)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    volume[node[k] * dim + d] += omega * N[k];
-              }
-            count.add(n_dofs(c), global_dofs(c), volume.data());
-          }
-      }
-    else
-      {
-        std::vector<double> ones(max_dofs_per_group, 1.);
-        for (unsigned int c = 0; c < n_cells(); ++c)
-          count.add(n_dofs(c), global_dofs(c), ones.data());
-      }
+    std::vector<double>           ones(max_dofs_per_group, 1.);
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      count.add(n_dofs(c), global_dofs(c), ones.data());
     count.compress(VectorOperation::add);
-    return grid.dofs_at_most(count, min_nodal_volume);
+    return grid.dofs_at_most(count, 0.);
+  }
+
+
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ShapeCache<dim>::nodal_volumes(const BackgroundGrid<dim> &grid,
+                                 const unsigned int         volume_offset,
+                                 const bool                 per_radian) const
+  {
+    TrilinosWrappers::MPI::Vector volumes(grid.locally_owned_dofs(),
+                                          grid.get_communicator());
+    std::vector<double>           volume(max_dofs_per_group);
+    ValueBuffer                   buffer;
+    for (unsigned int c = 0; c < n_cells(); ++c)
+      {
+        std::fill(volume.begin(), volume.begin() + n_dofs(c), 0.);
+        const auto &range = cell(c);
+        for (unsigned int p = range.first_point; p < range.end_point; ++p)
+          {
+            const double omega =
+              properties(p)[volume_offset] / (per_radian ? position(p)[0] : 1.);
+            const double         *N    = values(c, p, buffer);
+            const unsigned short *node = nodes(p);
+            for (unsigned int k = 0; k < stencil_size(p); ++k)
+              for (unsigned int d = 0; d < dim; ++d)
+                volume[node[k] * dim + d] += omega * N[k];
+          }
+        volumes.add(n_dofs(c), global_dofs(c), volume.data());
+      }
+    volumes.compress(VectorOperation::add);
+    return volumes;
   }
 
 

@@ -19,7 +19,9 @@ namespace qsmpm
    * The body force is integrated with the points (and the ShapeCache of the
    * step), the tractions with Gauss quadrature over the faces of the
    * background grid. Tractions therefore assume that the loaded surface of
-   * the body coincides with a grid boundary.
+   * the body coincides with a grid boundary. With several bodies (a
+   * multi-field grid) the force of a grid node is divided among the fields
+   * of the bodies in proportion to their material at the node.
    */
   template <int dim>
   class ExternalForceAssembler
@@ -56,14 +58,30 @@ namespace qsmpm
                    const unsigned int             volume_offset,
                    const double                   t,
                    TrilinosWrappers::MPI::Vector &f_ext) const;
+    /// The loads on grid nodes; @p volumes: with several bodies, the
+    /// material of each body at each node (ghosted; field_share()).
     void
-    add_tractions(const BackgroundGrid<dim>     &grid,
-                  const double                   t,
-                  TrilinosWrappers::MPI::Vector &f_ext) const;
+    add_tractions(const BackgroundGrid<dim>           &grid,
+                  const TrilinosWrappers::MPI::Vector &volumes,
+                  const double                         t,
+                  TrilinosWrappers::MPI::Vector       &f_ext) const;
     void
-    add_point_loads(const BackgroundGrid<dim>     &grid,
-                    const double                   t,
-                    TrilinosWrappers::MPI::Vector &f_ext) const;
+    add_point_loads(const BackgroundGrid<dim>           &grid,
+                    const TrilinosWrappers::MPI::Vector &volumes,
+                    const double                         t,
+                    TrilinosWrappers::MPI::Vector       &f_ext) const;
+
+    /**
+     * The part of a grid node's force that goes to the field of the
+     * component @p component of the node, whose dofs (all components) are
+     * @p node_dofs: 1 on one field; with several bodies that body's share
+     * of the material at the node (see the implementation).
+     */
+    static double
+    field_share(const BackgroundGrid<dim>                  &grid,
+                const TrilinosWrappers::MPI::Vector        &volumes,
+                const std::vector<types::global_dof_index> &node_dofs,
+                const unsigned int                          component);
 
     const BoundaryDescriptor<dim> &boundary;
     bool                           axisymmetric = false;

@@ -320,6 +320,19 @@ namespace qsmpm
                         const bool                 per_radian = false) const;
 
     /**
+     * The material in the support of each degree of freedom, sum_p Omega_p
+     * N_i(x_p) over the points of the dof's body (the same for each
+     * direction of a node), with the point volumes at offset
+     * @p volume_offset of the point properties (per radian divided by r_p
+     * with @p per_radian, as above); summed over the ranks, on the locally
+     * owned dofs.
+     */
+    TrilinosWrappers::MPI::Vector
+    nodal_volumes(const BackgroundGrid<dim> &grid,
+                  const unsigned int         volume_offset,
+                  const bool                 per_radian = false) const;
+
+    /**
      * Interpolate a nodal vector (ghosted storage @p local_values) at point
      * @p p of group @p c: sum_k v_k N_k(x_p).
      */
