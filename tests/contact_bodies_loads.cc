@@ -86,6 +86,17 @@
 //    rough contact: the same against one block to 1e-6 of P / h, and
 //    the reaction at x = 0 equals P. On A's field (where the first field
 //    of a node took it) the load would be lost: B has the node's material.
+//
+// 4. A rigid body driven by a force (RigidBody::load_direction): A [0, 1]
+// and B [1, 2] side by side, touching, grid [0, 2.25] x [0, W], held and on
+// rollers as in part 2, frictionless contact between them; a frictionless
+// half-space x > 2 (outward normal -x) pushes on B's end with the force
+// F t = p W t along -x, its motion along x unknown, 4 steps. Known answer:
+// pressed together the blocks are one: every point's stress that of one
+// block [0, 2] on one field pushed by the same body, to 1e-6 of p, and the
+// material's force on the body and the reaction at x = 0 equal F, to 1e-6.
+// Before, such a run stopped at once ("Rigid bodies driven by a force
+// (Load direction) cannot be used with several bodies yet").
 #include "tests.h"
 #include "two_blocks.h"
 
@@ -289,6 +300,58 @@ namespace
     return result;
   }
 
+  // Part 4: the stresses, the reaction at x = 0 and the body's force.
+  struct PushRun
+  {
+    std::map<types::particle_index, std::array<double, 3>> stress;
+    double reaction = 0., body_force = 0.;
+    bool   all_steps = false;
+  };
+
+  PushRun
+  push_run(const bool two_bodies)
+  {
+    QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
+    set_up(problem,
+           two_bodies,
+           Friction::frictionless,
+           ShapeFunctions::linear,
+           4,
+           "bodies-loads-out");
+    make_grid(problem, 2.25);
+    RigidBody<2> pusher;
+    pusher.name              = "pusher";
+    pusher.shape             = RigidBody<2>::Shape::half_space;
+    pusher.point             = Point<2>(2., 0.);
+    pusher.normal[0]         = -1.;
+    pusher.load_direction[0] = -1.;
+    auto load                = std::make_shared<FunctionParser<2>>(1);
+    load->initialize("x,y,t", "F*t", {{"F", p * W}}, true);
+    pusher.load = load;
+    problem.boundary_conditions().add_rigid_body(pusher);
+    make_points(
+      problem, [](const Point<2> &x) { return x[0] < 2.; }, two_bodies);
+    unsigned int steps = 0;
+    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
+      ++steps;
+      return true;
+    });
+    problem.run();
+
+    PushRun     result;
+    const auto &offsets = problem.points().get_offsets();
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
+          &particle.get_properties()[offsets.stress]);
+        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
+      }
+    result.reaction   = problem.reactions().at(0)[0];
+    result.body_force = problem.rigid_body_loads().at(0).force[0];
+    result.all_steps  = steps == 4;
+    return result;
+  }
+
   /// The largest difference of a point's stress between two runs (all
   /// ranks; the partition is the same in both).
   double
@@ -423,6 +486,22 @@ main(int argc, char *argv[])
           1e-6);
     check("  |reaction at x = 0| / P - 1",
           std::abs(two.held[0]) / P - 1.,
+          1e-6);
+  }
+
+  deallog << "4. A rigid body driven by a force pushes B onto A" << std::endl;
+  {
+    const PushRun one = push_run(false);
+    const PushRun two = push_run(true);
+    check_that("  4 steps, one block and two", one.all_steps && two.all_steps);
+    check("  max |stress - one block's| / p",
+          largest_stress_difference(two.stress, one.stress) / p,
+          1e-6);
+    check("  |force on the body| / F - 1",
+          std::abs(two.body_force) / (p * W) - 1.,
+          1e-6);
+    check("  |reaction at x = 0| / F - 1",
+          std::abs(two.reaction) / (p * W) - 1.,
           1e-6);
   }
 }

@@ -1308,15 +1308,8 @@ namespace qsmpm
                       ExcMessage("Contact between bodies/Bodies: " + what +
                                  " cannot be used with several bodies yet."));
         };
-        // Rigid bodies and surface tractions act on each point through its
-        // own body's field; a rigid body driven by a force adds an unknown
-        // that is not written for several fields.
-        unsupported(std::any_of(bcs.rigid_bodies().begin(),
-                                bcs.rigid_bodies().end(),
-                                [](const auto &body) {
-                                  return body.load_driven();
-                                }),
-                    "Rigid bodies driven by a force (Load direction)");
+        // Rigid bodies (also those driven by a force) and surface
+        // tractions act on each point through its own body's field.
         unsupported(!bcs.rigid_plates().empty(), "Rigid plates");
         unsupported(!background_grid.periodic_directions().empty(),
                     "A periodic grid (Geometry/Periodic)");

@@ -42,10 +42,14 @@ namespace qsmpm
     if (grid.n_bodies() > 1 &&
         (!boundary.tractions().empty() || !boundary.point_loads().empty()))
       {
+        const TrilinosWrappers::MPI::Vector owned =
+          cache.nodal_volumes(grid, volume_offset);
         volumes.reinit(grid.locally_owned_dofs(),
                        grid.locally_relevant_dofs(),
                        grid.get_communicator());
-        volumes = cache.nodal_volumes(grid, volume_offset);
+        // A copy, which imports the ghost values (assigning the temporary
+        // would move its layout, without ghosts, into volumes).
+        volumes = owned;
       }
     if (!boundary.tractions().empty())
       add_tractions(grid, volumes, t, f_ext);
