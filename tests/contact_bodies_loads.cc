@@ -82,7 +82,16 @@
 //    1e-6 of p; the reactions equal p W at x = 0 and q 2 at y = 0 to 1e-6.
 //    Before, such a run stopped at once ("Tractions on grid faces cannot be
 //    used with several bodies yet").
-// b) A point load (-P t, 0), P = 1, at the node (2, W / 2) of B's face,
+// b) The top a rigid plate (add_rigid_plate(), loaded by the traction on
+//    it), which carries the load q t over B's half of the top only, rough
+//    contact: the plate's nodes move as one on both blocks' fields, and
+//    spread the load over A as well. Known answer: every point's stress that
+//    of one block under the same plate, to 1e-6 of p, and the reaction at
+//    y = 0 that of the load, q. (With the plate on the first field only,
+//    B's top would bend under its load: the stress differs by 0.44 p.)
+//    Before, such a run stopped at once ("Rigid plates cannot be used with
+//    several bodies yet").
+// c) A point load (-P t, 0), P = 1, at the node (2, W / 2) of B's face,
 //    rough contact: the same against one block to 1e-6 of P / h, and
 //    the reaction at x = 0 equals P. On A's field (where the first field
 //    of a node took it) the load would be lost: B has the node's material.
@@ -248,7 +257,8 @@ namespace
   GridLoadRun
   grid_load_run(const bool     two_bodies,
                 const Friction friction,
-                const bool     point)
+                const bool     point,
+                const bool     plate = false)
   {
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     set_up(problem,
@@ -270,12 +280,17 @@ namespace
     else
       {
         auto traction = std::make_shared<FunctionParser<2>>(2);
+        // Under the plate, the load of B's half only.
         traction->initialize("x,y,t",
-                             "x > 2 - 1e-9 ? -p*t : 0; y > W - 1e-9 ? -q*t : 0",
+                             std::string("x > 2 - 1e-9 ? -p*t : 0; ") +
+                               (plate ? "y > W - 1e-9 && x > 1 ? -q*t : 0" :
+                                        "y > W - 1e-9 ? -q*t : 0"),
                              {{"p", p}, {"q", q}, {"W", W}},
                              true);
         bcs.add_traction(1, traction);
         bcs.add_traction(3, traction);
+        if (plate)
+          bcs.add_rigid_plate(3);
       }
     make_points(
       problem, [](const Point<2> &) { return true; }, two_bodies);
@@ -474,6 +489,18 @@ main(int argc, char *argv[])
           1e-6);
     check("  |reaction at y = 0| / (2 q) - 1",
           std::abs(two.floor[1]) / (2. * q) - 1.,
+          1e-6);
+  }
+  {
+    const GridLoadRun one = grid_load_run(false, Friction::rough, false, true);
+    const GridLoadRun two = grid_load_run(true, Friction::rough, false, true);
+    check_that("  the top a rigid plate: 1 step, one block and two",
+               one.all_steps && two.all_steps);
+    check("  max |stress - one block's| / p",
+          largest_stress_difference(two.stress, one.stress) / p,
+          1e-6);
+    check("  |reaction at y = 0| / q - 1",
+          std::abs(two.floor[1]) / q - 1.,
           1e-6);
   }
   {

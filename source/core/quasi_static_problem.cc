@@ -1301,8 +1301,9 @@ namespace qsmpm
     if (body_contact.enabled())
       {
         // Loads on grid nodes and faces are divided among the bodies'
-        // fields (ExternalForceAssembler); rigid plates, the pore pressure
-        // and path following are not written for several fields.
+        // fields (ExternalForceAssembler), and a rigid plate moves all of
+        // them; the pore pressure and path following are not written for
+        // several fields.
         const auto unsupported = [](const bool used, const std::string &what) {
           AssertThrow(!used,
                       ExcMessage("Contact between bodies/Bodies: " + what +
@@ -1310,7 +1311,6 @@ namespace qsmpm
         };
         // Rigid bodies (also those driven by a force) and surface
         // tractions act on each point through its own body's field.
-        unsupported(!bcs.rigid_plates().empty(), "Rigid plates");
         unsupported(!background_grid.periodic_directions().empty(),
                     "A periodic grid (Geometry/Periodic)");
         unsupported(pore_pressure != nullptr, "A pore fluid");

@@ -51,15 +51,19 @@ namespace qsmpm
             for (unsigned int k = 0; k < ids.size(); ++k)
               if (cell->face(f)->boundary_id() == ids[k])
                 // Boundary id 2d + s is the face of the box normal to
-                // direction d (BackgroundGrid::make_box()).
+                // direction d (BackgroundGrid::make_box()). With several
+                // bodies the plate moves the field of each body there (a
+                // field without material at a node is held).
                 for (unsigned int v = 0; v < cell->face(f)->n_vertices(); ++v)
-                  {
-                    const types::global_dof_index dof =
-                      cell->face(f)->vertex_dof_index(v, ids[k] / 2);
-                    if (owned.is_element(dof) &&
-                        !constraints.is_constrained(dof))
-                      dofs[k].push_back(dof);
-                  }
+                  for (unsigned int b = 0; b < grid.n_bodies(); ++b)
+                    {
+                      const types::global_dof_index dof =
+                        cell->face(f)->vertex_dof_index(v,
+                                                        b * dim + ids[k] / 2);
+                      if (owned.is_element(dof) &&
+                          !constraints.is_constrained(dof))
+                        dofs[k].push_back(dof);
+                    }
     for (unsigned int k = 0; k < ids.size(); ++k)
       {
         std::sort(dofs[k].begin(), dofs[k].end());
