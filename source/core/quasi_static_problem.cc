@@ -1301,9 +1301,9 @@ namespace qsmpm
     if (body_contact.enabled())
       {
         // Loads on grid nodes and faces are divided among the bodies'
-        // fields (ExternalForceAssembler), and a rigid plate moves all of
-        // them; the pore pressure and path following are not written for
-        // several fields.
+        // fields (ExternalForceAssembler), a rigid plate moves all of them,
+        // and periodicity ties each; the pore pressure and path following
+        // are not written for several fields.
         const auto unsupported = [](const bool used, const std::string &what) {
           AssertThrow(!used,
                       ExcMessage("Contact between bodies/Bodies: " + what +
@@ -1311,8 +1311,6 @@ namespace qsmpm
         };
         // Rigid bodies (also those driven by a force) and surface
         // tractions act on each point through its own body's field.
-        unsupported(!background_grid.periodic_directions().empty(),
-                    "A periodic grid (Geometry/Periodic)");
         unsupported(pore_pressure != nullptr, "A pore fluid");
         unsupported(prm_values.material_points.ghost_penalty > 0.,
                     "The ghost penalty");

@@ -180,7 +180,8 @@ namespace qsmpm
                        boundary.macroscopic_gradient(t_old)) :
         Tensor<2, dim>();
 
-    // Node and component of every locally relevant degree of freedom.
+    // Node and direction of every locally relevant degree of freedom (of
+    // every body's field: periodicity ties each of them).
     std::unordered_map<types::global_dof_index,
                        std::pair<Point<dim>, unsigned int>>
       nodes;
@@ -188,9 +189,9 @@ namespace qsmpm
     for (const auto &cell : grid.get_dof_handler().active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int c = 0; c < grid.n_node_dofs(); ++c)
             nodes.emplace(cell->vertex_dof_index(v, c),
-                          std::make_pair(cell->vertex(v), c));
+                          std::make_pair(cell->vertex(v), c % dim));
     auto node = [&](const types::global_dof_index dof) {
       const auto it = nodes.find(dof);
       AssertThrow(it != nodes.end(),
