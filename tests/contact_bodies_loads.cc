@@ -201,15 +201,14 @@ namespace
   // Part 2.
   const double p = 10.;
 
-  struct Stresses
+  struct TractionRun
   {
-    /// Each point's stress (xx, yy, xy), by its index.
-    std::map<types::particle_index, std::array<double, 3>> stress;
-    double                                                 reaction  = 0.;
-    bool                                                   all_steps = false;
+    Stresses stress;
+    double   reaction  = 0.;
+    bool     all_steps = false;
   };
 
-  Stresses
+  TractionRun
   traction_run(const bool           two_bodies,
                const Friction       friction,
                const ShapeFunctions shape_functions)
@@ -224,21 +223,10 @@ namespace
       "end", [](const Point<2> &x) { return x[0] > 2. - 1e-9; }, traction);
     make_points(
       problem, [](const Point<2> &x) { return x[0] < 2.; }, two_bodies);
-    unsigned int steps = 0;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      ++steps;
-      return true;
-    });
-    problem.run();
+    const unsigned int steps = run_counting_steps(problem);
 
-    Stresses    result;
-    const auto &offsets = problem.points().get_offsets();
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
-          &particle.get_properties()[offsets.stress]);
-        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
-      }
+    TractionRun result;
+    result.stress    = point_stresses(problem);
     result.reaction  = problem.reactions().at(0)[0];
     result.all_steps = steps == 4;
     return result;
@@ -249,9 +237,9 @@ namespace
 
   struct GridLoadRun
   {
-    std::map<types::particle_index, std::array<double, 3>> stress;
-    Tensor<1, 2>                                           held, floor;
-    bool                                                   all_steps = false;
+    Stresses     stress;
+    Tensor<1, 2> held, floor;
+    bool         all_steps = false;
   };
 
   GridLoadRun
@@ -294,21 +282,10 @@ namespace
       }
     make_points(
       problem, [](const Point<2> &) { return true; }, two_bodies);
-    unsigned int steps = 0;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      ++steps;
-      return true;
-    });
-    problem.run();
+    const unsigned int steps = run_counting_steps(problem);
 
     GridLoadRun result;
-    const auto &offsets = problem.points().get_offsets();
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
-          &particle.get_properties()[offsets.stress]);
-        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
-      }
+    result.stress    = point_stresses(problem);
     result.held      = problem.reactions().at(0);
     result.floor     = problem.reactions().at(1);
     result.all_steps = steps == 1;
@@ -318,9 +295,9 @@ namespace
   // Part 4: the stresses, the reaction at x = 0 and the body's force.
   struct PushRun
   {
-    std::map<types::particle_index, std::array<double, 3>> stress;
-    double reaction = 0., body_force = 0.;
-    bool   all_steps = false;
+    Stresses stress;
+    double   reaction = 0., body_force = 0.;
+    bool     all_steps = false;
   };
 
   PushRun
@@ -346,47 +323,16 @@ namespace
     problem.boundary_conditions().add_rigid_body(pusher);
     make_points(
       problem, [](const Point<2> &x) { return x[0] < 2.; }, two_bodies);
-    unsigned int steps = 0;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      ++steps;
-      return true;
-    });
-    problem.run();
+    const unsigned int steps = run_counting_steps(problem);
 
-    PushRun     result;
-    const auto &offsets = problem.points().get_offsets();
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
-          &particle.get_properties()[offsets.stress]);
-        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
-      }
+    PushRun result;
+    result.stress     = point_stresses(problem);
     result.reaction   = problem.reactions().at(0)[0];
     result.body_force = problem.rigid_body_loads().at(0).force[0];
     result.all_steps  = steps == 4;
     return result;
   }
 
-  /// The largest difference of a point's stress between two runs (all
-  /// ranks; the partition is the same in both).
-  double
-  largest_stress_difference(
-    const std::map<types::particle_index, std::array<double, 3>> &a,
-    const std::map<types::particle_index, std::array<double, 3>> &b)
-  {
-    double difference = 0.;
-    for (const auto &[id, s] : a)
-      {
-        const auto found = b.find(id);
-        if (found == b.end())
-          difference = std::numeric_limits<double>::infinity();
-        else
-          for (unsigned int k = 0; k < 3; ++k)
-            difference =
-              std::max(difference, std::abs(s[k] - found->second[k]));
-      }
-    return Utilities::MPI::max(difference, MPI_COMM_WORLD);
-  }
 } // namespace
 
 int
@@ -446,29 +392,17 @@ main(int argc, char *argv[])
   for (const auto &[functions, name] : shape_functions)
     {
       deallog << name << std::endl;
-      const Stresses single =
+      const TractionRun single =
         traction_run(false, Friction::frictionless, functions);
       check_that("  one block: 4 steps", single.all_steps);
       for (const auto &[friction, friction_name] : frictions)
         {
           deallog << "  " << friction_name << " contact" << std::endl;
-          const Stresses r = traction_run(true, friction, functions);
+          const TractionRun r = traction_run(true, friction, functions);
           check_that("    4 steps", r.all_steps);
-          // Each point's stress against the one block's (this rank's
-          // points; the partition is the same in both runs).
-          double difference = 0.;
-          for (const auto &[id, s] : r.stress)
-            {
-              const auto found = single.stress.find(id);
-              if (found == single.stress.end())
-                difference = std::numeric_limits<double>::infinity();
-              else
-                for (unsigned int k = 0; k < 3; ++k)
-                  difference =
-                    std::max(difference, std::abs(s[k] - found->second[k]));
-            }
-          difference = Utilities::MPI::max(difference, MPI_COMM_WORLD) / p;
-          check("    max |stress - one block's| / p", difference, 1e-6);
+          check("    max |stress - one block's| / p",
+                largest_stress_difference(r.stress, single.stress) / p,
+                1e-6);
           check("    |reaction at x = 0| / (p W) - 1",
                 std::abs(r.reaction) / (p * W) - 1.,
                 1e-6);

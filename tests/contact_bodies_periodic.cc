@@ -22,10 +22,6 @@
 #include "tests.h"
 #include "two_blocks.h"
 
-#include <limits>
-#include <map>
-#include <qsmpm/base/utilities.h>
-
 using namespace qsmpm;
 using namespace two_blocks;
 
@@ -36,8 +32,8 @@ namespace
 
   struct Run
   {
-    std::map<types::particle_index, std::array<double, 3>> stress;
-    bool                                                   converged = false;
+    Stresses stress;
+    bool     converged = false;
   };
 
   Run
@@ -67,21 +63,10 @@ namespace
     bcs.add_traction(3, traction);
     make_points(
       problem, [](const Point<2> &) { return true; }, two_bodies, 1);
-    unsigned int steps = 0;
-    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
-      ++steps;
-      return true;
-    });
-    problem.run();
+    const unsigned int steps = run_counting_steps(problem);
 
-    Run         result;
-    const auto &offsets = problem.points().get_offsets();
-    for (const auto &particle : problem.points().get_particle_handler())
-      {
-        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
-          &particle.get_properties()[offsets.stress]);
-        result.stress[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
-      }
+    Run result;
+    result.stress    = point_stresses(problem);
     result.converged = steps == 1;
     return result;
   }
@@ -113,17 +98,7 @@ main(int argc, char *argv[])
   check("two layers: max |sigma - uniform state| / q",
         uniform_state_error(two) / q,
         1e-8);
-  double difference = 0.;
-  for (const auto &[id, s] : two.stress)
-    {
-      const auto found = one.stress.find(id);
-      if (found == one.stress.end())
-        difference = std::numeric_limits<double>::infinity();
-      else
-        for (unsigned int k = 0; k < 3; ++k)
-          difference = std::max(difference, std::abs(s[k] - found->second[k]));
-    }
   check("two layers: max |sigma - one body's| / q",
-        Utilities::MPI::max(difference, MPI_COMM_WORLD) / q,
+        largest_stress_difference(two.stress, one.stress) / q,
         1e-8);
 }

@@ -6,7 +6,14 @@
 #ifndef qsmpm_tests_two_blocks_h
 #define qsmpm_tests_two_blocks_h
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <limits>
+#include <map>
 #include <memory>
+#include <qsmpm/base/utilities.h>
 #include <qsmpm/core/quasi_static_problem.h>
 #include <qsmpm/materials/linear_elastic.h>
 #include <string>
@@ -86,6 +93,57 @@ namespace two_blocks
                           [two_bodies, a](const Point<2> &x) {
                             return two_bodies && x[a] >= 1. ? 1u : 0u;
                           });
+  }
+
+  /// Run @p problem; the number of load steps it accepted.
+  inline unsigned int
+  run_counting_steps(QuasiStaticProblem<2> &problem)
+  {
+    unsigned int steps = 0;
+    problem.set_step_callback([&](const QuasiStaticProblem<2>::StepReport &) {
+      ++steps;
+      return true;
+    });
+    problem.run();
+    return steps;
+  }
+
+  /// Each point's stress (xx, yy, xy), by particle id (this rank's points).
+  using Stresses = std::map<types::particle_index, std::array<double, 3>>;
+
+  /// The stresses of the points of @p problem.
+  inline Stresses
+  point_stresses(const QuasiStaticProblem<2> &problem)
+  {
+    Stresses    result;
+    const auto &offsets = problem.points().get_offsets();
+    for (const auto &particle : problem.points().get_particle_handler())
+      {
+        const SymmetricTensor<2, 2> s = qsmpm::Utils::read_symmetric<2>(
+          &particle.get_properties()[offsets.stress]);
+        result[particle.get_id()] = {{s[0][0], s[1][1], s[0][1]}};
+      }
+    return result;
+  }
+
+  /// The largest difference of a point's stress component between two
+  /// runs (all ranks; the partition is the same in both): infinite if a
+  /// point of @p a is not among those of @p b.
+  inline double
+  largest_stress_difference(const Stresses &a, const Stresses &b)
+  {
+    double difference = 0.;
+    for (const auto &[id, s] : a)
+      {
+        const auto found = b.find(id);
+        if (found == b.end())
+          difference = std::numeric_limits<double>::infinity();
+        else
+          for (unsigned int k = 0; k < 3; ++k)
+            difference =
+              std::max(difference, std::abs(s[k] - found->second[k]));
+      }
+    return Utilities::MPI::max(difference, MPI_COMM_WORLD);
   }
 } // namespace two_blocks
 
