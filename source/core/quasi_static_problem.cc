@@ -1302,15 +1302,16 @@ namespace qsmpm
       {
         // Loads on grid nodes and faces are divided among the bodies'
         // fields (ExternalForceAssembler), a rigid plate moves all of them,
-        // and periodicity ties each; the pore pressure and path following
-        // are not written for several fields.
+        // periodicity ties each, and rigid bodies (also those driven by a
+        // force) and surface tractions act on each point through its own
+        // body's field. The pore pressure, path following and the ghost
+        // penalty (whose faces are chosen over all of a cell's dofs) are
+        // not written for several fields.
         const auto unsupported = [](const bool used, const std::string &what) {
           AssertThrow(!used,
                       ExcMessage("Contact between bodies/Bodies: " + what +
                                  " cannot be used with several bodies yet."));
         };
-        // Rigid bodies (also those driven by a force) and surface
-        // tractions act on each point through its own body's field.
         unsupported(pore_pressure != nullptr, "A pore fluid");
         unsupported(prm_values.material_points.ghost_penalty > 0.,
                     "The ghost penalty");
