@@ -8,7 +8,7 @@
 //  - contact between bodies given wrongly (one body, an id that is no
 //    number or in two bodies, points of no body, a negative friction
 //    coefficient) or with what it does not
-//    take (the ghost penalty), a region expression that is
+//    take (a pore fluid), a region expression that is
 //    none,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points; also one whose
@@ -312,13 +312,10 @@ main(int argc, char *argv[])
             "Contact between bodies",
             two_bodies + "  set Bodies = 0; 2\nend\n" + run_briefly + "end\n",
             /*run=*/true);
-  try_input("contact between bodies with the ghost penalty",
+  try_input("contact between bodies with a pore fluid",
             "Contact between bodies",
-            two_bodies + "  set Bodies = 0; 1\nend\n" + run_briefly +
-              "end\n"
-              "subsection Material points\n"
-              "  set Ghost penalty = 1e-4\n"
-              "end\n",
+            two_bodies + "  set Bodies = 0; 1\nend\n" + run_briefly + "end\n" +
+              pore_fluid + "end\n",
             /*run=*/true);
   // The contact example's sliding blocks (contact.prm, sliding_blocks())
   // with cpGIMP and at most one solve per step: in step 7, the first in

@@ -32,43 +32,68 @@ namespace qsmpm
                                                     volume_offset,
                                                     0.25 * h_dim,
                                                     axisymmetric);
-    std::vector<types::global_dof_index> dofs(grid.get_fe().n_dofs_per_cell()),
-      neighbor_dofs(dofs.size());
-    const auto any_in = [&](const auto &cell, const IndexSet &set) {
+    // With several bodies (BackgroundGrid::set_n_bodies()) each body has
+    // its own field, and the choice is made for each: a face is penalized
+    // in a body's field where both cells carry that body's material at all
+    // their nodes and one of them is cut by it. Over all fields at once
+    // every cell near another body would count as one without material.
+    const FESystem<dim> &fe       = grid.get_fe();
+    const unsigned int   n        = fe.n_dofs_per_cell();
+    const unsigned int   n_fields = grid.n_bodies();
+    AssertThrow(n_fields <= 8 * sizeof(unsigned int),
+                ExcMessage("The ghost penalty takes at most " +
+                           std::to_string(8 * sizeof(unsigned int)) +
+                           " bodies."));
+    std::vector<unsigned int> field(n);
+    for (unsigned int i = 0; i < n; ++i)
+      field[i] = fe.system_to_component_index(i).first / dim;
+    std::vector<types::global_dof_index> dofs(n), neighbor_dofs(n);
+    // Bit b: the cell has a dof of field b in @p set.
+    const auto fields_in = [&](const auto &cell, const IndexSet &set) {
       cell->get_dof_indices(dofs);
-      for (const auto dof : dofs)
-        if (set.is_element(dof))
-          return true;
-      return false;
+      unsigned int mask = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        if (set.is_element(dofs[i]))
+          mask |= 1u << field[i];
+      return mask;
     };
+    const unsigned int all_fields =
+      n_fields == 8 * sizeof(unsigned int) ? ~0u : (1u << n_fields) - 1u;
 
-    // The faces: between two such cells of which one is cut,
-    // each once (from the cell with the smaller id; a ghost neighbour's
-    // rank takes the faces where its cell is the smaller).
-    std::vector<
-      std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
-      penalized;
+    // The faces: between two such cells of which one is cut, each once
+    // (from the cell with the smaller id; a ghost neighbour's rank takes the
+    // faces where its cell is the smaller), with the fields penalized.
+    struct Face
+    {
+      typename DoFHandler<dim>::active_cell_iterator cell;
+      unsigned int                                   face;
+      unsigned int                                   fields;
+    };
+    std::vector<Face> penalized;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        if (!cell->is_locally_owned() || any_in(cell, empty))
+        if (!cell->is_locally_owned())
           continue;
-        const bool cell_cut = any_in(cell, weak);
+        const unsigned int full = all_fields & ~fields_in(cell, empty);
+        if (full == 0)
+          continue;
+        const unsigned int cut = fields_in(cell, weak);
         for (const unsigned int f : cell->face_indices())
           {
             if (cell->at_boundary(f))
               continue;
             const auto neighbor = cell->neighbor(f);
-            if (neighbor->is_artificial() || !(cell->id() < neighbor->id()) ||
-                any_in(neighbor, empty) ||
-                !(cell_cut || any_in(neighbor, weak)))
+            if (neighbor->is_artificial() || !(cell->id() < neighbor->id()))
               continue;
-            penalized.emplace_back(cell, f);
+            const unsigned int fields = full & ~fields_in(neighbor, empty) &
+                                        (cut | fields_in(neighbor, weak));
+            if (fields != 0)
+              penalized.push_back({cell, f, fields});
           }
       }
 
     // g = gamma E_s h int_F [[grad du . n]] . [[grad v . n]] on each face,
     // from both cells' gradients at the face's Gauss points.
-    const FESystem<dim>  &fe = grid.get_fe();
     const QGauss<dim - 1> quadrature(2);
     FEFaceValues<dim>     here(grid.get_mapping(),
                            fe,
@@ -81,7 +106,6 @@ namespace qsmpm
                             fe,
                             quadrature,
                             update_gradients);
-    const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> local(2 * n, 2 * n);
     clear();
     std::vector<types::global_dof_index> local_dofs(2 * n);
@@ -89,7 +113,7 @@ namespace qsmpm
     std::vector<unsigned int>            component(2 * n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = component[n + i] = fe.system_to_component_index(i).first;
-    for (const auto &[cell, f] : penalized)
+    for (const auto &[cell, f, fields] : penalized)
       {
         const auto neighbor = cell->neighbor(f);
         here.reinit(cell, f);
@@ -115,7 +139,8 @@ namespace qsmpm
               (axisymmetric ? here.quadrature_point(q)[0] / mid_radius : 1.);
             for (unsigned int i = 0; i < 2 * n; ++i)
               for (unsigned int j = 0; j < 2 * n; ++j)
-                if (component[i] == component[j])
+                if (component[i] == component[j] &&
+                    (fields & (1u << field[i % n])) != 0)
                   local(i, j) += weight * jump[i] * jump[j];
           }
         add(local_dofs, local);

@@ -1304,17 +1304,12 @@ namespace qsmpm
         // fields (ExternalForceAssembler), a rigid plate moves all of them,
         // periodicity ties each, and rigid bodies (also those driven by a
         // force) and surface tractions act on each point through its own
-        // body's field. The pore pressure, path following and the ghost
-        // penalty (whose faces are chosen over all of a cell's dofs) are
-        // not written for several fields.
-        const auto unsupported = [](const bool used, const std::string &what) {
-          AssertThrow(!used,
-                      ExcMessage("Contact between bodies/Bodies: " + what +
-                                 " cannot be used with several bodies yet."));
-        };
-        unsupported(pore_pressure != nullptr, "A pore fluid");
-        unsupported(prm_values.material_points.ghost_penalty > 0.,
-                    "The ghost penalty");
+        // body's field; the ghost penalty chooses its faces in each
+        // field by that body's material. The pore pressure and path
+        // following are not written for several fields.
+        AssertThrow(pore_pressure == nullptr,
+                    ExcMessage("Contact between bodies/Bodies: a pore fluid "
+                               "cannot be used with several bodies yet."));
       }
     const bool from_checkpoint = run_state.resuming();
     if (from_checkpoint)

@@ -34,6 +34,10 @@ namespace qsmpm
    * that gamma has no units. Bilinear and trilinear cells have no jumps of
    * higher normal derivatives, so the first one is all there is.
    *
+   * With several bodies (contact between bodies, each body with its own
+   * field on the grid) the faces are chosen for each field by that body's
+   * material alone, and the penalty acts on that field only.
+   *
    * The residual of a step becomes R(du) - G du; the preconditioner's
    * matrix K + G (TangentAssembler::assemble() adds it, LocalStiffness
    * applies it).
