@@ -213,9 +213,12 @@ namespace qsmpm
                                              surface_tractions);
       }
     const Formulation &formulation = prm_values.material_points.formulation;
-    AssertThrow(!formulation.axisymmetric || !pore_fluid.enabled,
-                ExcMessage("Material points: <Axisymmetric = true> is not "
-                           "available with a pore fluid."));
+    AssertThrow(!formulation.axisymmetric ||
+                  pore_fluid.drained_surface_region.empty(),
+                ExcMessage("Pore fluid: <Drained surface region> is not "
+                           "available with Material points/Axisymmetric = "
+                           "true (a load on the body's surface); drain "
+                           "through grid faces (Drained boundaries)."));
     AssertThrow(formulation.move_points || !body_contact.enabled(),
                 ExcMessage("Material points: <Move points = false> is not "
                            "available with contact between bodies, whose "

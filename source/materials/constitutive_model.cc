@@ -273,6 +273,17 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  ConstitutiveModel<dim>::initial_hoop_stress(
+    const SymmetricTensor<2, 3> *sigma0,
+    ArrayView<const double>) const
+  {
+    return sigma0 != nullptr ? (*sigma0)[2][2] : 0.;
+  }
+
+
+
+  template <int dim>
   bool
   ConstitutiveModel<dim>::supports_axisymmetry() const
   {

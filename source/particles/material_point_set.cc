@@ -127,7 +127,8 @@ namespace qsmpm
         "the volume change included); small strain: "
         "models linear elastic (not plane stress) and the "
         "plasticity models (von Mises, Drucker-Prager, Mohr-Coulomb, "
-        "modified Cam clay); finite strain: the plasticity models. Hold u_r = "
+        "modified Cam clay), also under a pore fluid (drained through grid "
+        "faces); finite strain: the plasticity models. Hold u_r = "
         "0 on the axis r = 0 if the body reaches it.",
         Patterns::Bool());
       prm.add_parameter("Update volumes",
@@ -569,8 +570,9 @@ namespace qsmpm
                                    p.material_id,
                                    initial_stress ? &sigma0 : nullptr,
                                    state);
-            // The out-of-plane entry is the hoop stress.
-            initial_hoop_stresses[i] = sigma0[2][2];
+            initial_hoop_stresses[i] =
+              model.initial_hoop_stress(initial_stress ? &sigma0 : nullptr,
+                                        state);
           }
       }
     catch (const std::exception &exc)

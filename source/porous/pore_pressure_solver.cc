@@ -318,6 +318,7 @@ namespace qsmpm
     fixed_stress.resize(n_points);
     stabilization.resize(n_points);
     finite_strain                  = points.get_formulation().finite_strain();
+    axisymmetric                   = points.get_formulation().axisymmetric;
     const bool   constant_mobility = parameters.mobility_factor == "1";
     const double h                 = grid.min_cell_size();
     cell_size                      = h;
@@ -730,11 +731,13 @@ namespace qsmpm
           face_values.reinit(cell, f);
           for (const unsigned int q : face_values.quadrature_point_indices())
             {
-              const double flux =
-                boundary_flux.value(face_values.quadrature_point(q));
+              const Point<dim> &x    = face_values.quadrature_point(q);
+              const double      flux = boundary_flux.value(x);
+              // Axisymmetric: per radian, r dGamma.
+              const double area =
+                face_values.JxW(q) * (axisymmetric ? x[0] : 1.);
               for (unsigned int i = 0; i < cell_rhs.size(); ++i)
-                cell_rhs(i) -= dt * flux * face_values.shape_value(i, q) *
-                               face_values.JxW(q);
+                cell_rhs(i) -= dt * flux * face_values.shape_value(i, q) * area;
             }
         }
   }
@@ -774,7 +777,17 @@ namespace qsmpm
             // The volume change of the step over the volume at its start:
             // tr(grad du) at small strain, det(I + grad du) - 1 at finite
             // strain (and its linearization at du = 0, tr(grad du), for
-            // the coupling alone).
+            // the coupling alone). Axisymmetric, the hoop strain du_r / r
+            // joins the trace, the hoop stretch 1 + du_r / r the
+            // determinant (r the point's radius at the step's start, as in
+            // QuasiStaticResidual).
+            double hoop = 0.;
+            if (axisymmetric)
+              {
+                for (unsigned int k = 0; k < n; ++k)
+                  hoop += N[k] * du[local[nodes[k] * dim]];
+                hoop /= cache.position(p)[0];
+              }
             double eps_v = 0.;
             if (finite_strain && !coupling_only)
               {
@@ -782,12 +795,15 @@ namespace qsmpm
                 for (unsigned int k = 0; k < n; ++k)
                   for (unsigned int d = 0; d < dim; ++d)
                     delta_F[d] += du[local[nodes[k] * dim + d]] * gradN[k];
-                eps_v = determinant(delta_F) - 1.;
+                eps_v = determinant(delta_F) * (1. + hoop) - 1.;
               }
             else
-              for (unsigned int k = 0; k < n; ++k)
-                for (unsigned int d = 0; d < dim; ++d)
-                  eps_v += gradN[k][d] * du[local[nodes[k] * dim + d]];
+              {
+                eps_v = hoop;
+                for (unsigned int k = 0; k < n; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    eps_v += gradN[k][d] * du[local[nodes[k] * dim + d]];
+              }
             // The coupling B du, or the iterate's fixed-stress storage
             // less the skeleton's volume change.
             const double source =

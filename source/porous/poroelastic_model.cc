@@ -186,6 +186,72 @@ namespace qsmpm
 
 
   template <int dim>
+  double
+  PoroelasticModel<dim>::initial_hoop_stress(
+    const SymmetricTensor<2, 3> *sigma0,
+    ArrayView<const double>      state) const
+  {
+    return skeleton_model->initial_hoop_stress(
+             sigma0, ArrayView<const double>(state.data(), n_skeleton)) -
+           b * p_initial;
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::supports_axisymmetry() const
+  {
+    return skeleton_model->supports_axisymmetry();
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::update_stress_axisymmetric(
+    const PointState<dim>         &old,
+    const double                   old_hoop_stress,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment,
+    SymmetricTensor<2, dim>       &stress,
+    double                        &hoop_stress,
+    ArrayView<double>              new_state) const
+  {
+    skeleton_model->update_stress_axisymmetric(
+      skeleton_state(old),
+      old_hoop_stress + b * old.state[n_skeleton],
+      strain_increment,
+      hoop_strain_increment,
+      stress,
+      hoop_stress,
+      ArrayView<double>(new_state.data(), n_skeleton));
+    const double p = old.state[n_skeleton + 1];
+    stress -= b * p * unit_symmetric_tensor<dim>();
+    hoop_stress -= b * p;
+    write_pressure_state(old, new_state);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, 3>
+  PoroelasticModel<dim>::consistent_tangent_axisymmetric(
+    const PointState<dim>         &old,
+    const double                   old_hoop_stress,
+    const SymmetricTensor<2, dim> &strain_increment,
+    const double                   hoop_strain_increment) const
+  {
+    return skeleton_model->consistent_tangent_axisymmetric(
+      skeleton_state(old),
+      old_hoop_stress + b * old.state[n_skeleton],
+      strain_increment,
+      hoop_strain_increment);
+  }
+
+
+
+  template <int dim>
   bool
   PoroelasticModel<dim>::supports_finite_strain() const
   {

@@ -106,6 +106,16 @@ namespace qsmpm
                    ArrayView<double>            state) const;
 
     /**
+     * Axisymmetric kinematics: the hoop stress a point starts from, given
+     * the initial stress @p sigma0 (or none) and the state that
+     * initial_stress() wrote. Default: sigma0's out-of-plane entry, or
+     * zero.
+     */
+    virtual double
+    initial_hoop_stress(const SymmetricTensor<2, 3> *sigma0,
+                        ArrayView<const double>      state) const;
+
+    /**
      * Whether the stress is the committed one plus an increment that
      * depends on the committed state only (LinearElastic, CubicElastic,
      * Umat at small strain), so that any committed stress is a valid start.

@@ -362,6 +362,9 @@ namespace qsmpm
     FunctionParser<1> mobility_factor;
     /// Whether the points' kinematics is finite strain.
     bool finite_strain = false;
+    /// Whether the kinematics is axisymmetric (r, z): the points' volumes
+    /// are per radian, r dA, and the volume change has the hoop strain.
+    bool axisymmetric = false;
     /// set_drained_surface() (invalid: none).
     unsigned int drained_surface = numbers::invalid_unsigned_int;
     const SurfaceTractions<dim> *surface_tractions = nullptr;

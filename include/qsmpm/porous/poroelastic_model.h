@@ -114,6 +114,38 @@ namespace qsmpm
       const PointState<dim>         &old,
       const SymmetricTensor<2, dim> &strain_increment) const override;
 
+    /// The skeleton's initial hoop stress less b p_0.
+    double
+    initial_hoop_stress(const SymmetricTensor<2, 3> *sigma0,
+                        ArrayView<const double>      state) const override;
+
+    /// The skeleton's.
+    bool
+    supports_axisymmetry() const override;
+
+    /**
+     * The skeleton's update with the effective hoop stress
+     * sigma'_tt = sigma_tt + b p beside the in-plane one; the pressure of
+     * the current iterate acts on the new hoop stress as on the normal
+     * in-plane ones.
+     */
+    void
+    update_stress_axisymmetric(const PointState<dim>         &old,
+                               const double                   old_hoop_stress,
+                               const SymmetricTensor<2, dim> &strain_increment,
+                               const double             hoop_strain_increment,
+                               SymmetricTensor<2, dim> &stress,
+                               double                  &hoop_stress,
+                               ArrayView<double> new_state) const override;
+
+    /// The skeleton's, at the effective stresses.
+    SymmetricTensor<4, 3>
+    consistent_tangent_axisymmetric(
+      const PointState<dim>         &old,
+      const double                   old_hoop_stress,
+      const SymmetricTensor<2, dim> &strain_increment,
+      const double                   hoop_strain_increment) const override;
+
     /// The skeleton's.
     bool
     supports_finite_strain() const override;
