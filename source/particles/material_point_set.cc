@@ -127,8 +127,8 @@ namespace qsmpm
         "the volume change included); small strain: "
         "models linear elastic (not plane stress) and the "
         "plasticity models (von Mises, Drucker-Prager, Mohr-Coulomb, "
-        "modified Cam clay), also under a pore fluid (drained through grid "
-        "faces); finite strain: the plasticity models. Hold u_r = "
+        "modified Cam clay); finite strain: the plasticity models; both "
+        "also under a pore fluid (drained through grid faces). Hold u_r = "
         "0 on the axis r = 0 if the body reaches it.",
         Patterns::Bool());
       prm.add_parameter("Update volumes",

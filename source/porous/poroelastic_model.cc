@@ -31,6 +31,7 @@ namespace qsmpm
     fields.push_back({"pore_pressure_gradient_iterate", dim});
     fields.push_back({"initial_total_stress",
                       SymmetricTensor<2, dim>::n_independent_components});
+    fields.push_back({"hoop_stretch", 1});
     return fields;
   }
 
@@ -47,8 +48,9 @@ namespace qsmpm
       x, material_id, id, ArrayView<double>(state.data(), n_skeleton));
     for (unsigned int k = n_skeleton; k < state.size(); ++k)
       state[k] = 0.;
-    state[n_skeleton]     = p_initial;
-    state[n_skeleton + 1] = p_initial;
+    state[n_skeleton]            = p_initial;
+    state[n_skeleton + 1]        = p_initial;
+    state[hoop_stretch_offset()] = 1.;
   }
 
 
@@ -247,6 +249,62 @@ namespace qsmpm
       old_hoop_stress + b * old.state[n_skeleton],
       strain_increment,
       hoop_strain_increment);
+  }
+
+
+
+  template <int dim>
+  bool
+  PoroelasticModel<dim>::supports_axisymmetric_finite_strain() const
+  {
+    return skeleton_model->supports_axisymmetric_finite_strain();
+  }
+
+
+
+  template <int dim>
+  void
+  PoroelasticModel<dim>::update_kirchhoff_stress_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics,
+    SymmetricTensor<2, dim>           &tau,
+    double                            &tau_hoop,
+    ArrayView<double>                  new_state) const
+  {
+    skeleton_model->update_kirchhoff_stress_axisymmetric(
+      skeleton_state(old),
+      kinematics,
+      tau,
+      tau_hoop,
+      ArrayView<double>(new_state.data(), n_skeleton));
+    write_pressure_state(old, new_state);
+    const double hoop_stretch =
+      old.state[hoop_stretch_offset()] * kinematics.delta_hoop_stretch;
+    new_state[hoop_stretch_offset()] = hoop_stretch;
+    const double pressure_stress =
+      determinant(kinematics.F) * hoop_stretch * b * old.state[n_skeleton + 1];
+    tau -= pressure_stress * unit_symmetric_tensor<dim>();
+    tau_hoop -= pressure_stress;
+  }
+
+
+
+  template <int dim>
+  Tensor<4, 3>
+  PoroelasticModel<dim>::kirchhoff_tangent_axisymmetric(
+    const PointState<dim>             &old,
+    const FiniteStrainKinematics<dim> &kinematics) const
+  {
+    Tensor<4, 3> c =
+      skeleton_model->kirchhoff_tangent_axisymmetric(skeleton_state(old),
+                                                     kinematics);
+    const double pressure_stress =
+      determinant(kinematics.F) * old.state[hoop_stretch_offset()] *
+      kinematics.delta_hoop_stretch * b * old.state[n_skeleton + 1];
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int k = 0; k < 3; ++k)
+        c[i][i][k][k] -= pressure_stress;
+    return c;
   }
 
 

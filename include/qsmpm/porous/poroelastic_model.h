@@ -64,6 +64,15 @@ namespace qsmpm
       return n_skeleton + 2 + 2 * dim;
     }
 
+    /// The offset of the total hoop stretch r / R in the state
+    /// (axisymmetric at finite strain; one otherwise).
+    unsigned int
+    hoop_stretch_offset() const
+    {
+      return initial_stress_offset() +
+             SymmetricTensor<2, dim>::n_independent_components;
+    }
+
     double
     biot_coefficient() const
     {
@@ -145,6 +154,30 @@ namespace qsmpm
       const double                   old_hoop_stress,
       const SymmetricTensor<2, dim> &strain_increment,
       const double                   hoop_strain_increment) const override;
+
+    /// The skeleton's.
+    bool
+    supports_axisymmetric_finite_strain() const override;
+
+    /**
+     * The skeleton's update; the pressure of the current iterate acts on
+     * the new Kirchhoff stress as -J b p, the hoop entry included, with J
+     * the in-plane det F times the total hoop stretch r / R (which the
+     * state keeps).
+     */
+    void
+    update_kirchhoff_stress_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics,
+      SymmetricTensor<2, dim>           &tau,
+      double                            &tau_hoop,
+      ArrayView<double>                  new_state) const override;
+
+    /// The skeleton's less J b p on every c_iikk (the hoop index 2 too).
+    Tensor<4, 3>
+    kirchhoff_tangent_axisymmetric(
+      const PointState<dim>             &old,
+      const FiniteStrainKinematics<dim> &kinematics) const override;
 
     /// The skeleton's.
     bool
