@@ -753,34 +753,10 @@ namespace qsmpm
         contact_iterations = 0;
         return false;
       }
-    // Bodies that pull on each other come apart, bodies that would overlap
-    // touch: the step is solved again with the new contact set.
-    if (body_contact.enabled() && [&] {
-          // The contact forces are the residual of the tied dofs before
-          // condensation, which adds them to the other body's rows.
-          VectorType R_raw(R);
-          residual->evaluate(du, R_raw);
-          return body_contact.update(background_grid, du, R_raw);
-        }())
-      {
-        if (++contact_iterations >= prm_values.body_contact.max_iterations)
-          {
-            contact_iterations = 0;
-            report.converged   = false;
-            report.failure =
-              "the contact set between the bodies changed "
-              "in every one of " +
-              std::to_string(prm_values.body_contact.max_iterations) +
-              " solves (Contact between bodies/Max contact "
-              "iterations)";
-            return false;
-          }
-        progress << "  contact between bodies changed, solving again"
-                 << std::endl;
-        keep_contact_set = true;
-        return advance(t_old, t_new, report);
-      }
-    contact_iterations = 0;
+    if (contact_set_changed(report))
+      return advance(t_old, t_new, report);
+    if (!report.converged)
+      return false;
     audit_equilibrium(t_new, report);
     if (extrapolate)
       {
@@ -978,10 +954,6 @@ namespace qsmpm
                                                   double            &t_new,
                                                   double            &force_new)
   {
-    AssertThrow(!body_contact.enabled(),
-                ExcMessage("Contact between bodies/Bodies: path following "
-                           "(Load stepping/Control) cannot be used with "
-                           "several bodies yet."));
     const double t_old = stepper.current();
     AssertThrow(!pore_pressure,
                 ExcMessage("Pore fluid: path following (Load stepping/"
@@ -1056,11 +1028,55 @@ namespace qsmpm
       op.reject_inverted_points(evaluation, report);
       preconditioner_reuse.count_use(report, solver_parameters());
     }
-    t_new = t_old + delta_lambda;
+    t_new            = t_old + delta_lambda;
+    keep_contact_set = false;
+    if (!report.converged)
+      {
+        contact_iterations = 0;
+        return false;
+      }
+    if (contact_set_changed(report))
+      return advance_path_following(stepper, report, t_new, force_new);
     if (!report.converged)
       return false;
     audit_equilibrium(t_new, report);
     commit_step();
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  QuasiStaticProblem<dim>::contact_set_changed(NewtonReport &report)
+  {
+    // Bodies that pull on each other come apart, bodies that would overlap
+    // touch: the step is solved again with the new contact set.
+    if (!body_contact.enabled() || ![&] {
+          // The contact forces are the residual of the tied dofs before
+          // condensation, which adds them to the other body's rows.
+          VectorType R_raw(R);
+          residual->evaluate(du, R_raw);
+          return body_contact.update(background_grid, du, R_raw);
+        }())
+      {
+        contact_iterations = 0;
+        return false;
+      }
+    if (++contact_iterations >= prm_values.body_contact.max_iterations)
+      {
+        contact_iterations = 0;
+        report.converged   = false;
+        report.failure =
+          "the contact set between the bodies changed "
+          "in every one of " +
+          std::to_string(prm_values.body_contact.max_iterations) +
+          " solves (Contact between bodies/Max contact "
+          "iterations)";
+        return false;
+      }
+    progress << "  contact between bodies changed, solving again" << std::endl;
+    keep_contact_set = true;
     return true;
   }
 
@@ -1308,8 +1324,9 @@ namespace qsmpm
         // periodicity ties each, and rigid bodies (also those driven by a
         // force) and surface tractions act on each point through its own
         // body's field; the ghost penalty chooses its faces in each
-        // field by that body's material. The pore pressure and path
-        // following are not written for several fields.
+        // field by that body's material, and path following solves a step
+        // again where the contact set changed, as load control does. The
+        // pore pressure is not written for several fields.
         AssertThrow(pore_pressure == nullptr,
                     ExcMessage("Contact between bodies/Bodies: a pore fluid "
                                "cannot be used with several bodies yet."));

@@ -216,6 +216,17 @@ namespace qsmpm
                            double            &t_new,
                            double            &force_new);
 
+    /**
+     * After a converged solve with contact between bodies: whether the
+     * contact set changed (bodies that pull on each other come apart,
+     * bodies that would overlap touch), so that the step must be solved
+     * again with the new one (#keep_contact_set is then true). If it
+     * changed in <Max contact iterations> solves in a row, @p report is
+     * marked as not converged instead, and false returned.
+     */
+    bool
+    contact_set_changed(NewtonReport &report);
+
     /// Reports of the accepted steps of run().
     const std::vector<StepReport> &
     step_reports() const;
