@@ -86,6 +86,30 @@ namespace
     return mu * B / (b * b * (lambda_ + mu));
   }
 
+  /// Run @p problem from the parameter text @p prm (the driver's route).
+  template <int dim>
+  void
+  run_text(QuasiStaticProblem<dim> &problem, const std::string &prm)
+  {
+    ParameterHandler handler;
+    handler.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+    QuasiStaticProblem<dim>::Parameters::declare_parameters(handler);
+    handler.parse_input_from_string(prm);
+    problem.pcout().set_condition(false);
+    problem.initialize(handler);
+    problem.run();
+  }
+
+  /// Where the points of a saturated body keep their pore pressure.
+  template <int dim>
+  unsigned int
+  pressure_offset(const MaterialPointSet<dim> &points)
+  {
+    return points.get_offsets().state +
+           dynamic_cast<const PoroelasticModel<dim> &>(points.get_model())
+             .pressure_offset();
+  }
+
   enum class Case
   {
     elastic,
@@ -146,14 +170,8 @@ namespace
     if (which == Case::elastic)
       prm << "subsection Load stepping\n  set Number of steps = 1\nend\n";
 
-    ParameterHandler handler;
-    handler.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(handler);
-    handler.parse_input_from_string(prm.str());
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(handler);
-    problem.run();
+    run_text(problem, prm.str());
 
     const double       A = lame_A(undrained ? lambda + M : lambda); // b = 1
     const double       p_exact = -2. * M * A;
@@ -161,11 +179,7 @@ namespace
     const auto        &points  = problem.points();
     const auto        &offsets = points.get_offsets();
     const unsigned int p_offset =
-      which == Case::elastic ?
-        0 :
-        offsets.state +
-          dynamic_cast<const PoroelasticModel<2> &>(points.get_model())
-            .pressure_offset();
+      which == Case::elastic ? 0 : pressure_offset(points);
     Errors errors;
     double volume = 0.;
     for (const auto &particle : points.get_particle_handler())
@@ -239,21 +253,12 @@ namespace
         << "subsection Load stepping\n  set Number of steps = 10\nend\n"
         << "subsection Output\n  set Interval = 0\n"
         << "  set Directory = axisymmetric-consolidation-out\nend\n";
-    ParameterHandler handler;
-    handler.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<dim>::Parameters::declare_parameters(handler);
-    handler.parse_input_from_string(prm.str());
     QuasiStaticProblem<dim> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(handler);
-    problem.run();
+    run_text(problem, prm.str());
 
-    const auto        &points  = problem.points();
-    const auto        &offsets = points.get_offsets();
-    const unsigned int p_offset =
-      offsets.state +
-      dynamic_cast<const PoroelasticModel<dim> &>(points.get_model())
-        .pressure_offset();
+    const auto           &points   = problem.points();
+    const auto           &offsets  = points.get_offsets();
+    const unsigned int    p_offset = pressure_offset(points);
     std::array<double, 4> lowest, highest;
     lowest.fill(std::numeric_limits<double>::max());
     highest.fill(-std::numeric_limits<double>::max());
@@ -317,23 +322,14 @@ namespace
         << "  set Final load factor = 100\nend\n"
         << "subsection Output\n  set Interval = 0\n"
         << "  set Directory = axisymmetric-consolidation-out\nend\n";
-    ParameterHandler handler;
-    handler.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(handler);
-    handler.parse_input_from_string(prm.str());
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    problem.initialize(handler);
-    problem.run();
+    run_text(problem, prm.str());
 
-    const auto        &points  = problem.points();
-    const auto        &offsets = points.get_offsets();
-    const unsigned int p_offset =
-      offsets.state +
-      dynamic_cast<const PoroelasticModel<2> &>(points.get_model())
-        .pressure_offset();
-    const double scale = q0 * r_in / kappa;
-    double       sum = 0., volume = 0.;
+    const auto        &points   = problem.points();
+    const auto        &offsets  = points.get_offsets();
+    const unsigned int p_offset = pressure_offset(points);
+    const double       scale    = q0 * r_in / kappa;
+    double             sum = 0., volume = 0.;
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();

@@ -48,19 +48,39 @@ namespace
     bool     converged = false;
   };
 
+  /// two_blocks::set_up() for one frictionless load step, linear
+  /// functions, and the ghost penalty @p gamma.
+  void
+  set_up(QuasiStaticProblem<2> &problem,
+         const bool             two_bodies,
+         const double           gamma)
+  {
+    two_blocks::set_up(problem,
+                       two_bodies,
+                       Friction::frictionless,
+                       ShapeFunctions::linear,
+                       1,
+                       "bodies-ghost-out");
+    problem.parameters().material_points.ghost_penalty = gamma;
+  }
+
+  /// Run @p problem: whether its one step converged, and the stresses.
+  Run
+  run_one_step(QuasiStaticProblem<2> &problem)
+  {
+    Run result;
+    result.converged = run_counting_steps(problem) == 1;
+    result.stress    = point_stresses(problem);
+    return result;
+  }
+
   /// Part 1: the two cantilevers, on @p two_bodies fields, penalty
   /// @p gamma.
   Run
   cantilevers(const bool two_bodies, const double gamma)
   {
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    set_up(problem,
-           two_bodies,
-           Friction::frictionless,
-           ShapeFunctions::linear,
-           1,
-           "bodies-ghost-out");
-    problem.parameters().material_points.ghost_penalty = gamma;
+    set_up(problem, two_bodies, gamma);
     problem.grid().make_box(Point<2>(), Point<2>(18. * h, 4. * h), {{18, 4}});
     auto      &bcs  = problem.boundary_conditions();
     const auto zero = std::make_shared<Functions::ZeroFunction<2>>(2);
@@ -73,10 +93,7 @@ namespace
       problem,
       [](const Point<2> &x) { return x[0] < 6.5 * h || x[0] > 11.5 * h; },
       two_bodies);
-    Run result;
-    result.converged = run_counting_steps(problem) == 1;
-    result.stress    = point_stresses(problem);
-    return result;
+    return run_one_step(problem);
   }
 
   /// Part 2: the blocks in contact across the middle of a cell, on
@@ -85,13 +102,7 @@ namespace
   blocks_in_contact(const bool two_bodies, const double gamma)
   {
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    set_up(problem,
-           two_bodies,
-           Friction::frictionless,
-           ShapeFunctions::linear,
-           1,
-           "bodies-ghost-out");
-    problem.parameters().material_points.ghost_penalty  = gamma;
+    set_up(problem, two_bodies, gamma);
     problem.parameters().material_points.update_volumes = false;
     const double x0                                     = 1. - 4.5 * h;
     problem.grid().make_box(Point<2>(x0, 0.),
@@ -106,10 +117,7 @@ namespace
     bcs.add_traction(1, traction);
     make_points(
       problem, [](const Point<2> &) { return true; }, two_bodies);
-    Run result;
-    result.converged = run_counting_steps(problem) == 1;
-    result.stress    = point_stresses(problem);
-    return result;
+    return run_one_step(problem);
   }
 
   /// The largest stress component of @p r (all ranks).

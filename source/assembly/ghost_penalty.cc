@@ -44,9 +44,11 @@ namespace qsmpm
                 ExcMessage("The ghost penalty takes at most " +
                            std::to_string(8 * sizeof(unsigned int)) +
                            " bodies."));
-    std::vector<unsigned int> field(n);
+    // The component of each dof of the two cells of a face; its field is
+    // component / dim.
+    std::vector<unsigned int> component(2 * n);
     for (unsigned int i = 0; i < n; ++i)
-      field[i] = fe.system_to_component_index(i).first / dim;
+      component[i] = component[n + i] = fe.system_to_component_index(i).first;
     std::vector<types::global_dof_index> dofs(n), neighbor_dofs(n);
     // Bit b: the cell has a dof of field b in @p set.
     const auto fields_in = [&](const auto &cell, const IndexSet &set) {
@@ -54,7 +56,7 @@ namespace qsmpm
       unsigned int mask = 0;
       for (unsigned int i = 0; i < n; ++i)
         if (set.is_element(dofs[i]))
-          mask |= 1u << field[i];
+          mask |= 1u << (component[i] / dim);
       return mask;
     };
     const unsigned int all_fields =
@@ -110,9 +112,6 @@ namespace qsmpm
     clear();
     std::vector<types::global_dof_index> local_dofs(2 * n);
     std::vector<double>                  jump(2 * n);
-    std::vector<unsigned int>            component(2 * n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = component[n + i] = fe.system_to_component_index(i).first;
     for (const auto &[cell, f, fields] : penalized)
       {
         const auto neighbor = cell->neighbor(f);
@@ -140,7 +139,7 @@ namespace qsmpm
             for (unsigned int i = 0; i < 2 * n; ++i)
               for (unsigned int j = 0; j < 2 * n; ++j)
                 if (component[i] == component[j] &&
-                    (fields & (1u << field[i % n])) != 0)
+                    (fields & (1u << (component[i] / dim))) != 0)
                   local(i, j) += weight * jump[i] * jump[j];
           }
         add(local_dofs, local);

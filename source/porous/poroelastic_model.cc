@@ -3,6 +3,23 @@
 
 namespace qsmpm
 {
+  namespace
+  {
+    /// The pore pressure's share -J b p of the Kirchhoff stress: J = det F
+    /// times the total hoop stretch @p hoop_stretch (one in plane strain
+    /// and 3D), @p bp = b p.
+    template <int dim>
+    double
+    pressure_kirchhoff(const FiniteStrainKinematics<dim> &kinematics,
+                       const double                       hoop_stretch,
+                       const double                       bp)
+    {
+      return determinant(kinematics.F) * hoop_stretch * bp;
+    }
+  } // namespace
+
+
+
   template <int dim>
   PoroelasticModel<dim>::PoroelasticModel(
     std::unique_ptr<ConstitutiveModel<dim>> skeleton,
@@ -282,7 +299,9 @@ namespace qsmpm
       old.state[hoop_stretch_offset()] * kinematics.delta_hoop_stretch;
     new_state[hoop_stretch_offset()] = hoop_stretch;
     const double pressure_stress =
-      determinant(kinematics.F) * hoop_stretch * b * old.state[n_skeleton + 1];
+      pressure_kirchhoff(kinematics,
+                         hoop_stretch,
+                         b * old.state[n_skeleton + 1]);
     tau -= pressure_stress * unit_symmetric_tensor<dim>();
     tau_hoop -= pressure_stress;
   }
@@ -299,8 +318,10 @@ namespace qsmpm
       skeleton_model->kirchhoff_tangent_axisymmetric(skeleton_state(old),
                                                      kinematics);
     const double pressure_stress =
-      determinant(kinematics.F) * old.state[hoop_stretch_offset()] *
-      kinematics.delta_hoop_stretch * b * old.state[n_skeleton + 1];
+      pressure_kirchhoff(kinematics,
+                         old.state[hoop_stretch_offset()] *
+                           kinematics.delta_hoop_stretch,
+                         b * old.state[n_skeleton + 1]);
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int k = 0; k < 3; ++k)
         c[i][i][k][k] -= pressure_stress;
@@ -331,7 +352,7 @@ namespace qsmpm
                                             tau,
                                             ArrayView<double>(new_state.data(),
                                                               n_skeleton));
-    tau -= determinant(kinematics.F) * b * old.state[n_skeleton + 1] *
+    tau -= pressure_kirchhoff(kinematics, 1., b * old.state[n_skeleton + 1]) *
            unit_symmetric_tensor<dim>();
     write_pressure_state(old, new_state);
   }
@@ -347,7 +368,7 @@ namespace qsmpm
     Tensor<4, dim> c =
       skeleton_model->kirchhoff_tangent(skeleton_state(old), kinematics);
     const double scale =
-      determinant(kinematics.F) * b * old.state[n_skeleton + 1];
+      pressure_kirchhoff(kinematics, 1., b * old.state[n_skeleton + 1]);
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int k = 0; k < dim; ++k)
         c[i][i][k][k] -= scale;
