@@ -7,9 +7,7 @@
 //    GIMP with a macroscopic displacement gradient,
 //  - contact between bodies given wrongly (one body, an id that is no
 //    number or in two bodies, points of no body, a negative friction
-//    coefficient) or with what it does not
-//    take (a pore fluid), a region expression that is
-//    none,
+//    coefficient), a region expression that is none,
 //  - a load step that does not converge (after the allowed cut-backs), and
 //    nothing of that step is committed to the points; also one whose
 //    contact set between bodies does not settle.
@@ -311,11 +309,6 @@ main(int argc, char *argv[])
   try_input("contact between bodies with points of no body",
             "Contact between bodies",
             two_bodies + "  set Bodies = 0; 2\nend\n" + run_briefly + "end\n",
-            /*run=*/true);
-  try_input("contact between bodies with a pore fluid",
-            "Contact between bodies",
-            two_bodies + "  set Bodies = 0; 1\nend\n" + run_briefly + "end\n" +
-              pore_fluid + "end\n",
             /*run=*/true);
   // The contact example's sliding blocks (contact.prm, sliding_blocks())
   // with cpGIMP and at most one solve per step: in step 7, the first in

@@ -1317,20 +1317,6 @@ namespace qsmpm
                            "Axisymmetric, Move points) was changed after "
                            "set_model(), which made the points with the one "
                            "before; change it before set_model()."));
-    if (body_contact.enabled())
-      {
-        // Loads on grid nodes and faces are divided among the bodies'
-        // fields (ExternalForceAssembler), a rigid plate moves all of them,
-        // periodicity ties each, and rigid bodies (also those driven by a
-        // force) and surface tractions act on each point through its own
-        // body's field; the ghost penalty chooses its faces in each
-        // field by that body's material, and path following solves a step
-        // again where the contact set changed, as load control does. The
-        // pore pressure is not written for several fields.
-        AssertThrow(pore_pressure == nullptr,
-                    ExcMessage("Contact between bodies/Bodies: a pore fluid "
-                               "cannot be used with several bodies yet."));
-      }
     const bool from_checkpoint = run_state.resuming();
     if (from_checkpoint)
       {

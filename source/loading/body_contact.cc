@@ -44,6 +44,7 @@ namespace qsmpm
         "'0, 2; 1'). Each body gets its own displacement field on the grid "
         "(a multi-field grid), so that bodies can separate; where two meet "
         "at a node, their fields are tied while they press on each other. "
+        "A pore fluid is one pressure field that all bodies share. "
         "Empty: one body, every point on one field.",
         Patterns::Anything());
       Utils::add_selection<Friction>(

@@ -592,7 +592,11 @@ namespace qsmpm
   {
     // Node k of a group is the node of its displacement dofs k dim, ...,
     // k dim + dim - 1 (ShapeCache): the pressure dof of a group node is
-    // found through the vertex that both dofs belong to.
+    // found through the vertex that both dofs belong to. On a multi-field
+    // grid (Contact between bodies) each body's field has its own dofs at
+    // a vertex (body b's first direction is the vertex's dof b dim), and
+    // all of them lead to the vertex's one pressure: the bodies share
+    // their pore fluid.
     relevant_displacement             = grid.locally_relevant_dofs();
     const IndexSet &displacement_dofs = relevant_displacement;
     pressure_at.assign(displacement_dofs.n_elements(),
@@ -602,9 +606,10 @@ namespace qsmpm
         {
           const auto displacement_cell = grid.dof_cell(cell);
           for (const unsigned int v : cell->vertex_indices())
-            pressure_at[displacement_dofs.index_within_set(
-              displacement_cell->vertex_dof_index(v, 0))] =
-              cell->vertex_dof_index(v, 0);
+            for (unsigned int b = 0; b < grid.n_bodies(); ++b)
+              pressure_at[displacement_dofs.index_within_set(
+                displacement_cell->vertex_dof_index(v, b * dim))] =
+                cell->vertex_dof_index(v, 0);
         }
 
     group_offsets.resize(cache.n_cells() + 1);

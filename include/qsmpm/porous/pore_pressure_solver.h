@@ -64,6 +64,10 @@ namespace qsmpm
    * f kappa_p / h, a penalty. Nodes whose support holds no point have
    * p = 0, but no point couples them to the body: the body's other
    * surfaces, on the grid's boundary or inside the grid, are impermeable.
+   * On a multi-field grid (Contact between bodies) the bodies share the
+   * one pressure field: a point's volume change comes from its own body's
+   * displacement field, and the fluid flows between bodies whose points
+   * reach the same nodes.
    *
    * <h3>Finite strain</h3>
    * With `Kinematics = finite strain` the grid moves with the body within
