@@ -171,6 +171,13 @@ main(int argc, char *argv[])
   try_input("negative mobility",
             "Mobility",
             pore_fluid + "  set Mobility = -1\nend\n");
+  try_input("zero mobility of a material id",
+            "Mobility by material id",
+            pore_fluid +
+              "  set Mobility by material id = 0: 1e-6, 1: 0\nend\n");
+  try_input("mobility by material id that is no map",
+            "Mobility by material id",
+            pore_fluid + "  set Mobility by material id = clay: 1e-6\nend\n");
   try_input("zero mobility",
             "Mobility",
             pore_fluid + "  set Mobility = 0\nend\n");

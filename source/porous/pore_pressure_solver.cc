@@ -45,6 +45,20 @@ namespace qsmpm
                         "weight; Darcy flux q = -kappa grad p.",
                         Patterns::Double(0.));
       prm.add_parameter(
+        "Mobility by material id",
+        mobility_by_material_id,
+        "Mobilities of particular material ids (Material points/<Material "
+        "id>), as 'id: mobility, id: mobility', e.g. '0: 1e-9, 1: 1e-5' "
+        "for a clay (id 0) under a sand (id 1); points of other ids have "
+        "<Mobility>. Each is multiplied by <Mobility factor> as <Mobility> "
+        "is.",
+        Patterns::Map(Patterns::Integer(0),
+                      Patterns::Double(0.),
+                      0,
+                      Patterns::Map::max_int_value,
+                      ",",
+                      ":"));
+      prm.add_parameter(
         "Mobility factor",
         mobility_factor,
         "f(J): the mobility of a point is <Mobility> times this expression "
@@ -181,6 +195,12 @@ namespace qsmpm
                 ExcMessage("Pore fluid: <Mobility> must be positive (an "
                            "impermeable body is undrained: give a small "
                            "mobility or no pore fluid)."));
+    for (const auto &[id, value] : mobility_by_material_id)
+      AssertThrow(value > 0.,
+                  ExcMessage("Pore fluid: <Mobility by material id> gives "
+                             "material id " +
+                             std::to_string(id) + " the mobility " +
+                             std::to_string(value) + "; it must be positive."));
     AssertThrow(coupling_tolerance > 0.,
                 ExcMessage("Pore fluid: <Coupling tolerance> must be "
                            "positive."));
@@ -366,6 +386,13 @@ namespace qsmpm
             stress_scale = std::max(stress_scale, std::abs(data[state_offset]));
             volume[p]    = data[offsets.volume];
             mobility[p]  = parameters.mobility;
+            if (!parameters.mobility_by_material_id.empty())
+              {
+                const auto found = parameters.mobility_by_material_id.find(
+                  static_cast<unsigned int>(data[offsets.material_id]));
+                if (found != parameters.mobility_by_material_id.end())
+                  mobility[p] = found->second;
+              }
             if (!constant_mobility)
               {
                 const double J = data[offsets.J];

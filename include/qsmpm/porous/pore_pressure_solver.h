@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <map>
 #include <memory>
 #include <qsmpm/base/parameter_struct.h>
 #include <qsmpm/grid/background_grid.h>
@@ -101,14 +102,16 @@ namespace qsmpm
     /// The subsection "Pore fluid".
     struct Parameters : ParameterStruct<Parameters>
     {
-      bool                      enabled          = false;
-      double                    biot_coefficient = 1.;
-      double                    biot_modulus     = 0.;
-      double                    mobility         = 1.;
-      std::string               mobility_factor  = "1";
-      double                    initial_pressure = 0.;
-      std::vector<unsigned int> drained_boundaries;
-      std::string               boundary_pressure = "0";
+      bool   enabled          = false;
+      double biot_coefficient = 1.;
+      double biot_modulus     = 0.;
+      double mobility         = 1.;
+      /// Mobilities of particular material ids (others: mobility).
+      std::map<unsigned int, double> mobility_by_material_id;
+      std::string                    mobility_factor  = "1";
+      double                         initial_pressure = 0.;
+      std::vector<unsigned int>      drained_boundaries;
+      std::string                    boundary_pressure = "0";
       /// Expression in x, y (z) non-zero on the drained part of the body's
       /// initial surface (empty: none).
       std::string               drained_surface_region;
