@@ -30,54 +30,17 @@
 // instead of the grid's boundary: equal to one body with the same entries.
 #include "consolidation_solutions.h"
 #include "tests.h"
+#include "two_layer_column.h"
 
 #include <map>
-#include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/porous/poroelastic_model.h>
 
 using namespace qsmpm;
 
 namespace
 {
-  constexpr double   H = 10., E = 1.5e6, nu = 0.25, kappa = 1e-6, q = 1e4;
-  constexpr double   Tv    = 0.5;
+  using namespace two_layer_column;
+  constexpr double   kappa = 1e-6, q = 1e4, Tv = 0.5;
   constexpr unsigned cells = 16, steps = 32;
-  const double       E_oed = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-
-  std::string
-  column_prm(const bool two_bodies, const std::string &pore_fluid)
-  {
-    std::ostringstream prm;
-    prm << std::setprecision(12) << "set Dimension = 2\n"
-        << "subsection Geometry\n  set Lower corner = 0,0\n"
-        << "  set Upper corner = " << H / cells << "," << H
-        << "\n  set Subdivisions = 1," << cells << "\nend\n"
-        << "subsection Material points\n"
-        << "  set Points per cell per direction = 2\n"
-        << "  set Material id = if(y > " << H / 2 << ", 1, 0)\nend\n"
-        << "subsection Material\n  set Model = linear elastic\n"
-        << "  subsection linear elastic\n"
-        << "    set Young's modulus = " << E << "\n"
-        << "    set Poisson's ratio = " << nu << "\n  end\nend\n"
-        << "subsection Boundary conditions\n"
-        << "  set Dirichlet boundaries = 0:x, 1:x, 2:xy\n"
-        << "  set Traction boundaries = 3\n"
-        << "  subsection Displacement\n    set Function expression = 0; 0\n"
-        << "  end\n"
-        << "  subsection Traction\n    set Function expression = 0; " << -q
-        << "\n  end\nend\n"
-        << "subsection Pore fluid\n  set Enabled = true\n"
-        << "  set Mobility = " << kappa << "\n"
-        << pore_fluid << "end\n"
-        << "subsection Load stepping\n  set Number of steps = " << steps
-        << "\n  set Final load factor = " << Tv * H * H / (kappa * E_oed)
-        << "\nend\n"
-        << "subsection Output\n  set Interval = 0\n  set Directory = "
-           "contact-consolidation-out\nend\n";
-    if (two_bodies)
-      prm << "subsection Contact between bodies\n  set Bodies = 0; 1\nend\n";
-    return prm.str();
-  }
 
   struct Result
   {
@@ -91,16 +54,21 @@ namespace
   Result
   run(const bool two_bodies, const std::string &pore_fluid)
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(column_prm(two_bodies, pore_fluid));
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
-    Result result;
+    Result                result;
     try
       {
-        problem.initialize(prm);
+        initialize(problem,
+                   prm_text(cells,
+                            q,
+                            "  set Mobility = " + std::to_string(kappa) + "\n" +
+                              pore_fluid,
+                            Tv * H * H / (kappa * E_oed),
+                            steps,
+                            1.,
+                            two_bodies ? "subsection Contact between bodies\n"
+                                         "  set Bodies = 0; 1\nend\n" :
+                                         ""));
         problem.run();
         result.completed = true;
       }
@@ -108,13 +76,10 @@ namespace
       {
         deallog << "  run stopped: " << exc.what() << std::endl;
       }
-    const auto        &points  = problem.points();
-    const auto        &offsets = points.get_offsets();
-    const unsigned int p_offset =
-      offsets.state +
-      dynamic_cast<const PoroelasticModel<2> &>(points.get_model())
-        .pressure_offset();
-    double sum = 0., volume = 0.;
+    const auto        &points   = problem.points();
+    const auto        &offsets  = points.get_offsets();
+    const unsigned int p_offset = pressure_offset(points);
+    double             sum = 0., volume = 0.;
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();

@@ -26,56 +26,15 @@
 //    hold the pressure as the clay does.
 #include "consolidation_solutions.h"
 #include "tests.h"
-
-#include <qsmpm/core/quasi_static_problem.h>
-#include <qsmpm/porous/poroelastic_model.h>
+#include "two_layer_column.h"
 
 using namespace qsmpm;
 
 namespace
 {
-  constexpr double   H = 10., E = 1.5e6, nu = 0.25, q = 1e4;
+  using namespace two_layer_column;
+  constexpr double   q     = 1e4;
   constexpr unsigned cells = 32;
-  const double       E_oed = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-
-  /// The column with the pore fluid entries @p pore_fluid, a traction
-  /// @p load on its top, to the time @p t_end in @p steps steps growing by
-  /// @p growth.
-  std::string
-  column_prm(const std::string &pore_fluid,
-             const double       load,
-             const double       t_end,
-             const unsigned int steps,
-             const double       growth)
-  {
-    std::ostringstream prm;
-    prm << std::setprecision(12) << "set Dimension = 2\n"
-        << "subsection Geometry\n  set Lower corner = 0,0\n"
-        << "  set Upper corner = " << H / cells << "," << H
-        << "\n  set Subdivisions = 1," << cells << "\nend\n"
-        << "subsection Material points\n"
-        << "  set Points per cell per direction = 2\n"
-        << "  set Material id = if(y > " << H / 2 << ", 1, 0)\nend\n"
-        << "subsection Material\n  set Model = linear elastic\n"
-        << "  subsection linear elastic\n"
-        << "    set Young's modulus = " << E << "\n"
-        << "    set Poisson's ratio = " << nu << "\n  end\nend\n"
-        << "subsection Boundary conditions\n"
-        << "  set Dirichlet boundaries = 0:x, 1:x, 2:xy\n"
-        << "  set Traction boundaries = 3\n"
-        << "  subsection Displacement\n    set Function expression = 0; 0\n"
-        << "  end\n"
-        << "  subsection Traction\n    set Function expression = 0; " << -load
-        << "\n  end\nend\n"
-        << "subsection Pore fluid\n  set Enabled = true\n"
-        << pore_fluid << "end\n"
-        << "subsection Load stepping\n  set Number of steps = " << steps
-        << "\n  set Final load factor = " << t_end
-        << "\n  set Increment growth factor = " << growth << "\nend\n"
-        << "subsection Output\n  set Interval = 0\n  set Directory = "
-           "layered-consolidation-out\nend\n";
-    return prm.str();
-  }
 
   /// Run the column; @p exact(Y) is the pressure at the initial height Y
   /// (NaN where no comparison is made). Returns the L2 error over the
@@ -83,17 +42,12 @@ namespace
   /// others.
   template <typename Exact>
   std::pair<double, double>
-  run(const std::string &prm_text, const Exact &exact, const double scale)
+  run(const std::string &text, const Exact &exact, const double scale)
   {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
-    problem.pcout().set_condition(false);
     try
       {
-        problem.initialize(prm);
+        initialize(problem, text);
         problem.run();
       }
     catch (const std::exception &exc)
@@ -101,13 +55,10 @@ namespace
         deallog << "  run stopped: " << exc.what() << std::endl;
         return {1e300, 1e300};
       }
-    const auto        &points  = problem.points();
-    const auto        &offsets = points.get_offsets();
-    const unsigned int p_offset =
-      offsets.state +
-      dynamic_cast<const PoroelasticModel<2> &>(points.get_model())
-        .pressure_offset();
-    double sum = 0., volume = 0., others = 0.;
+    const auto        &points   = problem.points();
+    const auto        &offsets  = points.get_offsets();
+    const unsigned int p_offset = pressure_offset(points);
+    double             sum = 0., volume = 0., others = 0.;
     for (const auto &particle : points.get_particle_handler())
       {
         const auto   data = particle.get_properties();
@@ -147,14 +98,15 @@ main(int argc, char **argv)
                                p_i * (H - Y) / (H / 2);
     };
     const auto [l2, unused] =
-      run(column_prm("  set Mobility = 1e-6\n"
-                     "  set Mobility by material id = 1: 4e-6\n"
-                     "  set Drained boundaries = 2, 3\n"
-                     "  set Boundary pore pressure = 100 * (y < 5)\n",
-                     0.,
-                     1000.,
-                     1000,
-                     1.3),
+      run(prm_text(cells,
+                   0.,
+                   "  set Mobility = 1e-6\n"
+                   "  set Mobility by material id = 1: 4e-6\n"
+                   "  set Drained boundaries = 2, 3\n"
+                   "  set Boundary pore pressure = 100 * (y < 5)\n",
+                   1000.,
+                   1000,
+                   1.3),
           exact,
           p0);
     (void)unused;
@@ -173,13 +125,14 @@ main(int argc, char **argv)
                      std::nan("");
     };
     const auto [l2, sand] =
-      run(column_prm("  set Mobility = 1e-6\n"
-                     "  set Mobility by material id = 1: 1e-2\n"
-                     "  set Drained boundaries = 3\n",
-                     q,
-                     t_end,
-                     32,
-                     1.),
+      run(prm_text(cells,
+                   q,
+                   "  set Mobility = 1e-6\n"
+                   "  set Mobility by material id = 1: 1e-2\n"
+                   "  set Drained boundaries = 3\n",
+                   t_end,
+                   32,
+                   1.),
           exact,
           q);
     check("  clay: L2 error of p against Terzaghi (H/2) / q", l2, 0.015);
