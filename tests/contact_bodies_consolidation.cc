@@ -29,6 +29,7 @@
 // `Drained surface region` (the upper body's own top face, a penalty)
 // instead of the grid's boundary: equal to one body with the same entries.
 #include "consolidation_solutions.h"
+#include "prm_text.h"
 #include "tests.h"
 #include "two_layer_column.h"
 
@@ -58,17 +59,18 @@ namespace
     Result                result;
     try
       {
-        initialize(problem,
-                   prm_text(cells,
-                            q,
-                            "  set Mobility = " + std::to_string(kappa) + "\n" +
-                              pore_fluid,
-                            Tv * H * H / (kappa * E_oed),
-                            steps,
-                            1.,
-                            two_bodies ? "subsection Contact between bodies\n"
-                                         "  set Bodies = 0; 1\nend\n" :
-                                         ""));
+        initialize_from_text(
+          problem,
+          prm_text(cells,
+                   q,
+                   "  set Mobility = " + std::to_string(kappa) + "\n" +
+                     pore_fluid,
+                   Tv * H * H / (kappa * E_oed),
+                   steps,
+                   1.,
+                   two_bodies ? "subsection Contact between bodies\n"
+                                "  set Bodies = 0; 1\nend\n" :
+                                ""));
         problem.run();
         result.completed = true;
       }

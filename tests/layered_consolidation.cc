@@ -25,6 +25,7 @@
 //    below 1 % of q. With the clay's mobility everywhere the sand would
 //    hold the pressure as the clay does.
 #include "consolidation_solutions.h"
+#include "prm_text.h"
 #include "tests.h"
 #include "two_layer_column.h"
 
@@ -47,7 +48,7 @@ namespace
     QuasiStaticProblem<2> problem(MPI_COMM_WORLD);
     try
       {
-        initialize(problem, text);
+        initialize_from_text(problem, text);
         problem.run();
       }
     catch (const std::exception &exc)

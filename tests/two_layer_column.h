@@ -4,7 +4,8 @@
 // 1/M = 0, rollers on the sides, held at the base, a traction on the top,
 // boundary id 3), one cell wide, 2 x 2 points per cell, its lower half
 // material id 0 and its upper half id 1 (the layers meet on a grid line
-// for an even number of cells).
+// for an even number of cells). Set a problem up from its text with
+// qsmpm_tests::initialize_from_text() (prm_text.h).
 #ifndef qsmpm_tests_two_layer_column_h
 #define qsmpm_tests_two_layer_column_h
 
@@ -64,18 +65,6 @@ namespace two_layer_column
            "two-layer-column-out\nend\n"
         << more;
     return prm.str();
-  }
-
-  /// Set up @p problem from the parameter text @p text (the driver's route).
-  inline void
-  initialize(qsmpm::QuasiStaticProblem<2> &problem, const std::string &text)
-  {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    qsmpm::QuasiStaticProblem<2>::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(text);
-    problem.pcout().set_condition(false);
-    problem.initialize(prm);
   }
 
   /// Where the points keep their pore pressure.
